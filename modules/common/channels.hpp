@@ -31,4 +31,8 @@ inline constexpr const char* kDone = "DONE";                       // done_t
 inline constexpr const char* kHeartbeat = "HEARTBEAT";             // heartbeat_t
 inline constexpr const char* kMarking = "MARKING";                 // marking_t
 inline constexpr const char* kRunStatus = "RUN_STATUS";            // run_status_t
+inline constexpr const char* kStopRequest = "STOP_REQUEST";        // run_status_t: end the run after this tick
+// Blackboard service.
+inline constexpr const char* kBlackboardQuery = "BB_QUERY";        // bb_query_t
+inline constexpr const char* kBlackboardSnapshotPrefix = "BB_SNAPSHOT_";  // + requester: bb_snapshot_t
 }  // namespace beft::channels

@@ -1,0 +1,22 @@
+// The process around an expert: command line, LCM, FIRE/DONE, heartbeat.
+#pragma once
+
+#include "expert.hpp"
+
+namespace beft::expert {
+
+// The whole main() of an expert process:
+//   int main(int argc, char** argv) { MyExpert e; return beft::expert::runExpertMain(argc, argv, e); }
+// Flags: --help, --interface (prints what it reads and writes), --lcm-url,
+// --name (process name, default expert.name()), --param key=value (repeat),
+// --heartbeat-period seconds, --replay LOG (offline against a recorded log:
+// feeds the logged inputs in order, fires at every logged FIRE for this
+// expert, compares the outputs with the logged ones and prints the result).
+// Live: subscribes to reads() and FIRE; for each new FIRE addressed to it
+// (firing_id greater than any it ran) waits until inputsReady (bounded), runs
+// fire(), publishes DONE. A FIRE it already ran gets its DONE again (the first
+// may have been lost); an older one is logged and dropped. Sends HEARTBEAT
+// every period. Exits on SIGINT/SIGTERM or when RUN_STATUS says the run ended.
+int runExpertMain(int argc, char** argv, Expert& expert);
+
+}  // namespace beft::expert
