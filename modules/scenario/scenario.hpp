@@ -107,6 +107,7 @@ struct Scenario {
   std::vector<Path> paths;
   std::vector<Event> events;            // sorted by t; equal t keep file order
   std::map<std::pair<std::string, std::string>, double> congruency;  // (label, activity) -> c
+  std::vector<std::string> warnings;    // "FILE:LINE: warning: ..." found while loading
 
   const Object* findObject(const std::string& id) const;
   // c for (label, activity); pairs not in the table give default_value.
