@@ -1,7 +1,13 @@
 // The process around an expert: command line, LCM, FIRE/DONE, heartbeat.
 #pragma once
 
+#include <functional>
+
 #include "expert.hpp"
+
+namespace CLI {
+class App;
+}
 
 namespace beft::expert {
 
@@ -17,6 +23,13 @@ namespace beft::expert {
 // fire(), publishes DONE. A FIRE it already ran gets its DONE again (the first
 // may have been lost); an older one is logged and dropped. Sends HEARTBEAT
 // every period. Exits on SIGINT/SIGTERM or when RUN_STATUS says the run ended.
+// Unknown --param keys (not in parameterHelp()) are refused.
 int runExpertMain(int argc, char** argv, Expert& expert);
+
+// The same, for a process with options of its own (e.g. the world's
+// --scenario): add_options adds them to the command line before parsing; the
+// variables they bind are set before onStartUp is called.
+int runExpertMain(int argc, char** argv, Expert& expert,
+                  const std::function<void(CLI::App&)>& add_options);
 
 }  // namespace beft::expert

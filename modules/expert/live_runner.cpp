@@ -1,0 +1,253 @@
+#include "live_runner.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <map>
+#include <optional>
+#include <set>
+
+#include <beft/bb_query_t.hpp>
+#include <beft/bb_snapshot_t.hpp>
+#include <beft/done_t.hpp>
+#include <beft/fire_t.hpp>
+#include <beft/heartbeat_t.hpp>
+#include <beft/run_status_t.hpp>
+#include <lcm/lcm-cpp.hpp>
+
+#include "channels.hpp"
+#include "log.hpp"
+
+namespace beft::expert {
+
+namespace {
+
+std::atomic<bool> g_stop_requested{false};
+void onSignal(int) { g_stop_requested = true; }
+
+using Clock = std::chrono::steady_clock;
+
+int64_t wallMicros() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+std::string hostName() {
+  char buffer[256] = {0};
+  if (gethostname(buffer, sizeof(buffer) - 1) != 0) return "unknown";
+  return buffer;
+}
+
+class LcmOutput : public Output {
+ public:
+  explicit LcmOutput(lcm::LCM& lcm) : lcm_(lcm) {}
+  void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
+    if (lcm_.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())) != 0)
+      log::warn("could not publish on ", channel, " (", bytes.size(), " bytes)");
+  }
+
+ private:
+  lcm::LCM& lcm_;
+};
+
+// Holds what the LCM handlers received; the main loop decides what to do.
+class Runner {
+ public:
+  Runner(Expert& expert, const LiveOptions& options, lcm::LCM& lcm)
+      : expert_(expert), options_(options), lcm_(lcm), output_(lcm) {}
+
+  int run() {
+    for (const auto& spec : expert_.reads()) {
+      auto* sub = lcm_.subscribe(spec.channel, &Runner::onInput, this);
+      sub->setQueueCapacity(1000);  // LCM 1.3.1 keeps 30 by default and drops the rest
+      read_channels_.insert(spec.channel);
+    }
+    lcm_.subscribe(channels::kFire, &Runner::onFire, this)->setQueueCapacity(1000);
+    lcm_.subscribe(channels::kRunStatus, &Runner::onRunStatus, this);
+    if (options_.catch_up) requestSnapshot();
+
+    log::info("ready: waiting for FIRE on ", options_.lcm_url);
+    sendHeartbeat();
+    auto next_heartbeat = Clock::now() + heartbeatPeriod();
+    while (!g_stop_requested && !run_ended_) {
+      const auto now = Clock::now();
+      int timeout_ms = static_cast<int>(
+          std::chrono::duration_cast<std::chrono::milliseconds>(next_heartbeat - now).count());
+      if (pending_ && !pending_fired_) timeout_ms = std::min(timeout_ms, 5);
+      timeout_ms = std::max(0, std::min(timeout_ms, 100));
+      if (lcm_.handleTimeout(timeout_ms) < 0) {
+        log::error("LCM receive failed; stopping");
+        return 1;
+      }
+      servePendingFiring();
+      if (Clock::now() >= next_heartbeat) {
+        sendHeartbeat();
+        next_heartbeat = Clock::now() + heartbeatPeriod();
+      }
+    }
+    log::info(run_ended_ ? "run ended: " + run_end_reason_ : std::string("stopped by signal"),
+              " (", firings_run_, " firings)");
+    return 0;
+  }
+
+ private:
+  std::chrono::microseconds heartbeatPeriod() const {
+    return std::chrono::microseconds(static_cast<int64_t>(options_.heartbeat_period_s * 1e6));
+  }
+
+  void onInput(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+    live_channels_.insert(channel);
+    deliver(channel, rbuf->data, static_cast<int>(rbuf->data_size));
+  }
+
+  void deliver(const std::string& channel, const void* data, int size) {
+    try {
+      if (!expert_.onMessage(channel, data, size)) reportUnhandled(channel);
+    } catch (const std::exception& e) {
+      log::error("message on ", channel, " raised: ", e.what());
+    }
+  }
+
+  void reportUnhandled(const std::string& channel) {
+    if (++unhandled_[channel] <= 3 || unhandled_[channel] % 1000 == 0)
+      log::warn("message on ", channel, " not understood (", unhandled_[channel], " so far)");
+  }
+
+  void onFire(const lcm::ReceiveBuffer*, const std::string&, const beft::fire_t* fire) {
+    if (fire->expert != options_.process_name) return;
+    if (pending_ && pending_->firing_id >= fire->firing_id) {
+      if (pending_->firing_id == fire->firing_id && pending_fired_) resendDone();
+      else if (fire->firing_id < pending_->firing_id)
+        log::warn("dropped stale FIRE ", fire->firing_id, " (already at ", pending_->firing_id, ")");
+      return;
+    }
+    if (pending_ && !pending_fired_)
+      log::warn("FIRE ", pending_->firing_id, " superseded by ", fire->firing_id, " before it ran");
+    pending_ = Firing{fire->expert, fire->transition, fire->tick, fire->utime, fire->firing_id};
+    pending_fired_ = false;
+    pending_since_ = Clock::now();
+  }
+
+  void onRunStatus(const lcm::ReceiveBuffer*, const std::string&, const beft::run_status_t* s) {
+    if (s->state == beft::run_status_t::STATE_FINISHED || s->state == beft::run_status_t::STATE_FAILED) {
+      run_ended_ = true;
+      run_end_reason_ = s->message;
+    }
+  }
+
+  void servePendingFiring() {
+    if (!pending_ || pending_fired_) return;
+    bool ready = false;
+    try {
+      ready = expert_.inputsReady(*pending_);
+    } catch (const std::exception& e) {
+      log::error("inputsReady raised: ", e.what());
+      ready = true;
+    }
+    const double waited_s =
+        std::chrono::duration<double>(Clock::now() - pending_since_).count();
+    if (!ready && waited_s < options_.ready_timeout_s) return;
+    if (!ready)
+      log::warn("firing ", pending_->firing_id, " (tick ", pending_->tick,
+                "): inputs incomplete after ", options_.ready_timeout_s, " s; firing anyway");
+    fireNow();
+  }
+
+  void fireNow() {
+    const auto start = Clock::now();
+    Outcome outcome;
+    try {
+      outcome = expert_.fire(*pending_, output_);
+    } catch (const std::exception& e) {
+      outcome = Outcome::failure(std::string("exception: ") + e.what());
+    }
+    ++firings_run_;
+    pending_fired_ = true;
+    last_done_.utime = pending_->utime;
+    last_done_.expert = options_.process_name;
+    last_done_.tick = pending_->tick;
+    last_done_.firing_id = pending_->firing_id;
+    last_done_.outcome = outcome.ok ? beft::done_t::OUTCOME_OK : beft::done_t::OUTCOME_FAILED;
+    last_done_.message = outcome.message;
+    last_done_.duration = std::chrono::duration<double>(Clock::now() - start).count();
+    if (!outcome.ok)
+      log::warn("firing ", pending_->firing_id, " (tick ", pending_->tick, ") failed: ", outcome.message);
+    resendDone();
+  }
+
+  void resendDone() { lcm_.publish(channels::kDone, &last_done_); }
+
+  void sendHeartbeat() {
+    beft::heartbeat_t beat;
+    beat.utime = wallMicros();
+    beat.process = options_.process_name;
+    beat.pid = static_cast<int32_t>(getpid());
+    beat.host = host_;
+    beat.last_firing_id = pending_fired_ && pending_ ? pending_->firing_id : -1;
+    beat.state = pending_ && !pending_fired_ ? "firing" : "idle";
+    lcm_.publish(channels::kHeartbeat, &beat);
+  }
+
+  // Late joiners: ask the blackboard for the latest message of each channel
+  // read; the answer only fills channels nothing has arrived on yet.
+  void requestSnapshot() {
+    snapshot_channel_ = std::string(channels::kBlackboardSnapshotPrefix) + options_.process_name +
+                        "_" + std::to_string(getpid());
+    lcm_.subscribe(snapshot_channel_, &Runner::onSnapshot, this);
+    beft::bb_query_t query;
+    query.utime = wallMicros();
+    query.requester = snapshot_channel_.substr(std::string(channels::kBlackboardSnapshotPrefix).size());
+    query.query_id = 1;
+    for (const auto& channel : read_channels_) query.channels.push_back(channel);
+    query.num_channels = static_cast<int32_t>(query.channels.size());
+    lcm_.publish(channels::kBlackboardQuery, &query);
+  }
+
+  void onSnapshot(const lcm::ReceiveBuffer*, const std::string&, const beft::bb_snapshot_t* snap) {
+    if (snapshot_received_) return;
+    snapshot_received_ = true;
+    int used = 0;
+    for (const auto& entry : snap->entries) {
+      if (!read_channels_.count(entry.channel) || live_channels_.count(entry.channel)) continue;
+      deliver(entry.channel, entry.data.data(), entry.data_size);
+      ++used;
+    }
+    log::info("caught up from the blackboard: ", used, " channel(s)");
+  }
+
+  Expert& expert_;
+  LiveOptions options_;
+  lcm::LCM& lcm_;
+  LcmOutput output_;
+  std::string host_ = hostName();
+  std::set<std::string> read_channels_, live_channels_;
+  std::map<std::string, int64_t> unhandled_;
+  std::optional<Firing> pending_;
+  bool pending_fired_ = false;
+  Clock::time_point pending_since_;
+  beft::done_t last_done_;
+  int64_t firings_run_ = 0;
+  bool run_ended_ = false;
+  std::string run_end_reason_;
+  std::string snapshot_channel_;
+  bool snapshot_received_ = false;
+};
+
+}  // namespace
+
+int runLive(Expert& expert, const LiveOptions& options) {
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+  lcm::LCM lcm(options.lcm_url);
+  if (!lcm.good()) {
+    log::error("cannot open LCM at ", options.lcm_url);
+    return 1;
+  }
+  Runner runner(expert, options, lcm);
+  return runner.run();
+}
+
+}  // namespace beft::expert

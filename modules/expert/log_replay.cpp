@@ -1,0 +1,126 @@
+#include "log_replay.hpp"
+
+#include <cstdio>
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+
+#include <beft/fire_t.hpp>
+#include <lcm/lcm-cpp.hpp>
+
+#include "channels.hpp"
+#include "log.hpp"
+
+namespace beft::expert {
+
+namespace {
+
+using Messages = std::vector<std::vector<uint8_t>>;
+
+class CapturingOutput : public Output {
+ public:
+  void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
+    captured[channel].push_back(bytes);
+  }
+  std::map<std::string, Messages> captured;
+};
+
+}  // namespace
+
+ReplayResult replayLog(Expert& expert, const std::string& process_name, const std::string& log_path) {
+  lcm::LogFile log(log_path, "r");
+  if (!log.good()) throw std::runtime_error("cannot read LCM log '" + log_path + "'");
+
+  std::set<std::string> reads, writes;
+  for (const auto& spec : expert.reads()) reads.insert(spec.channel);
+  for (const auto& spec : expert.writes()) writes.insert(spec.channel);
+
+  ReplayResult result;
+  CapturingOutput output;
+  std::map<std::string, Messages> recorded;
+  std::optional<Firing> pending;
+  int64_t last_firing_id = -1;
+
+  auto firePending = [&] {
+    if (!pending) return;
+    try {
+      expert.fire(*pending, output);
+    } catch (const std::exception& e) {
+      log::warn("replayed firing ", pending->firing_id, " raised: ", e.what());
+    }
+    ++result.firings;
+    pending.reset();
+  };
+
+  while (const lcm::LogEvent* event = log.readNextEvent()) {
+    const std::string& channel = event->channel;
+    if (channel == channels::kFire) {
+      beft::fire_t fire;
+      if (fire.decode(event->data, 0, event->datalen) != event->datalen) continue;
+      if (fire.expert != process_name || fire.firing_id <= last_firing_id) continue;
+      firePending();  // a newer token: the previous one runs now, as live after its timeout
+      last_firing_id = fire.firing_id;
+      pending = Firing{fire.expert, fire.transition, fire.tick, fire.utime, fire.firing_id};
+      if (expert.inputsReady(*pending)) firePending();
+      continue;
+    }
+    if (writes.count(channel)) {
+      const auto* bytes = static_cast<const uint8_t*>(event->data);
+      recorded[channel].emplace_back(bytes, bytes + event->datalen);
+    }
+    if (reads.count(channel)) {
+      expert.onMessage(channel, event->data, event->datalen);
+      if (pending && expert.inputsReady(*pending)) firePending();
+    }
+  }
+  firePending();
+
+  std::set<std::string> all_channels;
+  for (const auto& [channel, _] : recorded) all_channels.insert(channel);
+  for (const auto& [channel, _] : output.captured) all_channels.insert(channel);
+  for (const auto& channel : all_channels) {
+    const Messages& was = recorded[channel];
+    const Messages& now = output.captured[channel];
+    const std::size_t common = std::min(was.size(), now.size());
+    for (std::size_t i = 0; i < common; ++i) {
+      ++result.outputs_compared;
+      if (was[i] == now[i]) {
+        ++result.outputs_matching;
+      } else if (result.first_mismatches.size() < 3) {
+        result.first_mismatches.push_back({channel, static_cast<int64_t>(i), was[i], now[i]});
+      }
+    }
+    if (was.size() > common) result.recorded_only += static_cast<int64_t>(was.size() - common);
+    if (now.size() > common) result.replayed_only += static_cast<int64_t>(now.size() - common);
+  }
+  return result;
+}
+
+void printReplayResult(const ReplayResult& result, const std::string& process_name,
+                       const std::function<std::string(const std::string&, const std::vector<uint8_t>&)>& describe) {
+  std::printf("replay of %s: %lld firings, %lld/%lld outputs match", process_name.c_str(),
+              static_cast<long long>(result.firings), static_cast<long long>(result.outputs_matching),
+              static_cast<long long>(result.outputs_compared));
+  if (result.recorded_only) std::printf(", %lld recorded but not produced", static_cast<long long>(result.recorded_only));
+  if (result.replayed_only) std::printf(", %lld produced but not recorded", static_cast<long long>(result.replayed_only));
+  std::printf("\n%s\n", result.exactMatch() ? "EXACT MATCH" : "DIFFERENCES FOUND");
+  if (result.firings == 0) std::printf("(no FIRE for '%s' in the log)\n", process_name.c_str());
+  for (const auto& mismatch : result.first_mismatches) {
+    std::printf("\nfirst difference on %s, output #%lld:\n", mismatch.channel.c_str(),
+                static_cast<long long>(mismatch.index));
+    if (describe) {
+      std::printf("--- recorded:\n%s\n--- replayed:\n%s\n", describe(mismatch.channel, mismatch.recorded).c_str(),
+                  describe(mismatch.channel, mismatch.replayed).c_str());
+    } else {
+      std::size_t at = 0;
+      while (at < mismatch.recorded.size() && at < mismatch.replayed.size() &&
+             mismatch.recorded[at] == mismatch.replayed[at])
+        ++at;
+      std::printf("  sizes %zu vs %zu, first differing byte at offset %zu\n", mismatch.recorded.size(),
+                  mismatch.replayed.size(), at);
+    }
+  }
+}
+
+}  // namespace beft::expert

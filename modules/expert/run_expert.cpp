@@ -1,0 +1,125 @@
+#include "run_expert.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "lcm_url.hpp"
+#include "live_runner.hpp"
+#include "log.hpp"
+#include "log_replay.hpp"
+
+namespace beft::expert {
+
+namespace {
+
+std::string interfaceText(const Expert& expert, const std::string& process_name) {
+  std::ostringstream out;
+  out << "process: " << process_name << "\n";
+  out << "reads:\n";
+  for (const auto& spec : expert.reads()) out << "  " << spec.channel << "  (" << spec.type << ")\n";
+  out << "  FIRE  (beft.fire_t, tokens addressed to " << process_name << ")\n";
+  out << "  RUN_STATUS  (beft.run_status_t, stops at the end of the run)\n";
+  out << "writes:\n";
+  for (const auto& spec : expert.writes()) out << "  " << spec.channel << "  (" << spec.type << ")\n";
+  out << "  DONE  (beft.done_t)\n  HEARTBEAT  (beft.heartbeat_t)\n";
+  const auto parameters = expert.parameterHelp();
+  if (!parameters.empty()) {
+    out << "parameters (--param NAME=VALUE):\n";
+    for (const auto& row : parameters) {
+      out << "  " << (row.size() > 0 ? row[0] : "?");
+      if (row.size() > 1) out << " (default " << row[1] << ")";
+      if (row.size() > 2) out << ": " << row[2];
+      out << "\n";
+    }
+  }
+  return out.str();
+}
+
+}  // namespace
+
+int runExpertMain(int argc, char** argv, Expert& expert) {
+  return runExpertMain(argc, argv, expert, nullptr);
+}
+
+int runExpertMain(int argc, char** argv, Expert& expert,
+                  const std::function<void(CLI::App&)>& add_options) {
+  LiveOptions options;
+  options.lcm_url = defaultLcmUrl();
+  options.process_name = expert.name();
+  std::vector<std::string> parameter_args;
+  std::string replay_log;
+  bool show_interface = false;
+
+  CLI::App app(expert.description() +
+               "\n\nRuns alone: start it with the same --lcm-url as the rest of the system; it "
+               "catches up from the blackboard and fires when the arbiter sends FIRE tokens "
+               "addressed to its --name. Offline: --replay LOG compares it with a recorded run.",
+               expert.name());
+  app.add_option("--lcm-url", options.lcm_url, "LCM URL (env BEFT_LCM_URL)")->capture_default_str();
+  app.add_option("--name", options.process_name, "process name the arbiter fires")->capture_default_str();
+  app.add_option("--param", parameter_args, "parameter NAME=VALUE (repeatable; see --interface)");
+  app.add_option("--heartbeat-period", options.heartbeat_period_s, "seconds between heartbeats")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--ready-timeout", options.ready_timeout_s,
+                 "longest wait for a firing's inputs before firing anyway [s]")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
+  app.add_flag("--no-catch-up", [&](int64_t) { options.catch_up = false; },
+               "do not ask the blackboard for the current state at start");
+  app.add_option("--replay", replay_log, "run offline against this LCM log and compare outputs");
+  app.add_flag("--interface", show_interface, "print the channels read and written, and the parameters");
+  if (add_options) add_options(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  log::setProcessName(options.process_name);
+
+  if (show_interface) {
+    std::fputs(interfaceText(expert, options.process_name).c_str(), stdout);
+    return 0;
+  }
+
+  std::set<std::string> known;
+  for (const auto& row : expert.parameterHelp())
+    if (!row.empty()) known.insert(row[0]);
+  Parameters parameters;
+  for (const auto& arg : parameter_args) {
+    const auto eq = arg.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      log::error("--param '", arg, "' is not NAME=VALUE");
+      return 2;
+    }
+    const std::string key = arg.substr(0, eq);
+    if (!known.count(key)) {
+      std::string names;
+      for (const auto& name : known) names += (names.empty() ? "" : ", ") + name;
+      log::error("unknown parameter '", key, "' (known: ", names.empty() ? "none" : names, ")");
+      return 2;
+    }
+    parameters.set(key, arg.substr(eq + 1));
+  }
+  try {
+    expert.onStartUp(parameters);
+  } catch (const std::exception& e) {
+    log::error("start-up failed: ", e.what());
+    return 2;
+  }
+
+  if (!replay_log.empty()) {
+    try {
+      const ReplayResult result = replayLog(expert, options.process_name, replay_log);
+      printReplayResult(result, options.process_name, nullptr);
+      return result.exactMatch() ? 0 : 3;
+    } catch (const std::exception& e) {
+      log::error(e.what());
+      return 1;
+    }
+  }
+  return runLive(expert, options);
+}
+
+}  // namespace beft::expert

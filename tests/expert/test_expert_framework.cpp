@@ -1,0 +1,279 @@
+// The expert framework: FIRE/DONE protocol on a real LCM bus, parameters,
+// and replay against a recorded log.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+
+#include <beft/done_t.hpp>
+#include <beft/fire_t.hpp>
+#include <beft/heartbeat_t.hpp>
+#include <beft/robot_state_t.hpp>
+#include <beft/run_status_t.hpp>
+#include <lcm/lcm-cpp.hpp>
+
+#include "channel_history.hpp"
+#include "channels.hpp"
+#include "lcm_url.hpp"
+#include "live_runner.hpp"
+#include "log_replay.hpp"
+
+using namespace beft;
+using namespace std::chrono_literals;
+
+namespace {
+
+// Doubles the robot's x: reads ROBOT_STATE, writes it scaled on "SCALED".
+class ScalingExpert : public expert::Expert {
+ public:
+  std::string name() const override { return "scaler"; }
+  std::string description() const override { return "test expert"; }
+  std::vector<expert::ChannelSpec> reads() const override {
+    return {{channels::kRobotState, "beft.robot_state_t"}};
+  }
+  std::vector<expert::ChannelSpec> writes() const override { return {{"SCALED", "beft.robot_state_t"}}; }
+  std::vector<std::vector<std::string>> parameterHelp() const override {
+    return {{"factor", "2", "scale of x"}};
+  }
+  void onStartUp(const expert::Parameters& p) override { factor_ = p.getDouble("factor", 2.0); }
+  bool onMessage(const std::string&, const void* data, int size) override {
+    beft::robot_state_t state;
+    if (!expert::decodeMessage(data, size, state)) return false;
+    states_.store(state, state.utime);
+    return true;
+  }
+  bool inputsReady(const expert::Firing& f) const override { return states_.at(f.utime) != nullptr; }
+  expert::Outcome fire(const expert::Firing& f, expert::Output& out) override {
+    fires.fetch_add(1);
+    const auto* entry = states_.at(f.utime);
+    if (!entry) return expert::Outcome::failure("no robot state for tick");
+    beft::robot_state_t scaled = entry->message;
+    scaled.x *= factor_;
+    out.publish("SCALED", scaled);
+    return expert::Outcome::success();
+  }
+  std::atomic<int> fires{0};
+
+ private:
+  double factor_ = 2.0;
+  blackboard::ChannelHistory<beft::robot_state_t> states_;
+};
+
+int uniquePort(int offset) { return 21000 + (getpid() * 7 + offset) % 9000; }
+
+beft::robot_state_t stateAt(int64_t tick, double x) {
+  beft::robot_state_t s{};
+  s.utime = tick * 100000;
+  s.tick = tick;
+  s.x = x;
+  return s;
+}
+
+beft::fire_t fireToken(const std::string& expert_name, int64_t tick, int64_t id) {
+  beft::fire_t f;
+  f.utime = tick * 100000;
+  f.expert = expert_name;
+  f.transition = "t_" + expert_name;
+  f.tick = tick;
+  f.firing_id = id;
+  return f;
+}
+
+struct DoneCollector {
+  std::mutex mutex;
+  std::vector<beft::done_t> done;
+  std::vector<beft::robot_state_t> scaled;
+  int heartbeats = 0;
+  void onDone(const lcm::ReceiveBuffer*, const std::string&, const beft::done_t* d) {
+    std::lock_guard<std::mutex> lock(mutex);
+    done.push_back(*d);
+  }
+  void onScaled(const lcm::ReceiveBuffer*, const std::string&, const beft::robot_state_t* s) {
+    std::lock_guard<std::mutex> lock(mutex);
+    scaled.push_back(*s);
+  }
+  void onHeartbeat(const lcm::ReceiveBuffer*, const std::string&, const beft::heartbeat_t*) {
+    std::lock_guard<std::mutex> lock(mutex);
+    ++heartbeats;
+  }
+};
+
+void pump(lcm::LCM& lcm, std::chrono::milliseconds how_long) {
+  const auto end = std::chrono::steady_clock::now() + how_long;
+  while (std::chrono::steady_clock::now() < end) lcm.handleTimeout(10);
+}
+
+}  // namespace
+
+TEST(LiveRunner, FiresOncePerFiringAndRepeatsDoneForDuplicates) {
+  const std::string url = lcmUrlForPort(uniquePort(1));
+  ScalingExpert scaler;
+  scaler.onStartUp({});
+  expert::LiveOptions options;
+  options.lcm_url = url;
+  options.process_name = "scaler";
+  options.heartbeat_period_s = 0.05;
+  options.catch_up = false;
+  std::atomic<int> exit_code{-1};
+  std::thread runner([&] { exit_code = expert::runLive(scaler, options); });
+
+  lcm::LCM lcm(url);
+  ASSERT_TRUE(lcm.good());
+  DoneCollector collector;
+  lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
+  lcm.subscribe("SCALED", &DoneCollector::onScaled, &collector);
+  lcm.subscribe(channels::kHeartbeat, &DoneCollector::onHeartbeat, &collector);
+  pump(lcm, 200ms);
+
+  const auto state = stateAt(3, 1.5);
+  lcm.publish(channels::kRobotState, &state);
+  const auto fire = fireToken("scaler", 3, 10);
+  lcm.publish(channels::kFire, &fire);
+  pump(lcm, 150ms);
+  lcm.publish(channels::kFire, &fire);  // a re-send: DONE again, no second run
+  const auto other = fireToken("someone_else", 3, 11);
+  lcm.publish(channels::kFire, &other);
+  const auto stale = fireToken("scaler", 2, 9);
+  lcm.publish(channels::kFire, &stale);
+  pump(lcm, 200ms);
+
+  beft::run_status_t end{};
+  end.state = beft::run_status_t::STATE_FINISHED;
+  end.message = "test over";
+  lcm.publish(channels::kRunStatus, &end);
+  runner.join();
+
+  EXPECT_EQ(exit_code.load(), 0);
+  EXPECT_EQ(scaler.fires.load(), 1);
+  std::lock_guard<std::mutex> lock(collector.mutex);
+  ASSERT_EQ(collector.done.size(), 2u);
+  for (const auto& d : collector.done) {
+    EXPECT_EQ(d.firing_id, 10);
+    EXPECT_EQ(d.expert, "scaler");
+    EXPECT_EQ(d.outcome, beft::done_t::OUTCOME_OK);
+  }
+  ASSERT_EQ(collector.scaled.size(), 1u);
+  EXPECT_DOUBLE_EQ(collector.scaled[0].x, 3.0);
+  EXPECT_GE(collector.heartbeats, 2);
+}
+
+TEST(LiveRunner, WaitsForInputsThenFiresAnyway) {
+  const std::string url = lcmUrlForPort(uniquePort(2));
+  ScalingExpert scaler;
+  scaler.onStartUp({});
+  expert::LiveOptions options;
+  options.lcm_url = url;
+  options.process_name = "scaler";
+  options.ready_timeout_s = 0.2;
+  options.catch_up = false;
+  std::thread runner([&] { expert::runLive(scaler, options); });
+
+  lcm::LCM lcm(url);
+  DoneCollector collector;
+  lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
+  pump(lcm, 150ms);
+  const auto fire = fireToken("scaler", 5, 1);
+  lcm.publish(channels::kFire, &fire);  // no ROBOT_STATE for tick 5 ever comes
+  pump(lcm, 500ms);
+  beft::run_status_t end{};
+  end.state = beft::run_status_t::STATE_FAILED;
+  lcm.publish(channels::kRunStatus, &end);
+  runner.join();
+
+  std::lock_guard<std::mutex> lock(collector.mutex);
+  ASSERT_EQ(collector.done.size(), 1u);
+  EXPECT_EQ(collector.done[0].outcome, beft::done_t::OUTCOME_FAILED);
+  EXPECT_NE(collector.done[0].message.find("no robot state"), std::string::npos);
+}
+
+TEST(Parameters, TypedGettersRefuseBadValuesByName) {
+  expert::Parameters p;
+  p.set("gain", "2.5");
+  p.set("count", "7");
+  p.set("flag", "true");
+  p.set("bad", "x1");
+  EXPECT_DOUBLE_EQ(p.getDouble("gain", 0), 2.5);
+  EXPECT_EQ(p.getInt("count", 0), 7);
+  EXPECT_TRUE(p.getBool("flag", false));
+  EXPECT_DOUBLE_EQ(p.getDouble("absent", 4.0), 4.0);
+  try {
+    p.getDouble("bad", 0);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("bad"), std::string::npos);
+  }
+  EXPECT_THROW(p.getInt("gain", 0), std::invalid_argument);
+  EXPECT_THROW(p.getBool("count", false), std::invalid_argument);
+}
+
+namespace {
+// A log as a run would record it: inputs, FIRE (sent twice), DONE, outputs.
+std::string writeRecordedLog(double recorded_factor) {
+  char path[] = "/tmp/beft_replay_XXXXXX";
+  const int fd = mkstemp(path);
+  close(fd);
+  lcm::LogFile log(path, "w");
+  int64_t event_number = 0;
+  auto write = [&](const std::string& channel, const auto& message) {
+    std::vector<uint8_t> bytes(message.getEncodedSize());
+    message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    lcm::LogEvent event;
+    event.eventnum = event_number++;
+    event.timestamp = event_number * 1000;
+    event.channel = channel;
+    event.datalen = static_cast<int32_t>(bytes.size());
+    event.data = bytes.data();
+    log.writeEvent(&event);
+  };
+  for (int64_t tick = 0; tick < 5; ++tick) {
+    write(channels::kRobotState, stateAt(tick, 1.0 + tick));
+    const auto fire = fireToken("scaler", tick, 100 + tick);
+    write(channels::kFire, fire);
+    write(channels::kFire, fire);
+    auto out = stateAt(tick, (1.0 + tick) * recorded_factor);
+    write("SCALED", out);
+  }
+  return path;
+}
+}  // namespace
+
+TEST(Replay, SameParametersMatchExactly) {
+  const std::string log_path = writeRecordedLog(2.0);
+  ScalingExpert scaler;
+  scaler.onStartUp({});
+  const auto result = expert::replayLog(scaler, "scaler", log_path);
+  EXPECT_EQ(result.firings, 5);
+  EXPECT_EQ(result.outputs_compared, 5);
+  EXPECT_TRUE(result.exactMatch());
+  std::remove(log_path.c_str());
+}
+
+TEST(Replay, ChangedParameterShowsTheDifference) {
+  const std::string log_path = writeRecordedLog(2.0);
+  ScalingExpert scaler;
+  expert::Parameters p;
+  p.set("factor", "3");
+  scaler.onStartUp(p);
+  const auto result = expert::replayLog(scaler, "scaler", log_path);
+  EXPECT_EQ(result.firings, 5);
+  EXPECT_FALSE(result.exactMatch());
+  EXPECT_EQ(result.outputs_matching, 0);
+  ASSERT_FALSE(result.first_mismatches.empty());
+  EXPECT_EQ(result.first_mismatches[0].channel, "SCALED");
+  EXPECT_EQ(result.first_mismatches[0].index, 0);
+  std::remove(log_path.c_str());
+}
+
+TEST(Replay, MissingLogIsAClearError) {
+  ScalingExpert scaler;
+  try {
+    expert::replayLog(scaler, "scaler", "/nonexistent/run.lcmlog");
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/run.lcmlog"), std::string::npos);
+  }
+}
