@@ -1,0 +1,124 @@
+#include "obstacle_map_codec.hpp"
+
+#include <cmath>
+
+namespace beft::planners {
+namespace {
+
+constexpr size_t kMaxRun = 255;
+
+void checkCellValues(const std::vector<uint8_t>& cells) {
+  for (size_t i = 0; i < cells.size(); ++i) {
+    if (cells[i] > static_cast<uint8_t>(beft::obstacle_map_t::CELL_OCCUPIED)) {
+      throw ObstacleMapError("cell " + std::to_string(i) + " has value " +
+                             std::to_string(cells[i]) + ", not a CELL_* constant (0, 1 or 2)");
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<uint8_t> encodeRle(const std::vector<uint8_t>& cells) {
+  std::vector<uint8_t> out;
+  size_t i = 0;
+  while (i < cells.size()) {
+    const uint8_t value = cells[i];
+    size_t run = 1;
+    while (i + run < cells.size() && cells[i + run] == value && run < kMaxRun) ++run;
+    out.push_back(static_cast<uint8_t>(run));
+    out.push_back(value);
+    i += run;
+  }
+  return out;
+}
+
+std::vector<uint8_t> decodeRle(const std::vector<uint8_t>& data, size_t expected_cells) {
+  if (data.size() % 2 != 0) {
+    throw ObstacleMapError("RLE data has an odd length (" + std::to_string(data.size()) +
+                           " bytes); it must be (count, value) pairs");
+  }
+  std::vector<uint8_t> cells;
+  cells.reserve(expected_cells);
+  for (size_t i = 0; i < data.size(); i += 2) {
+    const size_t count = data[i];
+    if (count == 0) throw ObstacleMapError("RLE pair at byte " + std::to_string(i) + " has count 0");
+    if (cells.size() + count > expected_cells) {
+      throw ObstacleMapError("RLE data holds more than the " + std::to_string(expected_cells) +
+                             " cells of the map");
+    }
+    cells.insert(cells.end(), count, data[i + 1]);
+  }
+  if (cells.size() != expected_cells) {
+    throw ObstacleMapError("RLE data holds " + std::to_string(cells.size()) + " cells, the map has " +
+                           std::to_string(expected_cells));
+  }
+  return cells;
+}
+
+beft::obstacle_map_t makeObstacleMap(const ObstacleCells& map, int8_t encoding, int64_t utime,
+                                     int64_t tick) {
+  if (map.width <= 0 || map.height <= 0) throw ObstacleMapError("map size must be positive");
+  if (map.cells.size() != static_cast<size_t>(map.width) * map.height) {
+    throw ObstacleMapError("map has " + std::to_string(map.cells.size()) + " cells, expected " +
+                           std::to_string(map.width) + " x " + std::to_string(map.height));
+  }
+  checkCellValues(map.cells);
+  beft::obstacle_map_t msg;
+  msg.utime = utime;
+  msg.tick = tick;
+  msg.width = map.width;
+  msg.height = map.height;
+  msg.resolution = map.resolution;
+  msg.origin_x = map.origin_x;
+  msg.origin_y = map.origin_y;
+  msg.encoding = encoding;
+  if (encoding == beft::obstacle_map_t::ENCODING_RAW) {
+    msg.data = map.cells;
+  } else if (encoding == beft::obstacle_map_t::ENCODING_RLE) {
+    msg.data = encodeRle(map.cells);
+  } else {
+    throw ObstacleMapError("unknown encoding " + std::to_string(encoding));
+  }
+  msg.data_size = static_cast<int32_t>(msg.data.size());
+  return msg;
+}
+
+ObstacleCells decodeObstacleMap(const beft::obstacle_map_t& message) {
+  if (message.width <= 0 || message.height <= 0) {
+    throw ObstacleMapError("map size " + std::to_string(message.width) + " x " +
+                           std::to_string(message.height) + " is not positive");
+  }
+  if (!(std::isfinite(message.resolution) && message.resolution > 0)) {
+    throw ObstacleMapError("resolution " + std::to_string(message.resolution) +
+                           " is not a positive number");
+  }
+  if (!std::isfinite(message.origin_x) || !std::isfinite(message.origin_y)) {
+    throw ObstacleMapError("origin is not finite");
+  }
+  if (message.data_size < 0 || static_cast<size_t>(message.data_size) != message.data.size()) {
+    throw ObstacleMapError("data_size " + std::to_string(message.data_size) + " differs from the " +
+                           std::to_string(message.data.size()) + " bytes of data");
+  }
+  ObstacleCells map;
+  map.width = message.width;
+  map.height = message.height;
+  map.resolution = message.resolution;
+  map.origin_x = message.origin_x;
+  map.origin_y = message.origin_y;
+  const size_t cell_count = static_cast<size_t>(message.width) * message.height;
+  if (message.encoding == beft::obstacle_map_t::ENCODING_RAW) {
+    if (message.data.size() != cell_count) {
+      throw ObstacleMapError("RAW data has " + std::to_string(message.data.size()) +
+                             " bytes, the map has " + std::to_string(cell_count) + " cells");
+    }
+    map.cells = message.data;
+  } else if (message.encoding == beft::obstacle_map_t::ENCODING_RLE) {
+    map.cells = decodeRle(message.data, cell_count);
+  } else {
+    throw ObstacleMapError("unknown encoding " + std::to_string(message.encoding));
+  }
+  checkCellValues(map.cells);
+  return map;
+}
+
+}  // namespace beft::planners

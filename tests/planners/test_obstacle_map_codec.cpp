@@ -1,0 +1,104 @@
+#include "obstacle_map_codec.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace beft::planners {
+namespace {
+
+constexpr uint8_t kUnknown = beft::obstacle_map_t::CELL_UNKNOWN;
+constexpr uint8_t kFree = beft::obstacle_map_t::CELL_FREE;
+constexpr uint8_t kOccupied = beft::obstacle_map_t::CELL_OCCUPIED;
+
+ObstacleCells sampleMap() {
+  ObstacleCells map;
+  map.width = 300;  // rows longer than one RLE run
+  map.height = 4;
+  map.resolution = 0.05;
+  map.origin_x = -1.5;
+  map.origin_y = 2.0;
+  map.cells.assign(300 * 4, kUnknown);
+  for (int x = 10; x < 290; ++x) map.cells[300 + x] = kFree;
+  for (int x = 0; x < 300; x += 7) map.cells[600 + x] = kOccupied;
+  return map;
+}
+
+TEST(ObstacleMapCodec, RleSplitsRunsLongerThan255) {
+  const std::vector<uint8_t> cells(600, kFree);
+  const auto data = encodeRle(cells);
+  ASSERT_EQ(data.size(), 6u);  // 255 + 255 + 90
+  EXPECT_EQ(data[0], 255);
+  EXPECT_EQ(data[2], 255);
+  EXPECT_EQ(data[4], 90);
+  EXPECT_EQ(data[5], kFree);
+  EXPECT_EQ(decodeRle(data, 600), cells);
+}
+
+TEST(ObstacleMapCodec, RoundTripBothEncodings) {
+  const ObstacleCells map = sampleMap();
+  for (int8_t encoding : {beft::obstacle_map_t::ENCODING_RAW, beft::obstacle_map_t::ENCODING_RLE}) {
+    const auto msg = makeObstacleMap(map, encoding, 123, 4);
+    EXPECT_EQ(msg.data_size, static_cast<int32_t>(msg.data.size()));
+    EXPECT_EQ(msg.utime, 123);
+    EXPECT_EQ(msg.tick, 4);
+    const ObstacleCells back = decodeObstacleMap(msg);
+    EXPECT_EQ(back.width, map.width);
+    EXPECT_EQ(back.height, map.height);
+    EXPECT_DOUBLE_EQ(back.resolution, map.resolution);
+    EXPECT_DOUBLE_EQ(back.origin_x, map.origin_x);
+    EXPECT_DOUBLE_EQ(back.origin_y, map.origin_y);
+    EXPECT_EQ(back.cells, map.cells);
+    EXPECT_EQ(back.at(7, 2), kOccupied);
+    EXPECT_EQ(back.at(8, 2), kUnknown);
+  }
+}
+
+TEST(ObstacleMapCodec, RleIsSmallForTypicalMaps) {
+  // A 30 x 20 m world at 0.1 m: 60000 cells must fit one UDP datagram.
+  ObstacleCells map;
+  map.width = 300;
+  map.height = 200;
+  map.cells.assign(60000, kFree);
+  for (int y = 50; y < 150; ++y) map.cells[y * 300 + 100] = kOccupied;
+  const auto msg = makeObstacleMap(map, beft::obstacle_map_t::ENCODING_RLE);
+  EXPECT_LT(msg.getEncodedSize(), 64 * 1024);
+}
+
+TEST(ObstacleMapCodec, RejectsMalformedRle) {
+  EXPECT_THROW(decodeRle({3, kFree, 2}, 5), ObstacleMapError);       // odd length
+  EXPECT_THROW(decodeRle({0, kFree, 5, kFree}, 5), ObstacleMapError);  // zero count
+  EXPECT_THROW(decodeRle({3, kFree}, 5), ObstacleMapError);           // too few cells
+  EXPECT_THROW(decodeRle({3, kFree, 3, kFree}, 5), ObstacleMapError);  // too many
+}
+
+TEST(ObstacleMapCodec, RejectsInconsistentMessages) {
+  const auto good = makeObstacleMap(sampleMap(), beft::obstacle_map_t::ENCODING_RLE);
+  auto bad = good;
+  bad.data_size += 1;
+  EXPECT_THROW(decodeObstacleMap(bad), ObstacleMapError);
+  bad = good;
+  bad.width = 0;
+  EXPECT_THROW(decodeObstacleMap(bad), ObstacleMapError);
+  bad = good;
+  bad.resolution = -0.1;
+  EXPECT_THROW(decodeObstacleMap(bad), ObstacleMapError);
+  bad = good;
+  bad.encoding = 7;
+  EXPECT_THROW(decodeObstacleMap(bad), ObstacleMapError);
+  bad = makeObstacleMap(sampleMap(), beft::obstacle_map_t::ENCODING_RAW);
+  bad.data[5] = 9;  // not a CELL_* value
+  EXPECT_THROW(decodeObstacleMap(bad), ObstacleMapError);
+  bad = makeObstacleMap(sampleMap(), beft::obstacle_map_t::ENCODING_RAW);
+  bad.height = 5;  // more cells than data
+  EXPECT_THROW(decodeObstacleMap(bad), ObstacleMapError);
+}
+
+TEST(ObstacleMapCodec, RefusesToEncodeWrongCellCount) {
+  ObstacleCells map = sampleMap();
+  map.cells.pop_back();
+  EXPECT_THROW(makeObstacleMap(map, beft::obstacle_map_t::ENCODING_RLE), ObstacleMapError);
+}
+
+}  // namespace
+}  // namespace beft::planners
