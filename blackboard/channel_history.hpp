@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <deque>
 #include <optional>
+#include <utility>
 
 namespace beft::blackboard {
 
@@ -21,16 +22,27 @@ class ChannelHistory {
   explicit ChannelHistory(std::size_t capacity = 64) : capacity_(capacity == 0 ? 1 : capacity) {}
 
   // Stores a message; the oldest is dropped when the history is full.
-  uint64_t store(const Message& message, int64_t utime) {
-    entries_.push_back(Entry{++last_sequence_, utime, message});
+  uint64_t store(const Message& message, int64_t utime) { return store(Message(message), utime); }
+  uint64_t store(Message&& message, int64_t utime) {
+    entries_.push_back(Entry{++last_sequence_, utime, std::move(message)});
     while (entries_.size() > capacity_) entries_.pop_front();
     return last_sequence_;
   }
 
   bool empty() const { return entries_.empty(); }
   std::size_t size() const { return entries_.size(); }
+  std::size_t capacity() const { return capacity_; }
   uint64_t lastSequence() const { return last_sequence_; }  // 0 if nothing stored yet
   const Entry* latest() const { return entries_.empty() ? nullptr : &entries_.back(); }
+  const Entry* oldest() const { return entries_.empty() ? nullptr : &entries_.front(); }
+
+  // Drops the oldest entry (e.g. to keep a memory budget); sequence numbers
+  // are not reused. False if there was nothing to drop.
+  bool dropOldest() {
+    if (entries_.empty()) return false;
+    entries_.pop_front();
+    return true;
+  }
 
   // Newest entry whose utime is <= utime (the state "as of" a time), or null.
   const Entry* atOrBefore(int64_t utime) const {

@@ -1,0 +1,32 @@
+// Which channels the blackboard keeps: every channel except those matching
+// an exclusion pattern (the arbiter's control plane and its own service).
+#pragma once
+
+#include <map>
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace beft::blackboard {
+
+class ChannelFilter {
+ public:
+  // ECMAScript regular expressions, each matched against the whole channel
+  // name. Throws std::invalid_argument naming a pattern that does not compile.
+  explicit ChannelFilter(const std::vector<std::string>& exclude_patterns);
+
+  // FIRE, DONE, HEARTBEAT, MARKING and BB_.* (queries and snapshots).
+  static std::vector<std::string> defaultExclusions();
+
+  // Remembers each channel's verdict: regex matching runs once per channel.
+  bool accepts(const std::string& channel);
+
+  const std::vector<std::string>& patterns() const { return patterns_; }
+
+ private:
+  std::vector<std::string> patterns_;
+  std::vector<std::regex> regexes_;
+  std::map<std::string, bool> verdicts_;
+};
+
+}  // namespace beft::blackboard
