@@ -91,6 +91,7 @@ bool ElementReader::parseNumber(const std::string& text, double* value) {
 std::optional<double> ElementReader::optionalNumber(const char* attribute) {
   const char* text = raw(attribute);
   if (text == nullptr) return std::nullopt;
+  if (trimmed(text).empty()) fail(describe(attribute) + " is empty");
   double value = 0;
   if (!parseNumber(text, &value)) {
     fail(describe(attribute) + " is not a number: '" + text + "'");

@@ -51,6 +51,20 @@ std::vector<std::string> splitWords(const char* text) {
   return words;
 }
 
+std::string describeXmlError(tinyxml2::XMLError error) {
+  switch (error) {
+    case tinyxml2::XML_ERROR_EMPTY_DOCUMENT: return "the file is empty";
+    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT: return "an element is not closed, or closed by the wrong tag";
+    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE: return "an attribute is badly written (values need quotes)";
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT: return "an element is badly written";
+    case tinyxml2::XML_ERROR_PARSING_TEXT: return "bad text content";
+    case tinyxml2::XML_ERROR_PARSING_COMMENT: return "a comment is not closed";
+    case tinyxml2::XML_ERROR_PARSING_DECLARATION: return "bad <?xml ...?> declaration";
+    case tinyxml2::XML_ERROR_PARSING: return "the document ends early or has stray content";
+    default: return tinyxml2::XMLDocument::ErrorIDToName(error);
+  }
+}
+
 // Walks the document once; every check names the element it is about.
 class Loader {
  public:
@@ -106,12 +120,11 @@ class Loader {
       throw ScenarioError(file_, 0, "cannot open scenario file (no such file)");
     }
     if (document_.LoadFile(file_.c_str()) != tinyxml2::XML_SUCCESS) {
-      std::string detail = document_.ErrorStr();
-      // tinyxml2 prefixes "Error=NAME ErrorID=N (0xN) Line number=N: "; keep the rest.
-      const auto colon = detail.find(": ");
-      if (colon != std::string::npos) detail = detail.substr(colon + 2);
-      std::string message = std::string("malformed XML: ") + document_.ErrorName();
-      if (!detail.empty()) message += " (" + detail + ")";
+      // tinyxml2's ErrorStr() is "Error=NAME ErrorID=N (0xN) Line number=N[: detail]".
+      const std::string error_text = document_.ErrorStr();
+      const auto detail_start = error_text.find(": ");
+      std::string message = "malformed XML: " + describeXmlError(document_.ErrorID());
+      if (detail_start != std::string::npos) message += " (" + error_text.substr(detail_start + 2) + ")";
       throw ScenarioError(file_, document_.ErrorLineNum(), message);
     }
     if (document_.RootElement() == nullptr) {
