@@ -1,0 +1,296 @@
+#include "supervisor.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <thread>
+
+namespace beft::launch {
+
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+void onSignal(int) { g_interrupted = true; }
+
+using Clock = std::chrono::steady_clock;
+
+struct Child {
+  ProcessSpec spec;
+  std::vector<std::string> argv;
+  pid_t pid = -1;
+  int output_fd = -1;  // read end of the child's stdout+stderr
+  std::string pending;  // output not yet ended by a newline
+  int restarts = 0;
+  bool running = false;
+  bool finished = false;  // exited and will not be restarted
+  Clock::time_point restart_at{};
+  bool restart_scheduled = false;
+};
+
+class Printer {
+ public:
+  Printer(bool quiet, const std::string& file) : quiet_(quiet) {
+    if (!file.empty()) file_.open(file, std::ios::app);
+  }
+  void line(const std::string& name, const std::string& text) {
+    const std::string out = "[" + name + "] " + text + "\n";
+    if (!quiet_) {
+      std::fputs(out.c_str(), stdout);
+      std::fflush(stdout);
+    }
+    if (file_) file_ << out << std::flush;
+  }
+  // The launcher's own lines are always shown.
+  void own(const std::string& text) {
+    const std::string out = "[launch] " + text + "\n";
+    std::fputs(out.c_str(), stdout);
+    std::fflush(stdout);
+    if (file_) file_ << out << std::flush;
+  }
+
+ private:
+  bool quiet_;
+  std::ofstream file_;
+};
+
+std::string resolveCommand(const std::string& command, const std::string& bin_dir) {
+  if (command.find('/') != std::string::npos) return command;
+  if (!bin_dir.empty()) {
+    const std::string candidate = bin_dir + "/" + command;
+    if (access(candidate.c_str(), X_OK) == 0) return candidate;
+  }
+  return command;  // execvp searches PATH
+}
+
+bool start(Child& child, Printer& printer) {
+  int fds[2];
+  if (pipe(fds) != 0) {
+    printer.own("cannot create a pipe for " + child.spec.name + ": " + std::strerror(errno));
+    return false;
+  }
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    printer.own("cannot fork " + child.spec.name + ": " + std::strerror(errno));
+    close(fds[0]);
+    close(fds[1]);
+    return false;
+  }
+  if (pid == 0) {
+    // The child: own process group, dies with the launcher, output to the pipe.
+    setpgid(0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(1);
+    dup2(fds[1], STDOUT_FILENO);
+    dup2(fds[1], STDERR_FILENO);
+    close(fds[0]);
+    close(fds[1]);
+    std::vector<char*> argv;
+    for (auto& arg : child.argv) argv.push_back(arg.data());
+    argv.push_back(nullptr);
+    execvp(argv[0], argv.data());
+    std::fprintf(stderr, "cannot execute '%s': %s\n", argv[0], std::strerror(errno));
+    _exit(127);
+  }
+  close(fds[1]);
+  fcntl(fds[0], F_SETFL, fcntl(fds[0], F_GETFL) | O_NONBLOCK);
+  child.pid = pid;
+  child.output_fd = fds[0];
+  child.running = true;
+  child.pending.clear();
+  return true;
+}
+
+void drain(Child& child, Printer& printer, bool flush_partial) {
+  if (child.output_fd < 0) return;
+  char buffer[4096];
+  while (true) {
+    const ssize_t n = read(child.output_fd, buffer, sizeof(buffer));
+    if (n <= 0) break;
+    child.pending.append(buffer, static_cast<std::size_t>(n));
+  }
+  std::size_t newline;
+  while ((newline = child.pending.find('\n')) != std::string::npos) {
+    printer.line(child.spec.name, child.pending.substr(0, newline));
+    child.pending.erase(0, newline + 1);
+  }
+  if (flush_partial && !child.pending.empty()) {
+    printer.line(child.spec.name, child.pending);
+    child.pending.clear();
+  }
+}
+
+std::string describeStatus(int status) {
+  if (WIFEXITED(status)) return "exited with code " + std::to_string(WEXITSTATUS(status));
+  if (WIFSIGNALED(status)) return std::string("killed by signal ") + strsignal(WTERMSIG(status));
+  return "ended";
+}
+
+void stopAll(std::vector<Child>& children, Printer& printer, double grace_s) {
+  for (auto& child : children)
+    if (child.running) kill(-child.pid, SIGTERM);
+  const auto deadline = Clock::now() + std::chrono::duration<double>(grace_s);
+  while (Clock::now() < deadline) {
+    bool any = false;
+    for (auto& child : children) {
+      if (!child.running) continue;
+      drain(child, printer, false);
+      int status = 0;
+      if (waitpid(child.pid, &status, WNOHANG) == child.pid) {
+        child.running = false;
+        drain(child, printer, true);
+      } else {
+        any = true;
+      }
+    }
+    if (!any) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  for (auto& child : children) {
+    if (!child.running) continue;
+    printer.own(child.spec.name + " did not stop within " + std::to_string(grace_s) + " s: killed");
+    kill(-child.pid, SIGKILL);
+    waitpid(child.pid, nullptr, 0);
+    child.running = false;
+  }
+  for (auto& child : children)
+    if (child.output_fd >= 0) {
+      drain(child, printer, true);
+      close(child.output_fd);
+      child.output_fd = -1;
+    }
+}
+
+}  // namespace
+
+std::string commandLineOf(const ProcessSpec& process, const SupervisorOptions& options) {
+  std::string line = resolveCommand(process.command, options.bin_dir);
+  for (const auto& arg : process.args) line += " " + arg;
+  if (process.append_lcm_url) line += " --lcm-url '" + options.lcm_url + "'";
+  return line;
+}
+
+RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
+  g_interrupted = false;
+  struct sigaction action {};
+  action.sa_handler = onSignal;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  signal(SIGPIPE, SIG_IGN);
+
+  Printer printer(options.quiet_children, options.output_file);
+  RunOutcome outcome;
+  std::vector<Child> children;
+
+  if (!options.record_log.empty()) {
+    Child logger;
+    logger.spec.name = "logger";
+    logger.argv = {"lcm-logger", "--lcm-url=" + options.lcm_url, "--force", "--quiet"};
+    if (!options.record_exclude_regex.empty()) {
+      logger.argv.push_back("--invert-channels");
+      logger.argv.push_back("--channel=" + options.record_exclude_regex);
+    }
+    logger.argv.push_back(options.record_log);
+    children.push_back(logger);
+  }
+  for (const auto& process : spec.processes) {
+    if (process.host != options.host) {
+      printer.own("not starting " + process.name + ": it runs on host '" + process.host + "'");
+      continue;
+    }
+    if (options.except.count(process.name)) {
+      printer.own("not starting " + process.name + " (--except); start it by hand with:\n    " +
+                  commandLineOf(process, options));
+      continue;
+    }
+    Child child;
+    child.spec = process;
+    child.argv.push_back(resolveCommand(process.command, options.bin_dir));
+    child.argv.insert(child.argv.end(), process.args.begin(), process.args.end());
+    if (process.append_lcm_url) {
+      child.argv.push_back("--lcm-url");
+      child.argv.push_back(options.lcm_url);
+    }
+    children.push_back(child);
+  }
+
+  for (auto& child : children) {
+    if (!start(child, printer)) {
+      outcome.message = "could not start " + child.spec.name;
+      stopAll(children, printer, options.stop_grace_s);
+      return outcome;
+    }
+    if (child.spec.is_arbiter) outcome.arbiter_ran = true;
+    if (child.spec.name == "logger") std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  printer.own("started " + std::to_string(children.size()) + " processes on " + options.lcm_url);
+
+  while (true) {
+    if (g_interrupted) {
+      outcome.interrupted = true;
+      outcome.message = "interrupted";
+      printer.own("interrupted: stopping every process");
+      break;
+    }
+    std::vector<pollfd> fds;
+    for (auto& child : children)
+      if (child.output_fd >= 0) fds.push_back({child.output_fd, POLLIN, 0});
+    poll(fds.data(), fds.size(), 50);
+    for (auto& child : children) drain(child, printer, false);
+
+    bool arbiter_done = false;
+    for (auto& child : children) {
+      if (!child.running) continue;
+      int status = 0;
+      if (waitpid(child.pid, &status, WNOHANG) != child.pid) continue;
+      child.running = false;
+      drain(child, printer, true);
+      close(child.output_fd);
+      child.output_fd = -1;
+      const bool failed = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+      if (child.spec.is_arbiter) {
+        outcome.arbiter_exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        printer.own("arbiter " + describeStatus(status) + ": the run is over");
+        arbiter_done = true;
+      } else if (failed && child.spec.restart == RestartPolicy::OnFailure &&
+                 child.restarts < child.spec.max_restarts) {
+        ++child.restarts;
+        printer.own(child.spec.name + " " + describeStatus(status) + ": restarting (" +
+                    std::to_string(child.restarts) + "/" + std::to_string(child.spec.max_restarts) + ")");
+        child.restart_scheduled = true;
+        child.restart_at = Clock::now() + std::chrono::milliseconds(500);
+      } else {
+        printer.own(child.spec.name + " " + describeStatus(status) +
+                    (failed && child.spec.restart == RestartPolicy::OnFailure ? " (restart limit reached)" : ""));
+        child.finished = true;
+      }
+    }
+    if (arbiter_done) break;
+    for (auto& child : children)
+      if (child.restart_scheduled && Clock::now() >= child.restart_at) {
+        child.restart_scheduled = false;
+        if (!start(child, printer)) child.finished = true;
+      }
+    bool any_alive = false;
+    for (auto& child : children) any_alive |= child.running || child.restart_scheduled;
+    if (!any_alive) {
+      outcome.message = "every process has exited";
+      break;
+    }
+  }
+  stopAll(children, printer, options.stop_grace_s);
+  if (outcome.message.empty() && outcome.arbiter_exit_code >= 0)
+    outcome.message = outcome.arbiter_exit_code == 0 ? "run finished" : "run failed";
+  return outcome;
+}
+
+}  // namespace beft::launch

@@ -1,0 +1,156 @@
+// Launch files and the process supervisor, with small shell processes.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "free_port.hpp"
+#include "launch_file.hpp"
+#include "supervisor.hpp"
+
+using namespace beft::launch;
+
+namespace {
+
+struct TempDir {
+  std::string path;
+  TempDir() {
+    char pattern[] = "/tmp/beft_launch_XXXXXX";
+    path = mkdtemp(pattern);
+  }
+  ~TempDir() { std::system(("rm -rf '" + path + "'").c_str()); }
+  std::string write(const std::string& name, const std::string& text) const {
+    const std::string file = path + "/" + name;
+    std::ofstream(file) << text;
+    return file;
+  }
+};
+
+std::string readAll(const std::string& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string errorOf(const std::string& file, std::map<std::string, std::string> overrides = {}) {
+  try {
+    loadLaunchFile(file, overrides);
+  } catch (const LaunchError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(LaunchFile, ResolvesArgumentsAndDefaults) {
+  TempDir dir;
+  const auto file = dir.write("a.xml", R"(<launch name="t">
+  <arg name="who" default="world"/>
+  <process name="p1" command="echo" args="hello ${who} 'two words'" group="low" restart="on-failure" max_restarts="2"/>
+  <process name="p2" command="true" host="robot" role="arbiter" lcm_url="0"/>
+</launch>)");
+  const auto spec = loadLaunchFile(file, {{"who", "there"}});
+  ASSERT_EQ(spec.processes.size(), 2u);
+  const auto& p1 = spec.processes[0];
+  EXPECT_EQ(p1.command, "echo");
+  EXPECT_EQ(p1.args, (std::vector<std::string>{"hello", "there", "two words"}));
+  EXPECT_EQ(p1.group, "low");
+  EXPECT_EQ(p1.restart, RestartPolicy::OnFailure);
+  EXPECT_EQ(p1.max_restarts, 2);
+  EXPECT_EQ(p1.line, 3);
+  EXPECT_TRUE(spec.processes[1].is_arbiter);
+  EXPECT_EQ(spec.processes[1].host, "robot");
+  EXPECT_FALSE(spec.processes[1].append_lcm_url);
+}
+
+TEST(LaunchFile, ErrorsNameFileAndLine) {
+  TempDir dir;
+  auto f1 = dir.write("unknown_var.xml", "<launch>\n<process name=\"p\" command=\"x\" args=\"${nope}\"/>\n</launch>");
+  EXPECT_NE(errorOf(f1).find(f1 + ":2: unknown variable '${nope}'"), std::string::npos) << errorOf(f1);
+  auto f2 = dir.write("dup.xml", "<launch>\n<process name=\"p\" command=\"x\"/>\n\n<process name=\"p\" command=\"y\"/>\n</launch>");
+  EXPECT_NE(errorOf(f2).find(f2 + ":4: duplicate process name 'p'"), std::string::npos) << errorOf(f2);
+  auto f3 = dir.write("policy.xml", "<launch>\n<process name=\"p\" command=\"x\" restart=\"always\"/>\n</launch>");
+  EXPECT_NE(errorOf(f3).find(f3 + ":2: restart must be"), std::string::npos) << errorOf(f3);
+  auto f4 = dir.write("attr.xml", "<launch>\n<process name=\"p\" command=\"x\" colour=\"red\"/>\n</launch>");
+  EXPECT_NE(errorOf(f4).find(f4 + ":2: unknown attribute 'colour'"), std::string::npos) << errorOf(f4);
+  auto f5 = dir.write("missing.xml", "<launch>\n<process name=\"p\"/>\n</launch>");
+  EXPECT_NE(errorOf(f5).find(f5 + ":2: <process> needs attribute 'command'"), std::string::npos) << errorOf(f5);
+  auto f6 = dir.write("bad.xml", "<launch>\n<process name=\"p\" command=\"x\">\n</launch>");
+  EXPECT_NE(errorOf(f6).find(f6 + ":"), std::string::npos);
+  auto f7 = dir.write("ok.xml", "<launch><process name=\"p\" command=\"x\"/></launch>");
+  EXPECT_NE(errorOf(f7, {{"undeclared", "1"}}).find("declares no <arg name=\"undeclared\">"), std::string::npos);
+}
+
+TEST(LaunchFile, SplitsQuotedArguments) {
+  EXPECT_EQ(splitArguments("  a  'b c' \"d e\" f'g h'  "),
+            (std::vector<std::string>{"a", "b c", "d e", "fg h"}));
+  EXPECT_THROW(splitArguments("a 'b"), LaunchError);
+}
+
+TEST(Supervisor, PrefixesOutputRestartsOnFailureAndEndsWithTheArbiter) {
+  TempDir dir;
+  const std::string counter = dir.path + "/starts";
+  const auto file = dir.write("run.xml", R"(<launch>
+  <process name="flaky" command="sh" args="-c 'echo started >> )" + counter + R"(; echo flaky says hi; exit 3'" restart="on-failure" max_restarts="2" lcm_url="0"/>
+  <process name="sleeper" command="sleep" args="100" lcm_url="0"/>
+  <process name="arbiter" command="sh" args="-c 'sleep 1.5; echo done; exit 0'" role="arbiter" lcm_url="0"/>
+</launch>)");
+  SupervisorOptions options;
+  options.quiet_children = true;
+  options.output_file = dir.path + "/out.log";
+  const auto start = std::chrono::steady_clock::now();
+  const auto outcome = supervise(loadLaunchFile(file, {}), options);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  EXPECT_TRUE(outcome.arbiter_ran);
+  EXPECT_EQ(outcome.arbiter_exit_code, 0);
+  EXPECT_LT(seconds, 20.0);  // the sleeper was stopped, not waited for
+  const std::string log = readAll(options.output_file);
+  EXPECT_NE(log.find("[flaky] flaky says hi"), std::string::npos) << log;
+  EXPECT_NE(log.find("[arbiter] done"), std::string::npos) << log;
+  EXPECT_NE(log.find("restarting (2/2)"), std::string::npos) << log;
+  EXPECT_NE(log.find("restart limit reached"), std::string::npos) << log;
+  EXPECT_EQ(readAll(counter), "started\nstarted\nstarted\n");  // first start + 2 restarts
+}
+
+TEST(Supervisor, ExceptAndOtherHostsAreNotStarted) {
+  TempDir dir;
+  const std::string marker = dir.path + "/ran";
+  const auto file = dir.write("run.xml", R"(<launch>
+  <process name="skipped" command="touch" args=")" + marker + R"(" lcm_url="0"/>
+  <process name="remote" command="touch" args=")" + marker + R"(" host="robot2" lcm_url="0"/>
+  <process name="arbiter" command="true" role="arbiter" lcm_url="0"/>
+</launch>)");
+  SupervisorOptions options;
+  options.quiet_children = true;
+  options.except = {"skipped"};
+  options.output_file = dir.path + "/out.log";
+  const auto outcome = supervise(loadLaunchFile(file, {}), options);
+  EXPECT_EQ(outcome.arbiter_exit_code, 0);
+  EXPECT_NE(access(marker.c_str(), F_OK), 0);
+  const std::string log = readAll(options.output_file);
+  EXPECT_NE(log.find("not starting skipped (--except); start it by hand with:"), std::string::npos) << log;
+  EXPECT_NE(log.find("not starting remote: it runs on host 'robot2'"), std::string::npos) << log;
+}
+
+TEST(Supervisor, ReportsAFailedArbiter) {
+  TempDir dir;
+  const auto file = dir.write("run.xml",
+                              "<launch><process name=\"arbiter\" command=\"sh\" args=\"-c 'exit 4'\" role=\"arbiter\" lcm_url=\"0\"/></launch>");
+  SupervisorOptions options;
+  options.quiet_children = true;
+  const auto outcome = supervise(loadLaunchFile(file, {}), options);
+  EXPECT_EQ(outcome.arbiter_exit_code, 4);
+  EXPECT_EQ(outcome.message, "run failed");
+}
+
+TEST(FreePort, ReturnsAPortInRange) {
+  const int port = findFreeUdpPort(30000, 30100);
+  EXPECT_GE(port, 30000);
+  EXPECT_LE(port, 30100);
+}
