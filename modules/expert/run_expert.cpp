@@ -10,6 +10,7 @@
 #include "live_runner.hpp"
 #include "log.hpp"
 #include "log_replay.hpp"
+#include "blackboard/message_decoder.hpp"
 
 namespace beft::expert {
 
@@ -112,7 +113,11 @@ int runExpertMain(int argc, char** argv, Expert& expert,
   if (!replay_log.empty()) {
     try {
       const ReplayResult result = replayLog(expert, options.process_name, replay_log);
-      printReplayResult(result, options.process_name, nullptr);
+      printReplayResult(result, options.process_name,
+                        [](const std::string& channel, const std::vector<uint8_t>& bytes) {
+                          return blackboard::describeMessage(channel, bytes.data(),
+                                                             static_cast<int>(bytes.size()), 80);
+                        });
       return result.exactMatch() ? 0 : 3;
     } catch (const std::exception& e) {
       log::error(e.what());
