@@ -23,6 +23,7 @@ inline constexpr const char* kDynamicWeights = "DYNAMIC_WEIGHTS";  // dynamic_we
 // Tasks and planning.
 inline constexpr const char* kTaskStack = "TASK_STACK";            // task_stack_t
 inline constexpr const char* kTaskCommand = "TASK_COMMAND";        // task_command_t
+inline constexpr const char* kTaskEvents = "TASK_EVENTS";          // task_events_t
 inline constexpr const char* kPlanRequest = "PLAN_REQUEST";        // plan_request_t
 inline constexpr const char* kPlanResult = "PLAN_RESULT";          // plan_result_t
 // Control plane (arbiter).

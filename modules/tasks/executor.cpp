@@ -1,0 +1,415 @@
+#include "executor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "model.hpp"
+
+namespace beft::tasks {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double wrap(double deg) { return model::wrapDegrees(deg); }
+
+std::string fmt(double value, int decimals = 2) {
+  char buffer[48];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value);
+  return buffer;
+}
+
+int64_t micros(double seconds) { return static_cast<int64_t>(std::llround(seconds * 1e6)); }
+
+}  // namespace
+
+double bearingDeg(double x0, double y0, double x1, double y1) {
+  return std::atan2(y1 - y0, x1 - x0) * 180.0 / kPi;
+}
+
+Executor::Executor(ExecutorParameters parameters)
+    : parameters_(std::move(parameters)), next_request_id_(parameters_.first_request_id) {}
+
+void Executor::setObstacleMap(planners::ObstacleCells map) {
+  if (map_ && map_->width == map.width && map_->height == map.height &&
+      map_->resolution == map.resolution && map_->origin_x == map.origin_x &&
+      map_->origin_y == map.origin_y && map_->cells == map.cells)
+    return;
+  map_ = std::move(map);
+  map_changed_ = true;
+}
+
+void Executor::onPlanResult(const beft::plan_result_t& result) {
+  if (awaited_request_ != 0 && result.request_id == awaited_request_) plan_result_ = result;
+}
+
+beft::robot_command_t Executor::hold(int64_t utime) const {
+  beft::robot_command_t command;
+  command.utime = utime;
+  command.mode = beft::robot_command_t::MODE_STOP;
+  command.vx = command.vy = command.yaw_rate = 0;
+  command.goal_x = robot_ ? robot_->x : 0;
+  command.goal_y = robot_ ? robot_->y : 0;
+  command.goal_yaw = robot_ ? robot_->yaw : 0;
+  command.set_head = false;
+  command.head_yaw = robot_ ? robot_->head_yaw : 0;
+  command.head_pitch = robot_ ? robot_->head_pitch : 0;
+  command.source = "tasks";
+  return command;
+}
+
+beft::robot_command_t Executor::gotoCommand(double x, double y, double yaw, int64_t utime) const {
+  beft::robot_command_t command = hold(utime);
+  command.mode = beft::robot_command_t::MODE_GOTO;
+  command.goal_x = x;
+  command.goal_y = y;
+  command.goal_yaw = yaw;
+  return command;
+}
+
+bool Executor::stalled(Run& run, double error, double min_gain, int64_t utime) const {
+  if (error < run.best_error - min_gain) {
+    run.best_error = error;
+    run.progress_utime = utime;
+    return false;
+  }
+  return utime - run.progress_utime >= micros(parameters_.stall_s);
+}
+
+Executor::TickOutput Executor::tick(TaskStack& stack, int64_t utime) {
+  TickOutput out;
+  out.command = hold(utime);
+
+  // Forget the tasks that left the stack, and an answer nobody waits for.
+  for (auto it = runs_.begin(); it != runs_.end();)
+    it = stack.find(it->first) == nullptr ? runs_.erase(it) : std::next(it);
+  if (awaited_request_ != 0 &&
+      std::none_of(runs_.begin(), runs_.end(),
+                   [&](const auto& entry) { return entry.second.request_id == awaited_request_; })) {
+    awaited_request_ = 0;
+    plan_result_.reset();
+  }
+
+  if (!robot_) {
+    if (!warned_no_robot_ && !stack.empty())
+      out.log.push_back("no ROBOT_STATE yet: holding every task");
+    warned_no_robot_ = true;
+    map_changed_ = false;
+    return out;
+  }
+
+  // A finished task hands the tick to the next one, so a chain of instant
+  // tasks does not cost a tick each; bounded so a tick always ends.
+  for (int cascade = 0; cascade < 8; ++cascade) {
+    const Task* top = stack.top();
+    if (top == nullptr) {
+      last_top_id_ = 0;
+      break;
+    }
+    const Task task = *top;
+    auto [it, is_new] = runs_.try_emplace(task.id);
+    Run& run = it->second;
+    if (is_new || last_top_id_ != task.id) {
+      // Started, or resumed after an interruption: start the watches afresh
+      // from where the robot is now.
+      if (!is_new && task.kind == kinds::kGoto && !run.path.empty() && !run.need_plan &&
+          std::hypot(robot_->x - run.hold_x, robot_->y - run.hold_y) > parameters_.waypoint_tolerance_m)
+        run.need_plan = true;  // moved while suspended: the old path may not start here
+      run.started_utime = utime;
+      run.hold_x = robot_->x;
+      run.hold_y = robot_->y;
+      run.best_error = 1e300;
+      run.progress_utime = utime;
+      run.aligned_since = -1;
+      run.turning_platform = false;
+      run.idle_since = -1;
+      if (is_new) run.collisions_seen = robot_->collisions;
+      out.log.push_back(std::string(is_new ? "start " : "resume ") + std::to_string(task.id) + " " +
+                        describe(task) + " (priority " + std::to_string(task.priority) + ", from " +
+                        (task.origin.empty() ? "?" : task.origin) + ")");
+    }
+    last_top_id_ = task.id;
+
+    Finish finish;
+    if (task.kind == kinds::kGoto) finish = runGoto(task, run, utime, out);
+    else if (task.kind == kinds::kTurnHead) finish = runTurnHead(task, run, utime, out);
+    else if (task.kind == kinds::kTurn) finish = runTurn(task, run, utime, out);
+    else if (task.kind == kinds::kLookAt) finish = runLookAt(task, run, utime, out);
+    else if (task.kind == kinds::kWait) finish = runWait(task, run, utime, out);
+    else finish = runOwned(task, run, utime, out);
+    if (task.kind == kinds::kGoto) {
+      run.hold_x = robot_->x;  // where it was last active, to notice a move while suspended
+      run.hold_y = robot_->y;
+    }
+
+    if (!finish) break;
+    out.log.push_back(std::string(finish->first == Status::Done ? "done " : "FAILED ") +
+                      std::to_string(task.id) + " " + describe(task) + ": " + finish->second);
+    stack.finish(task.id, finish->first, finish->second);
+    runs_.erase(task.id);
+    out.command = hold(utime);
+    if (out.request) break;
+  }
+  map_changed_ = false;
+  return out;
+}
+
+Executor::Finish Executor::collectPlan(const Task& task, Run& run, TickOutput& out) {
+  const int64_t id = run.request_id;
+  run.request_id = 0;
+  awaited_request_ = 0;
+  std::optional<beft::plan_result_t> result;
+  result.swap(plan_result_);
+  if (!result || result->request_id != id) {
+    run.last_plan_error = "no answer from the planner service to request " + std::to_string(id) +
+                          " (is beft-planner running on this LCM URL?)";
+  } else if (!result->success) {
+    run.last_plan_error = "planner " + (result->planner.empty() ? std::string("?") : result->planner) +
+                          " found no path" + (result->message.empty() ? "" : ": " + result->message);
+  } else if (result->waypoints.empty()) {
+    run.last_plan_error = "planner " + result->planner + " answered with no waypoints";
+  } else {
+    run.path = result->waypoints;
+    run.next_waypoint = 0;
+    run.failed_plans = 0;
+    run.need_plan = false;
+    run.best_error = 1e300;
+    out.log.push_back("path for " + std::to_string(task.id) + " " + describe(task) + ": " +
+                      std::to_string(run.path.size()) + " waypoints, " + fmt(result->length) + " m (" +
+                      result->planner + ", " + fmt(result->planning_time, 3) + " s)");
+    return std::nullopt;
+  }
+  ++run.failed_plans;
+  out.log.push_back("plan " + std::to_string(run.failed_plans) + "/" +
+                    std::to_string(parameters_.max_failed_plans) + " for " + std::to_string(task.id) +
+                    " failed: " + run.last_plan_error);
+  if (run.failed_plans >= parameters_.max_failed_plans)
+    return std::make_pair(Status::Failed, "no path after " + std::to_string(run.failed_plans) +
+                                              " attempts: " + run.last_plan_error);
+  run.need_plan = true;
+  return std::nullopt;
+}
+
+void Executor::requestPlan(const Task& task, Run& run, int64_t utime, TickOutput& out) {
+  const auto& r = *robot_;
+  beft::plan_request_t request;
+  request.utime = utime;
+  request.request_id = next_request_id_++;
+  request.start_x = r.x;
+  request.start_y = r.y;
+  request.start_yaw = r.yaw;
+  request.goal_x = task.x;
+  request.goal_y = task.y;
+  // Any final heading: arrive facing the way travelled.
+  request.goal_yaw = std::isnan(task.yaw) ? bearingDeg(r.x, r.y, task.x, task.y) : task.yaw;
+  request.planner = parameters_.planner;
+  request.time_budget = parameters_.plan_time_budget_s;
+  run.request_id = request.request_id;
+  run.need_plan = false;
+  awaited_request_ = request.request_id;
+  plan_result_.reset();
+  out.request = request;
+  out.log.push_back("plan request " + std::to_string(request.request_id) + " for " +
+                    std::to_string(task.id) + ": (" + fmt(r.x) + ", " + fmt(r.y) + ") -> (" +
+                    fmt(task.x) + ", " + fmt(task.y) + ")");
+}
+
+bool Executor::pathBlocked(const Run& run) const {
+  if (!map_ || run.path.empty() || map_->width <= 0 || map_->height <= 0) return false;
+  const auto& r = *robot_;
+  const auto& map = *map_;
+  const double clearance = std::max(0.9 * r.radius, map.resolution);
+  const int reach = static_cast<int>(std::ceil(clearance / map.resolution));
+  const double step = map.resolution / 2;
+  const auto& goal = run.path.back();
+  const auto occupiedNear = [&](double px, double py) {
+    if (std::hypot(px - r.x, py - r.y) < r.radius + 0.2) return false;  // where it stands now
+    if (std::hypot(px - goal.x, py - goal.y) < r.radius) return false;  // the goal's own surroundings
+    const int cx = static_cast<int>(std::floor((px - map.origin_x) / map.resolution));
+    const int cy = static_cast<int>(std::floor((py - map.origin_y) / map.resolution));
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx) {
+        const int x = cx + dx, y = cy + dy;
+        if (x < 0 || y < 0 || x >= map.width || y >= map.height) continue;
+        if ((dx * dx + dy * dy) * map.resolution * map.resolution > clearance * clearance) continue;
+        if (map.at(x, y) == beft::obstacle_map_t::CELL_OCCUPIED) return true;
+      }
+    return false;
+  };
+  double ax = r.x, ay = r.y;
+  for (std::size_t i = run.next_waypoint; i < run.path.size(); ++i) {
+    const double bx = run.path[i].x, by = run.path[i].y;
+    const double length = std::hypot(bx - ax, by - ay);
+    const int samples = std::max(1, static_cast<int>(std::ceil(length / step)));
+    for (int s = 0; s <= samples; ++s) {
+      const double f = static_cast<double>(s) / samples;
+      if (occupiedNear(ax + f * (bx - ax), ay + f * (by - ay))) return true;
+    }
+    ax = bx;
+    ay = by;
+  }
+  return false;
+}
+
+Executor::Finish Executor::runGoto(const Task& task, Run& run, int64_t utime, TickOutput& out) {
+  const auto& r = *robot_;
+  const bool any_yaw = std::isnan(task.yaw);
+  const double goal_distance = std::hypot(task.x - r.x, task.y - r.y);
+  const double goal_yaw_error = any_yaw ? 0.0 : std::abs(wrap(task.yaw - r.yaw));
+  if (run.request_id == 0 && goal_distance <= parameters_.goal_tolerance_m &&
+      goal_yaw_error <= parameters_.yaw_tolerance_deg)
+    return std::make_pair(Status::Done, "reached (" + fmt(r.x) + ", " + fmt(r.y) + ", " + fmt(r.yaw, 1) + ")");
+
+  if (run.request_id != 0) {
+    if (auto failed = collectPlan(task, run, out)) return failed;
+  } else if (!run.need_plan) {
+    std::string why;
+    if (r.collisions > run.collisions_seen) why = "the robot collided";
+    else if (map_changed_ && pathBlocked(run)) why = "a newly mapped obstacle blocks the path";
+    run.collisions_seen = std::max(run.collisions_seen, r.collisions);
+    if (why.empty()) {
+      // Progress: remaining path length plus the heading still to turn.
+      const std::size_t n = run.path.size();
+      const auto& target = run.path[std::min(run.next_waypoint, n - 1)];
+      double remaining = std::hypot(target.x - r.x, target.y - r.y) +
+                         std::abs(wrap(target.yaw - r.yaw)) / 90.0;
+      for (std::size_t i = run.next_waypoint + 1; i < n; ++i)
+        remaining += std::hypot(run.path[i].x - run.path[i - 1].x, run.path[i].y - run.path[i - 1].y);
+      if (stalled(run, remaining, 0.05, utime))
+        why = "no progress for " + fmt(parameters_.stall_s, 1) + " s";
+    }
+    if (!why.empty()) {
+      ++run.replans;
+      if (run.replans > parameters_.max_replans)
+        return std::make_pair(Status::Failed, "gave up after " + std::to_string(parameters_.max_replans) +
+                                                  " replans (last: " + why + ")");
+      out.log.push_back("replan " + std::to_string(task.id) + " " + describe(task) + ": " + why);
+      run.need_plan = true;
+      run.best_error = 1e300;
+      run.progress_utime = utime;
+    }
+  }
+  if (run.need_plan) {
+    requestPlan(task, run, utime, out);
+    return std::nullopt;  // hold until the answer, next tick
+  }
+
+  // Follow the path one waypoint at a time.
+  const std::size_t last = run.path.size() - 1;
+  while (run.next_waypoint < last &&
+         std::hypot(run.path[run.next_waypoint].x - r.x, run.path[run.next_waypoint].y - r.y) <
+             parameters_.waypoint_tolerance_m)
+    ++run.next_waypoint;
+  const auto& waypoint = run.path[run.next_waypoint];
+  if (run.next_waypoint == last)
+    out.command = gotoCommand(task.x, task.y, any_yaw ? waypoint.yaw : task.yaw, utime);
+  else
+    out.command = gotoCommand(waypoint.x, waypoint.y, waypoint.yaw, utime);
+  if (parameters_.goto_centres_head) {
+    out.command.set_head = true;
+    out.command.head_yaw = 0;
+    out.command.head_pitch = 0;
+  }
+  return std::nullopt;
+}
+
+Executor::Finish Executor::runTurnHead(const Task& task, Run& run, int64_t utime, TickOutput& out) {
+  const auto& r = *robot_;
+  const double limit = parameters_.head_yaw_limit_deg;
+  const double target = std::clamp(wrap(task.yaw), -limit, limit);
+  const double error = std::abs(wrap(target - r.head_yaw));
+  const std::string clamped = target != wrap(task.yaw) ? " (limited to the head's range)" : "";
+  if (error <= parameters_.head_tolerance_deg)
+    return std::make_pair(Status::Done, "head at " + fmt(r.head_yaw, 1) + " deg" + clamped);
+  if (stalled(run, error, 0.5, utime))
+    return std::make_pair(Status::Failed, "the head stopped at " + fmt(r.head_yaw, 1) + " deg, target " +
+                                              fmt(target, 1) + " deg");
+  out.command = hold(utime);
+  out.command.mode = beft::robot_command_t::MODE_HEAD_ONLY;
+  out.command.set_head = true;
+  out.command.head_yaw = target;
+  out.command.head_pitch = r.head_pitch;
+  return std::nullopt;
+}
+
+Executor::Finish Executor::runTurn(const Task& task, Run& run, int64_t utime, TickOutput& out) {
+  const auto& r = *robot_;
+  const double error = std::abs(wrap(task.yaw - r.yaw));
+  if (error <= parameters_.yaw_tolerance_deg)
+    return std::make_pair(Status::Done, "heading " + fmt(r.yaw, 1) + " deg");
+  if (stalled(run, error, 0.5, utime))
+    return std::make_pair(Status::Failed, "the platform stopped turning at " + fmt(r.yaw, 1) +
+                                              " deg, target " + fmt(task.yaw, 1) + " deg");
+  out.command = gotoCommand(run.hold_x, run.hold_y, wrap(task.yaw), utime);
+  return std::nullopt;
+}
+
+Executor::Finish Executor::runLookAt(const Task& task, Run& run, int64_t utime, TickOutput& out) {
+  const auto& r = *robot_;
+  double ox, oy;
+  const auto known = object_positions_.find(task.object_id);
+  if (!task.object_id.empty() && known != object_positions_.end()) {
+    ox = known->second.first;
+    oy = known->second.second;
+  } else if (std::isfinite(task.x) && std::isfinite(task.y)) {
+    ox = task.x;
+    oy = task.y;
+  } else {
+    return std::make_pair(Status::Failed, "the position of '" + task.object_id +
+                                              "' is unknown (not in HYPOTHESES or AUDIO)");
+  }
+  const std::string what = task.object_id.empty() ? "(" + fmt(ox) + ", " + fmt(oy) + ")" : task.object_id;
+  if (std::hypot(ox - r.x, oy - r.y) < 0.05) return std::make_pair(Status::Done, "standing at " + what);
+
+  const double bearing = bearingDeg(r.x, r.y, ox, oy);
+  const double relative = wrap(bearing - r.yaw);  // head yaw that would face it
+  const double nose_error = std::abs(wrap(bearing - (r.yaw + r.head_yaw)));
+  if (nose_error <= parameters_.look_tolerance_deg) {
+    if (run.aligned_since < 0) run.aligned_since = utime;
+    if (utime - run.aligned_since >= micros(parameters_.look_hold_s))
+      return std::make_pair(Status::Done, "facing " + what + " (azimuth " + fmt(nose_error, 1) + " deg)");
+  } else {
+    run.aligned_since = -1;
+  }
+  if (utime - run.started_utime >= micros(parameters_.look_timeout_s))
+    return std::make_pair(Status::Failed, "could not face " + what + " within " +
+                                              fmt(parameters_.look_timeout_s, 1) + " s");
+
+  const double limit = parameters_.head_yaw_limit_deg;
+  // Beyond the head's range: turn the platform until it faces the object, the
+  // head leading; once started, the platform turn goes on to the end so the
+  // head ends near the centre of its range.
+  if (std::abs(relative) > limit) run.turning_platform = true;
+  if (run.turning_platform && std::abs(relative) <= parameters_.yaw_tolerance_deg)
+    run.turning_platform = false;
+  if (run.turning_platform) {
+    out.command = gotoCommand(run.hold_x, run.hold_y, bearing, utime);
+  } else {
+    out.command = hold(utime);
+    out.command.mode = beft::robot_command_t::MODE_HEAD_ONLY;
+  }
+  out.command.set_head = true;
+  out.command.head_yaw = std::clamp(relative, -limit, limit);
+  out.command.head_pitch = r.head_pitch;
+  return std::nullopt;
+}
+
+Executor::Finish Executor::runWait(const Task& task, Run& run, int64_t utime, TickOutput& out) {
+  out.command = hold(utime);
+  if (utime - run.started_utime >= micros(task.x))
+    return std::make_pair(Status::Done, "waited " + fmt(task.x, 1) + " s");
+  return std::nullopt;
+}
+
+Executor::Finish Executor::runOwned(const Task& task, Run& run, int64_t utime, TickOutput& out) {
+  // Its owner drives it by pushing sub-tasks and ends it; meanwhile hold still.
+  out.command = hold(utime);
+  if (run.idle_since < 0) run.idle_since = utime;
+  if (utime - run.idle_since >= micros(parameters_.owned_idle_s))
+    return std::make_pair(Status::Failed, "its owner '" + task.origin + "' pushed no sub-task and did not end it within " +
+                                              fmt(parameters_.owned_idle_s, 1) + " s");
+  return std::nullopt;
+}
+
+}  // namespace beft::tasks
