@@ -1,0 +1,64 @@
+#include "acoustic_labels_expert.hpp"
+
+#include "acoustic_labeller.hpp"
+#include "channels.hpp"
+#include "log.hpp"
+
+namespace beft::acoustic_labels {
+
+std::string AcousticLabelsExpert::description() const {
+  return "Mid-level acoustic labelling expert: for every sounding object, a_P = a_d(d_i) * "
+         "a_o(O_a) * a_w(alpha_i) (eq. 2) and the confidence of every category (eq. 3 with a_P) "
+         "given the label its sound suggests (its acoustic label). Reads GT_OBJECTS "
+         "(categories), GEOMETRY (d_i, alpha_i) and AUDIO (O_a, acoustic label) of the fired "
+         "tick, writes LABELS_ACOUSTIC. To run it alone: feed those three channels (e.g. "
+         "lcm-logplayer of a recorded run) and FIRE tokens for 'acoustic_labels', or use "
+         "--replay LOG.";
+}
+
+std::vector<expert::ChannelSpec> AcousticLabelsExpert::reads() const {
+  return {{channels::kGroundTruth, "beft.scene_objects_t"},
+          {channels::kGeometry, "beft.geometry_percepts_t"},
+          {channels::kAudio, "beft.acoustic_percepts_t"}};
+}
+
+std::vector<expert::ChannelSpec> AcousticLabelsExpert::writes() const {
+  return {{channels::kLabelsAcoustic, "beft.labels_t"}};
+}
+
+std::vector<std::vector<std::string>> AcousticLabelsExpert::parameterHelp() const {
+  return {{"aw_variance_deg2", "8100", "variance s of a_w(alpha) in eq. 2 [deg^2]; the paper prints 90"},
+          {"label_gain", "20", "gain g of eq. 3 (default form)"},
+          {"label_form", "default", "eq. 3 form: default (logistic with gain g) or printed (the paper's literal formula)"}};
+}
+
+void AcousticLabelsExpert::onStartUp(const expert::Parameters& parameters) {
+  for (const auto& [key, value] : parameters.all()) model::setParameter(model_, key, value);
+}
+
+bool AcousticLabelsExpert::onMessage(const std::string& channel, const void* data, int size) {
+  if (channel == channels::kGroundTruth) return scene_.store(data, size);
+  if (channel == channels::kGeometry) return geometry_.store(data, size);
+  if (channel == channels::kAudio) return audio_.store(data, size);
+  return false;
+}
+
+bool AcousticLabelsExpert::inputsReady(const expert::Firing& firing) const {
+  return scene_.has(firing.tick) && geometry_.has(firing.tick) && audio_.has(firing.tick);
+}
+
+expert::Outcome AcousticLabelsExpert::fire(const expert::Firing& firing, expert::Output& out) {
+  const auto* scene = scene_.ofTick(firing.tick);
+  const auto* geometry = geometry_.ofTick(firing.tick);
+  const auto* audio = audio_.ofTick(firing.tick);
+  if (scene == nullptr || geometry == nullptr || audio == nullptr)
+    return expert::Outcome::failure(std::string("no ") +
+                                    (scene == nullptr ? "GT_OBJECTS" : geometry == nullptr ? "GEOMETRY" : "AUDIO") +
+                                    " for tick " + std::to_string(firing.tick));
+  const AcousticLabelling result = labelAcoustically(*scene, *geometry, *audio, model_);
+  for (const auto& reason : result.skipped) log::warn("tick ", firing.tick, ": not labelled: ", reason);
+  out.publish(channels::kLabelsAcoustic, result.labels);
+  return expert::Outcome::success();
+}
+
+}  // namespace beft::acoustic_labels

@@ -1,0 +1,85 @@
+#include "fusion_expert.hpp"
+
+#include <stdexcept>
+
+#include "channels.hpp"
+#include "log.hpp"
+
+namespace beft::fusion {
+
+std::string FusionExpert::description() const {
+  return "High-level fusion expert: one hypothesis per object perceived by vision or audition, "
+         "kept for the rest of the run. Fused category confidences are the "
+         "perceptibility-weighted average of the best visual and the best acoustic evidence so "
+         "far; position from vision when it has seen the object, else the acoustic estimate; "
+         "seen (v_P >= seen_threshold), heard, seen_as / heard_as, verified (seen as what it was "
+         "heard as) or falsified (seen as something else). Reads GT_OBJECTS, VISION, "
+         "LABELS_VISUAL, AUDIO and LABELS_ACOUSTIC of the fired tick (a missing modality is "
+         "skipped with a warning), writes HYPOTHESES. To run it alone: feed those channels (e.g. "
+         "lcm-logplayer of a recorded run) and FIRE tokens for 'fusion', or use --replay LOG.";
+}
+
+std::vector<expert::ChannelSpec> FusionExpert::reads() const {
+  return {{channels::kGroundTruth, "beft.scene_objects_t"},
+          {channels::kVision, "beft.visual_percepts_t"},
+          {channels::kLabelsVisual, "beft.labels_t"},
+          {channels::kAudio, "beft.acoustic_percepts_t"},
+          {channels::kLabelsAcoustic, "beft.labels_t"}};
+}
+
+std::vector<expert::ChannelSpec> FusionExpert::writes() const {
+  return {{channels::kHypotheses, "beft.hypotheses_t"}};
+}
+
+std::vector<std::vector<std::string>> FusionExpert::parameterHelp() const {
+  return {{"seen_threshold", "0.5", "visual perceptibility v_P from which an object counts as seen [0..1]"}};
+}
+
+void FusionExpert::onStartUp(const expert::Parameters& parameters) {
+  FusionConfig config;
+  config.seen_threshold = parameters.getDouble("seen_threshold", config.seen_threshold);
+  if (!(config.seen_threshold >= 0 && config.seen_threshold <= 1))
+    throw std::invalid_argument("seen_threshold must be within [0, 1]");
+  fusion_ = HypothesisFusion(config);
+}
+
+bool FusionExpert::onMessage(const std::string& channel, const void* data, int size) {
+  if (channel == channels::kGroundTruth) return scene_.store(data, size);
+  if (channel == channels::kVision) return vision_.store(data, size);
+  if (channel == channels::kLabelsVisual) return visual_labels_.store(data, size);
+  if (channel == channels::kAudio) return audio_.store(data, size);
+  if (channel == channels::kLabelsAcoustic) return acoustic_labels_.store(data, size);
+  return false;
+}
+
+bool FusionExpert::inputsReady(const expert::Firing& firing) const {
+  const int64_t k = firing.tick;
+  return scene_.has(k) && vision_.has(k) && visual_labels_.has(k) && audio_.has(k) && acoustic_labels_.has(k);
+}
+
+expert::Outcome FusionExpert::fire(const expert::Firing& firing, expert::Output& out) {
+  const int64_t k = firing.tick;
+  TickEvidence evidence;
+  evidence.scene = scene_.ofTick(k);
+  if (evidence.scene == nullptr) return expert::Outcome::failure("no GT_OBJECTS for tick " + std::to_string(k));
+  evidence.vision = vision_.ofTick(k);
+  evidence.visual_labels = visual_labels_.ofTick(k);
+  evidence.audio = audio_.ofTick(k);
+  evidence.acoustic_labels = acoustic_labels_.ofTick(k);
+  std::string missing;
+  if (evidence.vision == nullptr) missing += " VISION";
+  if (evidence.visual_labels == nullptr) missing += " LABELS_VISUAL";
+  if (evidence.audio == nullptr) missing += " AUDIO";
+  if (evidence.acoustic_labels == nullptr) missing += " LABELS_ACOUSTIC";
+  if (!missing.empty()) log::warn("tick ", k, ": fusing without", missing);
+
+  // A tick is folded in once, even if its FIRE is re-run after a lost DONE.
+  if (k != last_fused_tick_) {
+    fusion_.update(evidence);
+    last_fused_tick_ = k;
+  }
+  out.publish(channels::kHypotheses, fusion_.hypotheses(evidence.scene->utime, k));
+  return expert::Outcome::success();
+}
+
+}  // namespace beft::fusion

@@ -1,0 +1,87 @@
+// The fusion expert's logic (high level): one hypothesis per object that
+// either modality has perceived, kept for the rest of the run (an object
+// heard once stays a hypothesis when it falls silent).
+//
+// Rules, per hypothesis:
+//  - Evidence memory: per modality, the labels of the tick with the highest
+//    perceptibility so far (ties: the newer one). Visual evidence counts only
+//    when the object has visible pixels; acoustic evidence whenever AUDIO
+//    reports the object.
+//  - Fused confidence of category k_j: the perceptibility-weighted average of
+//    the two memories, (vP* vL_j + aP* aL_j) / (vP* + aP*); a modality that
+//    never perceived the object has weight 0.
+//  - seen: some tick had v_P >= seen_threshold with visible pixels (sticky);
+//    heard: AUDIO has reported it (sticky).
+//  - seen_as / heard_as: the best category of the visual / acoustic memory
+//    (empty while not seen / not heard).
+//  - verified: heard and seen with seen_as == heard_as; falsified: heard and
+//    seen with seen_as != heard_as (the radio that sounds like a person but
+//    looks like a siren). settled_utime: when one of them first held.
+//  - position: where vision last saw it (its ground-truth position at the
+//    last tick with visible pixels: vision localises what it sees), else the
+//    latest acoustic estimate p_hat.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <beft/acoustic_percepts_t.hpp>
+#include <beft/hypotheses_t.hpp>
+#include <beft/labels_t.hpp>
+#include <beft/scene_objects_t.hpp>
+#include <beft/visual_percepts_t.hpp>
+
+namespace beft::fusion {
+
+struct FusionConfig {
+  double seen_threshold = 0.5;  // v_P from which an object counts as seen [0..1]
+};
+
+// One tick's inputs; any of the percept inputs may be missing (null) when
+// that expert did not deliver, the scene may not.
+struct TickEvidence {
+  const scene_objects_t* scene = nullptr;
+  const visual_percepts_t* vision = nullptr;
+  const labels_t* visual_labels = nullptr;
+  const acoustic_percepts_t* audio = nullptr;
+  const labels_t* acoustic_labels = nullptr;
+};
+
+class HypothesisFusion {
+ public:
+  explicit HypothesisFusion(const FusionConfig& config = {}) : config_(config) {}
+
+  // Folds in the evidence of one tick (stamped with the scene's utime).
+  void update(const TickEvidence& evidence);
+  // Every hypothesis so far, in order of first perception (ties: scenario order).
+  hypotheses_t hypotheses(int64_t utime, int64_t tick) const;
+  std::size_t size() const { return hypotheses_.size(); }
+
+ private:
+  struct Evidence {
+    double perceptibility = 0;
+    std::vector<std::string> categories;
+    std::vector<double> confidence;
+  };
+  struct Position {
+    double x = 0, y = 0, z = 0;
+  };
+  struct Hypothesis {
+    std::string object_id;
+    std::optional<Evidence> visual, acoustic;  // best evidence so far
+    std::optional<Position> visual_position, acoustic_position;
+    bool seen = false, heard = false;
+    int64_t first_seen_utime = -1, first_heard_utime = -1, settled_utime = -1;
+  };
+
+  Hypothesis& hypothesisFor(const std::string& object_id);
+  hypothesis_t toMessage(const Hypothesis& h, const std::vector<std::string>& categories) const;
+
+  FusionConfig config_;
+  std::vector<std::string> categories_;  // of the latest scene
+  std::vector<Hypothesis> hypotheses_;
+};
+
+}  // namespace beft::fusion

@@ -1,0 +1,8 @@
+// beft-fusion: the high-level fusion expert process (see --help).
+#include "fusion_expert.hpp"
+#include "run_expert.hpp"
+
+int main(int argc, char** argv) {
+  beft::fusion::FusionExpert expert;
+  return beft::expert::runExpertMain(argc, argv, expert);
+}

@@ -1,0 +1,46 @@
+#include "geometry_expert.hpp"
+
+#include "channels.hpp"
+#include "geometry_estimator.hpp"
+
+namespace beft::geometry {
+
+std::string GeometryExpert::description() const {
+  return "Low-level geometry expert: for every scene object, the 3-D distance d_i from the "
+         "platform centre (on the ground) to the object centre (half its height), the azimuth "
+         "alpha_i relative to the nose (platform yaw + head yaw; (-180, 180] deg, positive to "
+         "the left) and the elevation relative to the head pitch; flags objects that sound "
+         "now. Reads GT_OBJECTS and ROBOT_STATE of the fired tick, writes GEOMETRY. "
+         "To run it alone: start beft-world and feed FIRE tokens for 'geometry' (or run the "
+         "arbiter), and watch GEOMETRY with lcm-spy.";
+}
+
+std::vector<expert::ChannelSpec> GeometryExpert::reads() const {
+  return {{channels::kGroundTruth, "beft.scene_objects_t"}, {channels::kRobotState, "beft.robot_state_t"}};
+}
+
+std::vector<expert::ChannelSpec> GeometryExpert::writes() const {
+  return {{channels::kGeometry, "beft.geometry_percepts_t"}};
+}
+
+bool GeometryExpert::onMessage(const std::string& channel, const void* data, int size) {
+  if (channel == channels::kGroundTruth) return scene_.store(data, size);
+  if (channel == channels::kRobotState) return robot_.store(data, size);
+  return false;
+}
+
+bool GeometryExpert::inputsReady(const expert::Firing& firing) const {
+  return scene_.has(firing.tick) && robot_.has(firing.tick);
+}
+
+expert::Outcome GeometryExpert::fire(const expert::Firing& firing, expert::Output& out) {
+  const auto* scene = scene_.ofTick(firing.tick);
+  const auto* robot = robot_.ofTick(firing.tick);
+  if (scene == nullptr || robot == nullptr)
+    return expert::Outcome::failure(std::string("no ") + (scene == nullptr ? "GT_OBJECTS" : "ROBOT_STATE") +
+                                    " for tick " + std::to_string(firing.tick));
+  out.publish(channels::kGeometry, estimateGeometry(*scene, *robot));
+  return expert::Outcome::success();
+}
+
+}  // namespace beft::geometry

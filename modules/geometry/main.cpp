@@ -1,0 +1,8 @@
+// beft-geometry: the low-level geometry expert process (see --help).
+#include "geometry_expert.hpp"
+#include "run_expert.hpp"
+
+int main(int argc, char** argv) {
+  beft::geometry::GeometryExpert expert;
+  return beft::expert::runExpertMain(argc, argv, expert);
+}

@@ -1,0 +1,28 @@
+// The visual labelling expert's logic (mid level): for every object with a
+// visual, its visual perceptibility v_P (eq. 1) from the distance d_i of
+// GEOMETRY and the occlusion O_v of VISION, and the confidence L_j of every
+// category k_j (eq. 3) given the object's true category.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <beft/geometry_percepts_t.hpp>
+#include <beft/labels_t.hpp>
+#include <beft/scene_objects_t.hpp>
+#include <beft/visual_percepts_t.hpp>
+
+#include "model.hpp"
+
+namespace beft::visual_labels {
+
+struct VisualLabelling {
+  labels_t labels;                    // one entry per visual percept that could be labelled
+  std::vector<std::string> skipped;   // percepts left out, each with the reason
+};
+
+// Stamped with the vision percepts' utime and tick.
+VisualLabelling labelVisually(const scene_objects_t& scene, const geometry_percepts_t& geometry,
+                              const visual_percepts_t& vision, const model::Parameters& parameters);
+
+}  // namespace beft::visual_labels

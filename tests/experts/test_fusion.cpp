@@ -1,0 +1,211 @@
+// Fusion logic: hypotheses kept across ticks, verified and falsified
+// sequences, the fused confidences and the position source.
+#include <gtest/gtest.h>
+
+#include "hypothesis_fusion.hpp"
+#include "model.hpp"
+#include "scene_builders.hpp"
+
+using namespace beft;
+
+namespace {
+
+const std::vector<std::string> kCategories = {"person", "car", "siren", "wall", "fire"};
+
+object_labels_t labelsFor(const std::string& id, const std::string& label, double perceptibility) {
+  object_labels_t entry{};
+  entry.object_id = id;
+  entry.perceptibility = perceptibility;
+  entry.categories = kCategories;
+  entry.num_categories = static_cast<int32_t>(kCategories.size());
+  entry.confidence = model::labelConfidences(kCategories, label, perceptibility);
+  return entry;
+}
+
+// One tick of percepts, built up by the tests.
+struct Tick {
+  scene_objects_t scene;
+  visual_percepts_t vision{};
+  labels_t visual_labels{};
+  acoustic_percepts_t audio{};
+  labels_t acoustic_labels{};
+
+  Tick(const std::vector<scene_object_t>& objects, int64_t tick) : scene(test::scene(objects, tick)) {
+    vision.tick = visual_labels.tick = audio.tick = acoustic_labels.tick = tick;
+  }
+  // Vision reports every object with a visual; this one with its pixels and v_P.
+  Tick& seen(const std::string& id, const std::string& label, int visible_pixels, double v_p) {
+    visual_percept_t p{};
+    p.object_id = id;
+    p.visible_pixels = visible_pixels;
+    p.expected_pixels = 100;
+    p.occlusion = 100.0 - visible_pixels;
+    vision.percepts.push_back(p);
+    vision.num_percepts = static_cast<int32_t>(vision.percepts.size());
+    visual_labels.objects.push_back(labelsFor(id, label, v_p));
+    visual_labels.num_objects = static_cast<int32_t>(visual_labels.objects.size());
+    return *this;
+  }
+  Tick& heard(const std::string& id, const std::string& label, double a_p, double x, double y) {
+    acoustic_percept_t p{};
+    p.object_id = id;
+    p.est_x = x;
+    p.est_y = y;
+    p.acoustic_label = label;
+    audio.percepts.push_back(p);
+    audio.num_percepts = static_cast<int32_t>(audio.percepts.size());
+    acoustic_labels.objects.push_back(labelsFor(id, label, a_p));
+    acoustic_labels.num_objects = static_cast<int32_t>(acoustic_labels.objects.size());
+    return *this;
+  }
+  fusion::TickEvidence evidence() const { return {&scene, &vision, &visual_labels, &audio, &acoustic_labels}; }
+};
+
+const hypothesis_t* find(const hypotheses_t& all, const std::string& id) {
+  for (const auto& h : all.hypotheses)
+    if (h.object_id == id) return &h;
+  return nullptr;
+}
+
+double fusedOf(const hypothesis_t& h, const std::string& category) {
+  for (int j = 0; j < h.num_categories; ++j)
+    if (h.categories[j] == category) return h.fused[j];
+  throw std::runtime_error("no category " + category);
+}
+
+}  // namespace
+
+TEST(Fusion, HeardThenSeenAsTheSameIsVerified) {
+  const std::vector<scene_object_t> objects = {
+      test::sounding(test::cylinderObject("victim", "person", 10, 5, 0.3, 1.8), "yelling"),
+      test::boxObject("wall", "wall", 8, 5, 90, 4, 0.2, 2.5)};
+  fusion::HypothesisFusion fusion;
+
+  // Tick 0: heard behind the wall, not visible.
+  fusion.update(Tick(objects, 0).seen("victim", "person", 0, 0.0).heard("victim", "person", 0.3, 10.4, 5.3).evidence());
+  auto out = fusion.hypotheses(0, 0);
+  ASSERT_EQ(out.num_hypotheses, 1);  // the wall is not in view: no hypothesis for it
+  const hypothesis_t* h = find(out, "victim");
+  ASSERT_NE(h, nullptr);
+  EXPECT_TRUE(h->heard);
+  EXPECT_FALSE(h->seen);
+  EXPECT_EQ(h->heard_as, "person");
+  EXPECT_EQ(h->seen_as, "");
+  EXPECT_FALSE(h->verified);
+  EXPECT_FALSE(h->falsified);
+  EXPECT_DOUBLE_EQ(h->x, 10.4);  // acoustic estimate while not seen
+  EXPECT_DOUBLE_EQ(h->y, 5.3);
+  EXPECT_EQ(h->first_heard_utime, 0);
+  EXPECT_EQ(h->first_seen_utime, -1);
+  EXPECT_EQ(h->settled_utime, -1);
+  EXPECT_EQ(h->best_category, "person");
+
+  // Tick 1: silent, a sliver visible (v_P below the threshold): not seen yet,
+  // but vision now places it.
+  fusion.update(Tick(objects, 1).seen("victim", "person", 5, 0.3).evidence());
+  h = find(out = fusion.hypotheses(100000, 1), "victim");
+  ASSERT_NE(h, nullptr);
+  EXPECT_FALSE(h->seen);
+  EXPECT_TRUE(h->heard);  // stays heard after falling silent
+  EXPECT_FALSE(h->verified);
+  EXPECT_DOUBLE_EQ(h->x, 10.0);
+  EXPECT_DOUBLE_EQ(h->y, 5.0);
+
+  // Tick 2: in clear view.
+  fusion.update(Tick(objects, 2).seen("victim", "person", 90, 0.8).evidence());
+  h = find(out = fusion.hypotheses(200000, 2), "victim");
+  ASSERT_NE(h, nullptr);
+  EXPECT_TRUE(h->seen);
+  EXPECT_EQ(h->seen_as, "person");
+  EXPECT_TRUE(h->verified);
+  EXPECT_FALSE(h->falsified);
+  EXPECT_EQ(h->first_seen_utime, 200000);
+  EXPECT_EQ(h->settled_utime, 200000);
+  EXPECT_EQ(h->first_heard_utime, 0);
+
+  // Tick 3: nothing perceived at all; the hypothesis and its verdict stay.
+  fusion.update(Tick(objects, 3).evidence());
+  h = find(out = fusion.hypotheses(300000, 3), "victim");
+  ASSERT_NE(h, nullptr);
+  EXPECT_TRUE(h->verified);
+  EXPECT_EQ(h->settled_utime, 200000);
+}
+
+TEST(Fusion, RadioThatSoundsLikeAPersonButLooksLikeASirenIsFalsified) {
+  const std::vector<scene_object_t> objects = {
+      test::sounding(test::boxObject("radio", "siren", 12, 6, 0, 0.4, 0.3, 0.3), "playing", "person")};
+  fusion::HypothesisFusion fusion;
+  fusion.update(Tick(objects, 0).seen("radio", "siren", 0, 0.0).heard("radio", "person", 0.6, 12, 6).evidence());
+  auto out = fusion.hypotheses(0, 0);
+  const hypothesis_t* h = find(out, "radio");
+  ASSERT_NE(h, nullptr);
+  EXPECT_EQ(h->best_category, "person");  // only heard so far
+  EXPECT_FALSE(h->falsified);
+
+  fusion.update(Tick(objects, 1).seen("radio", "siren", 80, 0.9).heard("radio", "person", 0.2, 12, 6).evidence());
+  h = find(out = fusion.hypotheses(100000, 1), "radio");
+  ASSERT_NE(h, nullptr);
+  EXPECT_EQ(h->heard_as, "person");
+  EXPECT_EQ(h->seen_as, "siren");
+  EXPECT_TRUE(h->falsified);
+  EXPECT_FALSE(h->verified);
+  EXPECT_EQ(h->settled_utime, 100000);
+  // Perceptibility-weighted average of the best evidence: acoustic 0.6 (the
+  // later 0.2 is weaker and does not replace it), visual 0.9.
+  const auto acoustic = model::labelConfidences(kCategories, "person", 0.6);
+  const auto visual = model::labelConfidences(kCategories, "siren", 0.9);
+  EXPECT_NEAR(fusedOf(*h, "person"), (0.6 * acoustic[0] + 0.9 * visual[0]) / 1.5, 1e-12);
+  EXPECT_NEAR(fusedOf(*h, "siren"), (0.6 * acoustic[2] + 0.9 * visual[2]) / 1.5, 1e-12);
+  EXPECT_EQ(h->best_category, "siren");
+  EXPECT_NEAR(h->confidence, fusedOf(*h, "siren"), 1e-12);
+}
+
+TEST(Fusion, SeenButNeverHeardIsNeitherVerifiedNorFalsified) {
+  const std::vector<scene_object_t> objects = {test::boxObject("car1", "car", 5, 5, 0, 4, 2, 1.5),
+                                               test::cylinderObject("v", "person", 9, 9, 0.3, 1.8)};
+  fusion::HypothesisFusion fusion;
+  fusion.update(Tick(objects, 0).seen("car1", "car", 50, 0.7).seen("v", "person", 20, 0.6).evidence());
+  const auto out = fusion.hypotheses(0, 0);
+  ASSERT_EQ(out.num_hypotheses, 2);
+  EXPECT_EQ(out.hypotheses[0].object_id, "car1");  // scenario order within a tick
+  EXPECT_EQ(out.hypotheses[1].object_id, "v");
+  for (const auto& h : out.hypotheses) {
+    EXPECT_TRUE(h.seen);
+    EXPECT_FALSE(h.heard);
+    EXPECT_FALSE(h.verified);
+    EXPECT_FALSE(h.falsified);
+    EXPECT_EQ(h.settled_utime, -1);
+  }
+  // Only vision: the fused confidences are the visual ones.
+  EXPECT_EQ(out.hypotheses[0].fused, model::labelConfidences(kCategories, "car", 0.7));
+}
+
+TEST(Fusion, SeenThresholdIsAParameter) {
+  const std::vector<scene_object_t> objects = {
+      test::sounding(test::cylinderObject("v", "person", 9, 9, 0.3, 1.8), "yelling")};
+  fusion::FusionConfig strict;
+  strict.seen_threshold = 0.9;
+  fusion::HypothesisFusion fusion(strict);
+  fusion.update(Tick(objects, 0).seen("v", "person", 60, 0.8).heard("v", "person", 0.5, 9, 9).evidence());
+  const auto out = fusion.hypotheses(0, 0);
+  ASSERT_EQ(out.num_hypotheses, 1);
+  EXPECT_FALSE(out.hypotheses[0].seen);
+  EXPECT_FALSE(out.hypotheses[0].verified);
+}
+
+TEST(Fusion, FusesWhatArrivedWhenAModalityIsMissing) {
+  const std::vector<scene_object_t> objects = {
+      test::sounding(test::cylinderObject("v", "person", 9, 9, 0.3, 1.8), "yelling")};
+  Tick tick(objects, 0);
+  tick.heard("v", "person", 0.5, 8.5, 9);
+  fusion::TickEvidence evidence = tick.evidence();
+  evidence.vision = nullptr;
+  evidence.visual_labels = nullptr;
+  fusion::HypothesisFusion fusion;
+  fusion.update(evidence);
+  const auto out = fusion.hypotheses(0, 0);
+  ASSERT_EQ(out.num_hypotheses, 1);
+  EXPECT_TRUE(out.hypotheses[0].heard);
+  EXPECT_DOUBLE_EQ(out.hypotheses[0].x, 8.5);
+  EXPECT_THROW(fusion.update(fusion::TickEvidence{}), std::invalid_argument);
+}
