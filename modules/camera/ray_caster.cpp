@@ -1,0 +1,335 @@
+#include "ray_caster.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace beft::camera {
+
+namespace {
+
+struct Rgb {
+  float r, g, b;
+};
+
+Rgb unpack(uint32_t rgb) {
+  return {static_cast<float>((rgb >> 16) & 0xFF), static_cast<float>((rgb >> 8) & 0xFF),
+          static_cast<float>(rgb & 0xFF)};
+}
+
+Rgb mix(const Rgb& a, const Rgb& b, float weight_b) {
+  return {a.r + (b.r - a.r) * weight_b, a.g + (b.g - a.g) * weight_b, a.b + (b.b - a.b) * weight_b};
+}
+
+inline uint8_t toByte(float value) {
+  return static_cast<uint8_t>(std::clamp(value + 0.5f, 0.0f, 255.0f));
+}
+
+// Fixed look of the rendered world.
+const Rgb kGround{118, 112, 100};
+const Rgb kHaze{196, 206, 218};
+const Rgb kSkyZenith{112, 152, 212};
+const Eigen::Vector3d kLight = Eigen::Vector3d(0.35, 0.55, 0.76).normalized();
+constexpr float kAmbient = 0.5f;     // share of light on faces turned away from the light
+constexpr float kFogAtRange = 0.4f;  // haze mixed in at the range limit (quadratic in distance)
+
+}  // namespace
+
+const char* renderMethodName(RenderMethod method) {
+  switch (method) {
+    case RenderMethod::Projection:
+      return "projection";
+    case RenderMethod::GridTraversal:
+      return "grid";
+    case RenderMethod::BruteForce:
+      return "brute-force";
+  }
+  return "?";
+}
+
+struct RayCaster::SolidFootprint {
+  int solid = -1;
+  int u0 = 0, v0 = 0, u1 = -1, v1 = -1;  // inclusive pixel rectangle
+  double min_depth = 0;                  // no point of the solid is nearer [m]
+};
+
+void RayCaster::prepareRays(const Camera& camera) {
+  const bool same_intrinsics = width_ == camera.intrinsics.width && height_ == camera.intrinsics.height &&
+                               camera_.intrinsics.fov_deg == camera.intrinsics.fov_deg;
+  camera_ = camera;
+  camera_frame_ = CameraFrame(camera);
+  width_ = std::max(camera.intrinsics.width, 0);
+  height_ = std::max(camera.intrinsics.height, 0);
+  const size_t pixels = static_cast<size_t>(width_) * height_;
+  ray_x_.resize(pixels);
+  ray_y_.resize(pixels);
+  ray_z_.resize(pixels);
+  t_limit_.resize(pixels);
+  hits_ground_.resize(pixels);
+  nearest_t_.resize(pixels);
+  nearest_solid_.resize(pixels);
+  nearest_face_.resize(pixels);
+  if (!same_intrinsics || ray_length_.size() != pixels) {
+    // |forward + a left + b up| depends on the intrinsics only.
+    ray_length_.resize(pixels);
+    for (int v = 0; v < height_; ++v) {
+      for (int u = 0; u < width_; ++u) {
+        const double a = (camera_frame_.cx - (u + 0.5)) / camera_frame_.focal;
+        const double b = (camera_frame_.cy - (v + 0.5)) / camera_frame_.focal;
+        ray_length_[v * width_ + u] = static_cast<float>(std::sqrt(1.0 + a * a + b * b));
+      }
+    }
+  }
+  const CameraFrame& f = camera_frame_;
+  const double range = camera.intrinsics.range;
+  const double oz = f.origin.z();
+  for (int v = 0; v < height_; ++v) {
+    for (int u = 0; u < width_; ++u) {
+      const size_t p = static_cast<size_t>(v) * width_ + u;
+      const Eigen::Vector3d d = pixelRay(f, u, v);
+      ray_x_[p] = d.x();
+      ray_y_[p] = d.y();
+      ray_z_[p] = d.z();
+      const double t_range = range / static_cast<double>(ray_length_[p]);
+      double t_limit = t_range;
+      bool ground = false;
+      if (d.z() < 0 && oz > 0) {
+        const double t_ground = -oz / d.z();
+        if (t_ground <= t_range) {
+          t_limit = t_ground;
+          ground = true;
+        }
+      }
+      t_limit_[p] = t_limit;
+      hits_ground_[p] = ground;
+      nearest_t_[p] = t_limit;
+      nearest_solid_[p] = -1;
+      nearest_face_[p] = Face::Inside;
+    }
+  }
+}
+
+// The pixel rectangle a solid can cover and its nearest depth; false if it
+// cannot be seen (behind the camera, beyond range or outside the image).
+bool RayCaster::projectSolid(const Solid& solid, SolidFootprint& footprint) const {
+  const CameraFrame& f = camera_frame_;
+  // Beyond range: nearest point of its bounding box farther than range.
+  const double ex = std::max({solid.min_x - f.origin.x(), 0.0, f.origin.x() - solid.max_x});
+  const double ey = std::max({solid.min_y - f.origin.y(), 0.0, f.origin.y() - solid.max_y});
+  const double ez = std::max({solid.z_min - f.origin.z(), 0.0, f.origin.z() - solid.z_max});
+  const double range = camera_.intrinsics.range;
+  if (ex * ex + ey * ey + ez * ez > range * range) return false;
+
+  // Corners of its bounding box (oriented for boxes) in camera coordinates:
+  // depth (forward), left, up. Bit 0: +x side, bit 1: +y side, bit 2: top.
+  double depth[8], left[8], up[8];
+  for (int i = 0; i < 8; ++i) {
+    const double sx = (i & 1) ? 1.0 : -1.0, sy = (i & 2) ? 1.0 : -1.0;
+    double wx, wy;
+    if (solid.shape == Solid::Shape::Box) {
+      wx = solid.x + sx * solid.half_x * solid.cos_yaw - sy * solid.half_y * solid.sin_yaw;
+      wy = solid.y + sx * solid.half_x * solid.sin_yaw + sy * solid.half_y * solid.cos_yaw;
+    } else {
+      wx = solid.x + sx * solid.radius;
+      wy = solid.y + sy * solid.radius;
+    }
+    const Eigen::Vector3d q = Eigen::Vector3d(wx, wy, (i & 4) ? solid.z_max : solid.z_min) - f.origin;
+    depth[i] = q.dot(f.forward);
+    left[i] = q.dot(f.left);
+    up[i] = q.dot(f.up);
+  }
+  // The box clipped to depth >= kMinDepth: corners in front plus the points
+  // where edges cross that plane. Its image is what the solid can cover.
+  double x_min = SceneGeometry::kInfinity, x_max = -SceneGeometry::kInfinity;
+  double y_min = SceneGeometry::kInfinity, y_max = -SceneGeometry::kInfinity;
+  double min_depth = SceneGeometry::kInfinity;
+  const auto addPoint = [&](double d, double l, double u) {
+    const double x = f.cx - f.focal * l / d, y = f.cy - f.focal * u / d;
+    x_min = std::min(x_min, x);
+    x_max = std::max(x_max, x);
+    y_min = std::min(y_min, y);
+    y_max = std::max(y_max, y);
+    min_depth = std::min(min_depth, d);
+  };
+  for (int i = 0; i < 8; ++i) {
+    if (depth[i] >= kMinDepth) addPoint(depth[i], left[i], up[i]);
+    for (int bit = 1; bit <= 4; bit <<= 1) {
+      const int j = i | bit;
+      if (j == i) continue;
+      if ((depth[i] >= kMinDepth) == (depth[j] >= kMinDepth)) continue;
+      const double s = (kMinDepth - depth[i]) / (depth[j] - depth[i]);
+      addPoint(kMinDepth, left[i] + s * (left[j] - left[i]), up[i] + s * (up[j] - up[i]));
+    }
+  }
+  if (!(min_depth < SceneGeometry::kInfinity)) return false;
+  // Pixel u's ray passes through x = u + 0.5; one pixel of margin for rounding.
+  const auto clampIndex = [](double value, int count) {
+    return static_cast<int>(std::clamp(value, -1.0, static_cast<double>(count)));
+  };
+  footprint.u0 = std::max(clampIndex(std::floor(x_min) - 1, width_), 0);
+  footprint.u1 = std::min(clampIndex(std::floor(x_max) + 1, width_), width_ - 1);
+  footprint.v0 = std::max(clampIndex(std::floor(y_min) - 1, height_), 0);
+  footprint.v1 = std::min(clampIndex(std::floor(y_max) + 1, height_), height_ - 1);
+  footprint.min_depth = min_depth;
+  return footprint.u0 <= footprint.u1 && footprint.v0 <= footprint.v1;
+}
+
+void RayCaster::castProjection(const SceneGeometry& scene) {
+  const std::vector<Solid>& solids = scene.solids();
+  std::vector<SolidFootprint> visible;
+  visible.reserve(solids.size());
+  for (size_t s = 0; s < solids.size(); ++s) {
+    SolidFootprint footprint;
+    footprint.solid = static_cast<int>(s);
+    if (projectSolid(solids[s], footprint)) visible.push_back(footprint);
+  }
+  // Nearest first, so farther solids find their pixels already covered.
+  std::sort(visible.begin(), visible.end(), [](const SolidFootprint& a, const SolidFootprint& b) {
+    return a.min_depth < b.min_depth || (a.min_depth == b.min_depth && a.solid < b.solid);
+  });
+  const Eigen::Vector3d& o = camera_frame_.origin;
+  LineInterval interval;
+  for (const SolidFootprint& footprint : visible) {
+    const Solid& solid = solids[footprint.solid];
+    for (int v = footprint.v0; v <= footprint.v1; ++v) {
+      for (int u = footprint.u0; u <= footprint.u1; ++u) {
+        const size_t p = static_cast<size_t>(v) * width_ + u;
+        if (nearest_t_[p] < footprint.min_depth) continue;  // something nearer covers it
+        const Eigen::Vector3d d(ray_x_[p], ray_y_[p], ray_z_[p]);
+        if (!intersectLine(solid, o, d, interval) || interval.enter < kMinDepth) continue;
+        // Same order as the per-ray methods: nearest, then lower solid index.
+        const double t = interval.enter;
+        if (t < nearest_t_[p] ||
+            (t == nearest_t_[p] && (nearest_solid_[p] < 0 || footprint.solid < nearest_solid_[p]))) {
+          nearest_t_[p] = t;
+          nearest_solid_[p] = footprint.solid;
+          nearest_face_[p] = interval.enter_face;
+        }
+      }
+    }
+  }
+}
+
+void RayCaster::castPerRay(const SceneGeometry& scene, bool use_grid) {
+  const Eigen::Vector3d& o = camera_frame_.origin;
+  const size_t pixels = static_cast<size_t>(width_) * height_;
+  for (size_t p = 0; p < pixels; ++p) {
+    const Eigen::Vector3d d(ray_x_[p], ray_y_[p], ray_z_[p]);
+    const SceneGeometry::RayHit hit = use_grid ? scene.firstHit(o, d, kMinDepth, t_limit_[p])
+                                               : scene.firstHitBruteForce(o, d, kMinDepth, t_limit_[p]);
+    if (hit.solid >= 0) {
+      nearest_t_[p] = hit.t;
+      nearest_solid_[p] = hit.solid;
+      nearest_face_[p] = hit.face;
+    }
+  }
+}
+
+void RayCaster::shade(const SceneGeometry& scene, RenderedFrame& frame) const {
+  const size_t pixels = static_cast<size_t>(width_) * height_;
+  frame.camera = camera_;
+  frame.width = width_;
+  frame.height = height_;
+  frame.depth.resize(pixels);
+  frame.object.resize(pixels);
+  frame.rgb.resize(3 * pixels);
+  const Eigen::Vector3d& o = camera_frame_.origin;
+  const float inv_range_sq = static_cast<float>(1.0 / (camera_.intrinsics.range * camera_.intrinsics.range));
+  const Rgb horizon = kHaze;
+  // The solid colours once, not per pixel.
+  std::vector<Rgb> colours;
+  colours.reserve(scene.solids().size());
+  for (const Solid& solid : scene.solids()) colours.push_back(unpack(solid.color_rgb));
+
+  for (size_t p = 0; p < pixels; ++p) {
+    const Eigen::Vector3d d(ray_x_[p], ray_y_[p], ray_z_[p]);
+    Rgb colour;
+    const int s = nearest_solid_[p];
+    if (s >= 0 || hits_ground_[p]) {
+      const double t = nearest_t_[p];
+      const Eigen::Vector3d point = o + t * d;
+      const float distance = static_cast<float>(t) * ray_length_[p];
+      float light;
+      if (s >= 0) {
+        const Solid& solid = scene.solids()[s];
+        const Eigen::Vector3d normal = entryNormal(solid, point, d, nearest_face_[p]);
+        light = kAmbient + (1 - kAmbient) * static_cast<float>(std::max(0.0, normal.dot(kLight)));
+        colour = colours[s];
+        frame.object[p] = solid.object_index;
+      } else {
+        const bool dark = (static_cast<long>(std::floor(point.x())) + static_cast<long>(std::floor(point.y()))) & 1;
+        light = dark ? 0.92f : 1.0f;
+        colour = kGround;
+        frame.object[p] = -1;
+      }
+      colour = {colour.r * light, colour.g * light, colour.b * light};
+      colour = mix(colour, kHaze, kFogAtRange * distance * distance * inv_range_sq);
+      frame.depth[p] = static_cast<float>(t);
+    } else {
+      // Sky: haze at and below the horizon, bluer towards the zenith.
+      const float elevation = static_cast<float>(d.z()) / ray_length_[p];
+      colour = mix(horizon, kSkyZenith, std::sqrt(std::clamp(elevation, 0.0f, 1.0f)));
+      frame.depth[p] = 0;
+      frame.object[p] = -1;
+    }
+    frame.rgb[3 * p] = toByte(colour.r);
+    frame.rgb[3 * p + 1] = toByte(colour.g);
+    frame.rgb[3 * p + 2] = toByte(colour.b);
+  }
+}
+
+void RayCaster::render(const SceneGeometry& scene, const Camera& camera, RenderedFrame& frame,
+                       RenderMethod method) {
+  prepareRays(camera);
+  switch (method) {
+    case RenderMethod::Projection:
+      castProjection(scene);
+      break;
+    case RenderMethod::GridTraversal:
+      castPerRay(scene, true);
+      break;
+    case RenderMethod::BruteForce:
+      castPerRay(scene, false);
+      break;
+  }
+  shade(scene, frame);
+}
+
+std::vector<int> RayCaster::expectedPixelsPerObject(const SceneGeometry& scene, const Camera& camera) {
+  prepareRays(camera);
+  std::vector<int> counts(std::max(scene.objectCount(), 0), 0);
+  const Eigen::Vector3d& o = camera_frame_.origin;
+  LineInterval interval;
+  const std::vector<Solid>& solids = scene.solids();
+  for (size_t s = 0; s < solids.size(); ++s) {
+    const Solid& solid = solids[s];
+    if (solid.object_index < 0 || solid.object_index >= static_cast<int>(counts.size())) continue;
+    SolidFootprint footprint;
+    if (!projectSolid(solid, footprint)) continue;
+    int count = 0;
+    for (int v = footprint.v0; v <= footprint.v1; ++v) {
+      for (int u = footprint.u0; u <= footprint.u1; ++u) {
+        const size_t p = static_cast<size_t>(v) * width_ + u;
+        const Eigen::Vector3d d(ray_x_[p], ray_y_[p], ray_z_[p]);
+        if (intersectLine(solid, o, d, interval) && interval.enter >= kMinDepth && interval.enter <= t_limit_[p]) {
+          ++count;
+        }
+      }
+    }
+    counts[solid.object_index] += count;
+  }
+  return counts;
+}
+
+RenderedFrame renderFrame(const SceneGeometry& scene, const Camera& camera, RenderMethod method) {
+  RayCaster caster;
+  RenderedFrame frame;
+  caster.render(scene, camera, frame, method);
+  return frame;
+}
+
+std::vector<int> expectedPixelsPerObject(const SceneGeometry& scene, const Camera& camera) {
+  RayCaster caster;
+  return caster.expectedPixelsPerObject(scene, camera);
+}
+
+}  // namespace beft::camera

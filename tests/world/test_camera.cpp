@@ -1,0 +1,247 @@
+// The RGBD camera: geometry of single rays and frames, occlusion, field of
+// view, the three render methods agreeing, and the frame messages.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "camera_messages.hpp"
+#include "camera_model.hpp"
+#include "ray_caster.hpp"
+#include "scene_geometry.hpp"
+
+using namespace beft::camera;
+
+namespace {
+
+Camera levelCamera(double x, double y, double z, double yaw_deg, double pitch_deg = 0) {
+  Camera camera;
+  camera.pose = {x, y, z, yaw_deg, pitch_deg};
+  camera.intrinsics = {90.0, 160, 120, 20.0};
+  return camera;
+}
+
+int countPixelsOf(const RenderedFrame& frame, int object) {
+  int count = 0;
+  for (int32_t value : frame.object) count += value == object;
+  return count;
+}
+
+}  // namespace
+
+TEST(Camera, BoxStraightAheadGivesItsDistanceAtTheCentrePixel) {
+  SceneGeometry scene;
+  // Front face at x = 5.0: the box spans x in [5, 6], centred on the optical axis.
+  scene.addBox(0, 5.5, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 0xff0000);
+  scene.buildIndex();
+  const Camera camera = levelCamera(0, 0, 1.5, 0);
+  const RenderedFrame frame = renderFrame(scene, camera);
+  const int centre = 60 * 160 + 80;
+  EXPECT_NEAR(frame.depth[centre], 5.0, 1e-6);
+  EXPECT_EQ(frame.object[centre], 0);
+
+  CameraMessages messages;
+  encodeCameraMessages(frame, 1000, 7, {"crate"}, messages);
+  EXPECT_NEAR(depthAt(messages.depth, 80, 60), 5.0, 1e-9);
+  EXPECT_EQ(objectAt(messages.instance, 80, 60), 0);
+  EXPECT_EQ(messages.instance.instance_ids.at(0), "crate");
+  // A flat face square to the axis has the same z-depth at every pixel on it.
+  EXPECT_NEAR(depthAt(messages.depth, 70, 55), 5.0, 1e-9);
+}
+
+TEST(Camera, YawedCameraAndRotatedBoxGiveTheExpectedDepth) {
+  SceneGeometry scene;
+  // A cube rotated 45 degrees: its nearest edge points at the camera.
+  scene.addBox(0, 0.0, 10.0, 0.0, 45.0, 2.0, 2.0, 4.0);
+  scene.buildIndex();
+  const Camera camera = levelCamera(0, 0, 1.0, 90);  // looking along +y
+  const RenderedFrame frame = renderFrame(scene, camera);
+  // The edge is at depth 10 - sqrt(2). The centre pixel's ray runs half a
+  // pixel to the right (x = delta * t), meeting the face x + (10 - y) = sqrt(2)
+  // at t = (10 - sqrt(2)) / (1 - delta).
+  const double delta = 0.5 / focalLengthPx(90, 160);
+  EXPECT_NEAR(frame.depth[60 * 160 + 80], (10.0 - std::sqrt(2.0)) / (1.0 - delta), 1e-5);
+}
+
+TEST(Camera, ObjectBehindAnotherIsAbsentFromTheInstanceImage) {
+  SceneGeometry scene;
+  scene.addBox(0, 4.0, 0.0, 0.0, 0.0, 0.4, 4.0, 3.0);  // a wall in front
+  scene.addCylinder(1, 8.0, 0.0, 0.0, 0.3, 1.8);       // a person behind it
+  scene.buildIndex();
+  const Camera camera = levelCamera(0, 0, 1.5, 0);
+  const RenderedFrame frame = renderFrame(scene, camera);
+  EXPECT_GT(countPixelsOf(frame, 0), 0);
+  EXPECT_EQ(countPixelsOf(frame, 1), 0);
+  // Without the wall it would be seen: the occlusion denominator says so.
+  const std::vector<int> expected = expectedPixelsPerObject(scene, camera);
+  ASSERT_EQ(expected.size(), 2u);
+  EXPECT_EQ(expected[0], countPixelsOf(frame, 0));
+  EXPECT_GT(expected[1], 50);
+
+  // Move the person out from behind the wall: now visible, and every pixel
+  // the unoccluded count promises is rendered.
+  SceneGeometry moved;
+  moved.addBox(0, 4.0, 0.0, 0.0, 0.0, 0.4, 4.0, 3.0);
+  moved.addCylinder(1, 8.0, 5.0, 0.0, 0.3, 1.8);
+  moved.buildIndex();
+  const RenderedFrame moved_frame = renderFrame(moved, camera);
+  EXPECT_EQ(countPixelsOf(moved_frame, 1), expectedPixelsPerObject(moved, camera)[1]);
+  EXPECT_GT(countPixelsOf(moved_frame, 1), 0);
+}
+
+TEST(Camera, ObjectOutsideTheFieldOfViewIsAbsent) {
+  SceneGeometry scene;
+  scene.addCylinder(0, 5.0, 5.0 * std::tan(50 * M_PI / 180), 0.0, 0.3, 1.8);  // 50 deg left, fov 90
+  scene.addCylinder(1, -5.0, 0.0, 0.0, 0.3, 1.8);                             // behind
+  scene.addCylinder(2, 5.0, 5.0 * std::tan(30 * M_PI / 180), 0.0, 0.3, 1.8);  // 30 deg left: in view
+  scene.addCylinder(3, 25.0, 0.0, 0.0, 0.3, 1.8);                             // beyond the 20 m range
+  scene.buildIndex();
+  const Camera camera = levelCamera(0, 0, 1.5, 0);
+  const RenderedFrame frame = renderFrame(scene, camera);
+  EXPECT_EQ(countPixelsOf(frame, 0), 0);
+  EXPECT_EQ(countPixelsOf(frame, 1), 0);
+  EXPECT_GT(countPixelsOf(frame, 2), 0);
+  EXPECT_EQ(countPixelsOf(frame, 3), 0);
+  const std::vector<int> expected = expectedPixelsPerObject(scene, camera);
+  EXPECT_EQ(expected[0], 0);
+  EXPECT_EQ(expected[1], 0);
+  EXPECT_EQ(expected[3], 0);
+  // Turned 50 degrees left, object 0 is straight ahead.
+  const RenderedFrame turned = renderFrame(scene, levelCamera(0, 0, 1.5, 50));
+  EXPECT_EQ(turned.object[60 * 160 + 80], 0);
+}
+
+TEST(Camera, GroundGivesDepthButNoObjectAndSkyGivesNothing) {
+  SceneGeometry scene;
+  scene.buildIndex();
+  // Pitched 20 degrees down from 1.6 m: the optical axis meets the ground at
+  // depth 1.6 / sin(20 deg). The centre pixel is half a pixel below the axis.
+  const Camera camera = levelCamera(3, 3, 1.6, 30, -20);
+  const RenderedFrame frame = renderFrame(scene, camera);
+  const CameraFrame axes(camera);
+  const Eigen::Vector3d ray = pixelRay(axes, 80, 60);
+  EXPECT_NEAR(frame.depth[60 * 160 + 80], -1.6 / ray.z(), 1e-5);
+  // That ray points atan(0.5 / f) further down than the axis; its ground point
+  // is 1.6 / sin(elevation) away along it, and depth is that times cos(offset).
+  const double offset = std::atan(0.5 / focalLengthPx(90, 160));
+  const double elevation = 20 * M_PI / 180 + offset;
+  EXPECT_NEAR(frame.depth[60 * 160 + 80], 1.6 / std::sin(elevation) * std::cos(offset), 1e-5);
+  EXPECT_EQ(frame.object[60 * 160 + 80], -1);
+  EXPECT_EQ(frame.depth[0], 0.0f);  // top-left corner: sky
+  EXPECT_EQ(frame.object[0], -1);
+  // The sky is bluer than the ground.
+  EXPECT_GT(frame.rgb[2], frame.rgb[0]);
+}
+
+TEST(Camera, BackProjectionInvertsTheRenderer) {
+  const Camera camera = levelCamera(2.0, -1.0, 1.4, 123.0, 7.5);
+  for (const auto& [u, v] : std::vector<std::pair<int, int>>{{0, 0}, {80, 60}, {159, 119}, {17, 101}}) {
+    const Eigen::Vector3d point = backProject(camera, u, v, 6.25);
+    const auto image = projectPoint(camera, point);
+    ASSERT_TRUE(image.has_value());
+    EXPECT_NEAR(image->x, u + 0.5, 1e-9);
+    EXPECT_NEAR(image->y, v + 0.5, 1e-9);
+    EXPECT_NEAR(image->depth, 6.25, 1e-9);
+  }
+  // Row 0 is the top: its rays point higher than the bottom row's.
+  EXPECT_GT(pixelRay(camera, 80, 0).z(), pixelRay(camera, 80, 119).z());
+  // Column 0 is the left: with yaw 0, left is +y.
+  EXPECT_GT(pixelRay(levelCamera(0, 0, 1, 0), 0, 60).y(), 0);
+}
+
+TEST(Camera, RenderMethodsGiveIdenticalImages) {
+  std::mt19937 random(42);
+  std::uniform_real_distribution<double> position(0.0, 30.0), size(0.2, 3.0), angle(0.0, 360.0);
+  SceneGeometry scene;
+  for (int i = 0; i < 120; ++i) {
+    if (i % 3 == 0) {
+      scene.addCylinder(i, position(random), position(random), 0.0, 0.5 * size(random), 2 * size(random));
+    } else {
+      scene.addBox(i, position(random), position(random), i % 7 == 0 ? 1.0 : 0.0, angle(random), size(random),
+                   size(random), size(random));
+    }
+  }
+  scene.buildIndex();
+  RayCaster caster;
+  for (int view = 0; view < 6; ++view) {
+    const Camera camera = levelCamera(position(random), position(random), 1.6, angle(random), view * 5.0 - 12.0);
+    RenderedFrame projection, grid, brute;
+    caster.render(scene, camera, projection, RenderMethod::Projection);
+    caster.render(scene, camera, grid, RenderMethod::GridTraversal);
+    caster.render(scene, camera, brute, RenderMethod::BruteForce);
+    EXPECT_EQ(projection.object, brute.object) << "view " << view;
+    EXPECT_EQ(grid.object, brute.object) << "view " << view;
+    EXPECT_EQ(projection.depth, brute.depth) << "view " << view;
+    EXPECT_EQ(grid.depth, brute.depth) << "view " << view;
+    EXPECT_EQ(projection.rgb, brute.rgb) << "view " << view;
+    // Rendered pixels never exceed the unoccluded count.
+    const std::vector<int> expected = caster.expectedPixelsPerObject(scene, camera);
+    for (int object = 0; object < scene.objectCount(); ++object) {
+      EXPECT_LE(countPixelsOf(brute, object), expected[object]) << "object " << object;
+    }
+  }
+}
+
+TEST(SceneGeometry, SegmentsAreBlockedBySolidsTheyCross) {
+  SceneGeometry scene;
+  scene.setObjectCount(3);
+  scene.addBox(0, 5.0, 0.0, 0.0, 90.0, 4.0, 0.2, 2.5);  // a wall across the x axis
+  scene.addCylinder(2, 10.0, 3.0, 0.0, 0.3, 1.8);
+  scene.buildIndex();
+  const Eigen::Vector3d ear(0, 0, 1.6), source(8, 0, 1.0), high_source(8, 0, 4.0);
+  EXPECT_TRUE(segmentBlocked(scene, ear, source));
+  EXPECT_EQ(segmentHitsObject(scene, ear, source), 0);
+  EXPECT_FALSE(segmentBlocked(scene, ear, source, 0));  // ignoring the wall
+  // Over the wall: at x = 5 the segment to (8, 0, 4) is at z = 3.06 > 2.5.
+  EXPECT_FALSE(segmentBlocked(scene, Eigen::Vector3d(0, 0, 2.6), high_source));
+  // Past the end of the wall (it spans y in [-2, 2]).
+  EXPECT_FALSE(segmentBlocked(scene, Eigen::Vector3d(0, 3, 1), Eigen::Vector3d(8, 3, 1)));
+  // Through the person, unless it is the source itself.
+  const Eigen::Vector3d person_centre(10, 3, 1);
+  EXPECT_EQ(segmentHitsObject(scene, Eigen::Vector3d(12, 3, 1), Eigen::Vector3d(8, 3, 1)), 2);
+  EXPECT_FALSE(segmentBlocked(scene, person_centre, Eigen::Vector3d(14, 3, 1.6), 2));
+  // Object 1 has no solid; it never blocks.
+  EXPECT_EQ(scene.solidOfObject(1), -1);
+}
+
+TEST(SceneGeometry, GridTraversalAgreesWithBruteForceForRandomRays) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> position(-5.0, 45.0), unit(-1.0, 1.0), size(0.1, 2.0);
+  SceneGeometry scene;
+  for (int i = 0; i < 300; ++i) scene.addBox(i, position(random), position(random), 0, 37.0 * i, size(random), size(random), size(random));
+  scene.buildIndex(1.3);
+  int hits = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const Eigen::Vector3d o(position(random), position(random), 1.0 + unit(random));
+    const Eigen::Vector3d d(unit(random), unit(random), 0.2 * unit(random));
+    const auto a = scene.firstHit(o, d, 0.0, 40.0);
+    const auto b = scene.firstHitBruteForce(o, d, 0.0, 40.0);
+    ASSERT_EQ(a.solid, b.solid) << "ray " << i;
+    if (a.solid >= 0) {
+      EXPECT_EQ(a.t, b.t);
+      ++hits;
+    }
+  }
+  EXPECT_GT(hits, 1000);
+}
+
+TEST(CameraMessages, FramesFitInOneUdpDatagramAndValidate) {
+  SceneGeometry scene;
+  scene.addBox(0, 5.5, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0);
+  scene.buildIndex();
+  const RenderedFrame frame = renderFrame(scene, levelCamera(0, 0, 1.5, 0));
+  CameraMessages messages;
+  std::vector<std::string> ids;
+  for (int i = 0; i < 100; ++i) ids.push_back("object_" + std::to_string(i));
+  encodeCameraMessages(frame, 0, 0, ids, messages);
+  for (const beft::camera_frame_t* message : {&messages.color, &messages.depth, &messages.instance}) {
+    std::string why;
+    EXPECT_TRUE(validCameraFrame(*message, &why)) << why;
+    EXPECT_LT(message->getEncodedSize(), 64 * 1024);
+  }
+  beft::camera_frame_t broken = messages.depth;
+  broken.data.pop_back();
+  std::string why;
+  EXPECT_FALSE(validCameraFrame(broken, &why));
+  EXPECT_NE(why.find("data_size"), std::string::npos);
+}
