@@ -30,4 +30,6 @@ bool ChannelFilter::accepts(const std::string& channel) {
   return accepted;
 }
 
+bool isLcmInternalChannel(const std::string& channel) { return channel == "LCM_SELF_TEST"; }
+
 }  // namespace beft::blackboard

@@ -29,4 +29,8 @@ class ChannelFilter {
   std::map<std::string, bool> verdicts_;
 };
 
+// LCM's own traffic (the UDP multicast self-test every LCM object sends when
+// it opens): never a beft message, never stored or shown.
+bool isLcmInternalChannel(const std::string& channel);
+
 }  // namespace beft::blackboard

@@ -1,0 +1,54 @@
+#include "blackboard/blackboard_service.hpp"
+
+#include <cstdio>
+
+#include "blackboard/snapshot.hpp"
+#include "channels.hpp"
+
+namespace beft::blackboard {
+
+bool isServiceChannel(const std::string& channel) {
+  const std::string prefix = channels::kBlackboardSnapshotPrefix;
+  return channel == channels::kBlackboardQuery || channel.compare(0, prefix.size(), prefix) == 0;
+}
+
+BlackboardService::BlackboardService(Options options) : store_(options.limits), filter_(options.exclude) {}
+
+BlackboardService::Verdict BlackboardService::onMessage(const std::string& channel, const void* data, int size) {
+  if (isLcmInternalChannel(channel)) return Verdict::Ignored;
+  if (isServiceChannel(channel) || !filter_.accepts(channel)) {
+    ++messages_excluded_;
+    return Verdict::Excluded;
+  }
+  const auto sequence = store_.store(channel, data, size);
+  if (!sequence) return Verdict::Rejected;
+  return *sequence == 1 ? Verdict::StoredNewChannel : Verdict::Stored;
+}
+
+std::optional<BlackboardService::Answer> BlackboardService::answer(const beft::bb_query_t& query, int64_t now_utime,
+                                                                   std::string* why_not) {
+  if (query.requester.empty()) {
+    if (why_not) *why_not = "query " + std::to_string(query.query_id) + " names no requester to answer to";
+    return std::nullopt;
+  }
+  Answer result;
+  result.channel = snapshotChannel(query.requester);
+  result.snapshot = buildSnapshot(store_, query, now_utime);
+  result.missing = missingChannels(store_, query);
+  ++queries_answered_;
+  return result;
+}
+
+std::string BlackboardService::statusLine() const {
+  char held[32];
+  std::snprintf(held, sizeof held, "%.1f MB", static_cast<double>(store_.bytesHeld()) / 1e6);
+  std::string line = std::to_string(store_.channelCount()) + " channels, " +
+                     std::to_string(store_.messagesStored()) + " messages stored, " +
+                     std::to_string(messages_excluded_) + " excluded, " + held + " held, " +
+                     std::to_string(queries_answered_) + " queries answered";
+  if (store_.messagesRejected() > 0)
+    line += ", " + std::to_string(store_.messagesRejected()) + " rejected (shorter than 16 bytes)";
+  return line;
+}
+
+}  // namespace beft::blackboard

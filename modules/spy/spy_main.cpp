@@ -1,0 +1,168 @@
+// beft-spy (./beft spy): live view of the bus. A table of every channel
+// (type, count, rate, size, latest utime) each interval and, for the channels
+// named with --channel, every message decoded.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <lcm/lcm-cpp.hpp>
+
+#include "blackboard/channel_filter.hpp"
+#include "blackboard/message_decoder.hpp"
+#include "blackboard/store.hpp"
+#include "lcm_url.hpp"
+#include "traffic_table.hpp"
+
+namespace {
+
+volatile std::sig_atomic_t g_stop = 0;
+void onSignal(int) { g_stop = 1; }
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+class Spy {
+ public:
+  Spy(Clock::time_point start, double window_s, std::set<std::string> decoded, int max_lines)
+      : start_(start), table_(0.0, window_s), decoded_(std::move(decoded)), max_lines_(max_lines) {}
+
+  void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    if (beft::blackboard::isLcmInternalChannel(channel)) return;
+    try {
+      const int size = static_cast<int>(buffer->data_size);
+      std::string type = beft::blackboard::typeNameOf(buffer->data, size);
+      if (type.empty()) type = "unknown type";
+      table_.record(channel, type, buffer->data_size, secondsSince(start_),
+                    beft::blackboard::encodedUtime(buffer->data, size));
+      if (!decoded_.count(channel)) return;
+      std::string text = channel + "  " + type + "  " + beft::spy::formatBytes(size);
+      if (const auto utime = beft::blackboard::encodedUtime(buffer->data, size))
+        text += "  utime " + beft::blackboard::formatNumber(static_cast<double>(*utime) / 1e6) + " s";
+      text += "\n";
+      beft::blackboard::DescribeOptions options;
+      options.max_lines = max_lines_;
+      for (const auto& line :
+           beft::blackboard::MessageDecoder::beftTypes().describeLines(channel, buffer->data, size, options))
+        text += "    " + line + "\n";
+      std::fputs(text.c_str(), stdout);
+      std::fflush(stdout);
+    } catch (const std::exception& error) {
+      std::fprintf(stderr, "beft spy: cannot show a message on %s: %s\n", channel.c_str(), error.what());
+    }
+  }
+
+  void printTable(bool redraw) {
+    const double now = secondsSince(start_);
+    std::string text;
+    if (redraw)
+      text = "\033[H\033[2J";  // home and clear: the table stays in place on a terminal
+    else
+      text = "\n";
+    char heading[64];
+    std::snprintf(heading, sizeof heading, "--- beft spy, %.1f s ---\n", now);
+    text += heading + table_.format(now);
+    std::fputs(text.c_str(), stdout);
+    std::fflush(stdout);
+  }
+
+ private:
+  Clock::time_point start_;
+  beft::spy::TrafficTable table_;
+  std::set<std::string> decoded_;
+  int max_lines_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string lcm_url = beft::defaultLcmUrl();
+  std::vector<std::string> decoded_channels;
+  std::string match = ".*";
+  double duration_s = 0;
+  double interval_s = 1.0;
+  double window_s = 2.0;
+  int max_lines = 40;
+  int queue_capacity = 2000;
+
+  CLI::App app(
+      "Live view of the channels on the bus: each interval a table with every channel's message type, "
+      "message count, rate, size and latest utime; with --channel, every message on that channel decoded "
+      "field by field. On a terminal without --channel the table redraws in place; otherwise (piped, or "
+      "with --channel) each table is appended.",
+      "beft spy");
+  app.add_option("--lcm-url", lcm_url, "LCM URL (env BEFT_LCM_URL)")->capture_default_str();
+  app.add_option("--channel", decoded_channels, "print every message on this channel decoded (repeatable)");
+  app.add_option("--match", match, "only channels matching this regular expression (LCM subscription)")
+      ->capture_default_str();
+  app.add_option("--duration", duration_s, "stop after this many seconds, 0 = at Ctrl-C")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--interval", interval_s, "seconds between tables")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--window", window_s, "seconds the rates are measured over")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  app.add_option("--max-lines", max_lines, "lines printed per decoded message")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  app.add_option("--queue", queue_capacity, "LCM queue capacity of the subscription [messages]")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error);
+  }
+
+  lcm::LCM lcm(lcm_url);
+  if (!lcm.good()) {
+    std::fprintf(stderr, "beft spy: cannot open LCM at %s\n", lcm_url.c_str());
+    return 1;
+  }
+  const auto start = Clock::now();
+  Spy spy(start, window_s, std::set<std::string>(decoded_channels.begin(), decoded_channels.end()), max_lines);
+  lcm::Subscription* subscription = lcm.subscribe(match, &Spy::onMessage, &spy);
+  if (!subscription) {
+    std::fprintf(stderr, "beft spy: cannot subscribe to '%s'\n", match.c_str());
+    return 1;
+  }
+  // Handling is cheap (a count) except for decoded channels; a burst of a
+  // tick's messages must not be dropped by the default queue of 30.
+  subscription->setQueueCapacity(queue_capacity);
+
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+  const bool redraw = decoded_channels.empty() && isatty(STDOUT_FILENO);
+  const auto interval = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(interval_s));
+  const auto end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(duration_s));
+  auto next_table = start + interval;
+  while (!g_stop) {
+    const auto now = Clock::now();
+    if (duration_s > 0 && now >= end) break;
+    if (now >= next_table) {
+      spy.printTable(redraw);
+      next_table += interval;
+      if (next_table < now) next_table = now + interval;
+    }
+    auto wake = next_table;
+    if (duration_s > 0 && end < wake) wake = end;
+    const int wait_ms = static_cast<int>(
+        std::max<int64_t>(1, std::chrono::duration_cast<std::chrono::milliseconds>(wake - now).count()));
+    if (lcm.handleTimeout(wait_ms) < 0) {
+      if (g_stop) break;  // a signal interrupted the wait
+      std::fprintf(stderr, "beft spy: LCM failed while waiting for messages\n");
+      return 1;
+    }
+  }
+  spy.printTable(false);
+  return 0;
+}
