@@ -1,0 +1,41 @@
+// The occupancy grid every planner plans on: one flag per cell, blocked or
+// free. Cells outside the grid count as blocked.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace beft::planners {
+
+class GridMap {
+ public:
+  GridMap() = default;
+  GridMap(int width, int height);  // all cells free
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  bool inside(int x, int y) const { return x >= 0 && y >= 0 && x < width_ && y < height_; }
+  bool blocked(int x, int y) const { return !inside(x, y) || cells_[index(x, y)] != 0; }
+  bool free(int x, int y) const { return !blocked(x, y); }
+  void setBlocked(int x, int y, bool blocked = true);
+  // Marks the rectangle [x0, x1] x [y0, y1] (inclusive, clipped to the grid).
+  void fillRect(int x0, int y0, int x1, int y1, bool blocked = true);
+
+  size_t index(int x, int y) const { return static_cast<size_t>(y) * width_ + x; }
+  const std::vector<uint8_t>& cells() const { return cells_; }  // 1 = blocked
+  size_t blockedCount() const;
+
+ private:
+  int width_ = 0;
+  int height_ = 0;
+  std::vector<uint8_t> cells_;
+};
+
+// The obstacles grown by a disc of radius_cells: a cell is blocked when some
+// point of it lies closer than the radius to some point of a blocked cell. So
+// a robot of that radius centred anywhere in a free cell touches no obstacle.
+// radius_cells = 0 returns the map unchanged.
+GridMap inflate(const GridMap& map, double radius_cells);
+
+}  // namespace beft::planners

@@ -1,0 +1,120 @@
+#include "octile_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <queue>
+
+namespace beft::planners {
+namespace {
+
+constexpr double kSqrt2 = 1.4142135623730951;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+struct Move {
+  int dx, dy;
+  double cost;
+};
+constexpr Move kMoves[8] = {{1, 0, 1.0},  {-1, 0, 1.0}, {0, 1, 1.0},    {0, -1, 1.0},
+                            {1, 1, kSqrt2}, {1, -1, kSqrt2}, {-1, 1, kSqrt2}, {-1, -1, kSqrt2}};
+
+// A move is allowed when the target is free and, for a diagonal, both cells
+// it passes between are free.
+inline bool moveAllowed(const GridMap& grid, int x, int y, const Move& m) {
+  if (grid.blocked(x + m.dx, y + m.dy)) return false;
+  if (m.dx != 0 && m.dy != 0) return grid.free(x + m.dx, y) && grid.free(x, y + m.dy);
+  return true;
+}
+
+struct OpenEntry {
+  double f;
+  double g;
+  int32_t index;
+  // Lowest f first; among equal f the deepest (largest g) first.
+  bool operator<(const OpenEntry& other) const {
+    return f != other.f ? f > other.f : g < other.g;
+  }
+};
+
+}  // namespace
+
+double octileHeuristic(GridCell a, GridCell b) {
+  const int dx = std::abs(a.x - b.x);
+  const int dy = std::abs(a.y - b.y);
+  return (dx + dy) + (kSqrt2 - 2.0) * std::min(dx, dy);
+}
+
+OctileSearchResult octileAStar(const GridMap& grid, GridCell start, GridCell goal, const Deadline& deadline) {
+  OctileSearchResult result;
+  if (grid.blocked(start.x, start.y) || grid.blocked(goal.x, goal.y)) return result;
+  const int w = grid.width();
+  const size_t n = static_cast<size_t>(w) * grid.height();
+  std::vector<double> g(n, kInfinity);
+  std::vector<int32_t> parent(n, -1);
+  std::vector<uint8_t> closed(n, 0);
+  std::priority_queue<OpenEntry> open;
+  const int32_t start_index = static_cast<int32_t>(grid.index(start.x, start.y));
+  const int32_t goal_index = static_cast<int32_t>(grid.index(goal.x, goal.y));
+  g[start_index] = 0;
+  open.push({octileHeuristic(start, goal), 0, start_index});
+  while (!open.empty()) {
+    const OpenEntry top = open.top();
+    open.pop();
+    if (closed[top.index]) continue;
+    closed[top.index] = 1;
+    ++result.expanded;
+    if (top.index == goal_index) break;
+    if ((result.expanded & 4095) == 0 && deadline.expired()) return result;
+    const int x = top.index % w;
+    const int y = top.index / w;
+    for (const Move& m : kMoves) {
+      if (!moveAllowed(grid, x, y, m)) continue;
+      const int32_t next = static_cast<int32_t>(grid.index(x + m.dx, y + m.dy));
+      if (closed[next]) continue;
+      const double cost = top.g + m.cost;
+      if (cost < g[next]) {
+        g[next] = cost;
+        parent[next] = top.index;
+        open.push({cost + octileHeuristic({x + m.dx, y + m.dy}, goal), cost, next});
+      }
+    }
+  }
+  if (!closed[goal_index]) return result;
+  result.found = true;
+  result.cost = g[goal_index];
+  for (int32_t i = goal_index; i != -1; i = parent[i]) result.cells.push_back({i % w, i / w});
+  std::reverse(result.cells.begin(), result.cells.end());
+  return result;
+}
+
+std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal) {
+  const int w = grid.width();
+  const size_t n = static_cast<size_t>(w) * grid.height();
+  std::vector<double> dist(n, kInfinity);
+  if (grid.blocked(goal.x, goal.y)) return dist;
+  using Entry = std::pair<double, int32_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  const int32_t goal_index = static_cast<int32_t>(grid.index(goal.x, goal.y));
+  dist[goal_index] = 0;
+  open.push({0.0, goal_index});
+  while (!open.empty()) {
+    const auto [d, index] = open.top();
+    open.pop();
+    if (d > dist[index]) continue;
+    const int x = index % w;
+    const int y = index / w;
+    for (const Move& m : kMoves) {
+      // Moves are symmetric, so distances to the goal equal distances from it.
+      if (!moveAllowed(grid, x, y, m)) continue;
+      const int32_t next = static_cast<int32_t>(grid.index(x + m.dx, y + m.dy));
+      const double cost = d + m.cost;
+      if (cost < dist[next]) {
+        dist[next] = cost;
+        open.push({cost, next});
+      }
+    }
+  }
+  return dist;
+}
+
+}  // namespace beft::planners

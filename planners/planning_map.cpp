@@ -1,0 +1,106 @@
+#include "planning_map.hpp"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace beft::planners {
+namespace {
+
+constexpr double kTouchTolerance = 1e-7;  // [cells]
+
+// Columns [first, last] whose closed, slightly grown extent meets [lo, hi].
+inline int firstCell(double lo) { return static_cast<int>(std::ceil(lo - 1.0 - kTouchTolerance)); }
+inline int lastCell(double hi) { return static_cast<int>(std::floor(hi + kTouchTolerance)); }
+
+}  // namespace
+
+PlanningMap::PlanningMap(GridMap raw, double robot_radius_cells)
+    : raw_(std::move(raw)), inflated_(inflate(raw_, robot_radius_cells)), radius_(robot_radius_cells) {
+  const int w = raw_.width();
+  const int h = raw_.height();
+  cv::Mat free_mask(h, w, CV_8U);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) free_mask.at<uint8_t>(y, x) = raw_.blocked(x, y) ? 0 : 255;
+  }
+  if (raw_.blockedCount() == 0) {
+    raw_distance_ = cv::Mat(h, w, CV_32F, cv::Scalar(std::numeric_limits<float>::max()));
+  } else {
+    cv::distanceTransform(free_mask, raw_distance_, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+    // Centre-to-centre distance -> distance to the obstacle cell's near edge.
+    raw_distance_ = cv::max(raw_distance_ - 0.5f, 0.0f);
+  }
+}
+
+bool PlanningMap::pointFree(Point2 p) const { return segmentFree(p, p); }
+
+bool PlanningMap::segmentFree(Point2 a, Point2 b) const {
+  if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) {
+    return false;
+  }
+  // Scan the rows the segment touches; in each row, the segment's x-extent
+  // within that row's band gives the columns it touches.
+  const double dy = b.y - a.y;
+  const double dx = b.x - a.x;
+  const int row_first = firstCell(std::min(a.y, b.y));
+  const int row_last = lastCell(std::max(a.y, b.y));
+  for (int row = row_first; row <= row_last; ++row) {
+    double t0 = 0;
+    double t1 = 1;
+    if (dy != 0) {
+      const double ta = (row - kTouchTolerance - a.y) / dy;
+      const double tb = (row + 1 + kTouchTolerance - a.y) / dy;
+      t0 = std::max(0.0, std::min(ta, tb));
+      t1 = std::min(1.0, std::max(ta, tb));
+      if (t0 > t1) continue;
+    }
+    const double xa = a.x + t0 * dx;
+    const double xb = a.x + t1 * dx;
+    const int col_first = firstCell(std::min(xa, xb));
+    const int col_last = lastCell(std::max(xa, xb));
+    for (int col = col_first; col <= col_last; ++col) {
+      if (inflated_.blocked(col, row)) return false;
+    }
+  }
+  return true;
+}
+
+double PlanningMap::freeFraction(Point2 a, Point2 b, double tolerance) const {
+  if (segmentFree(a, b)) return 1.0;
+  if (!pointFree(a)) return 0.0;
+  // Walk forward in small steps to the first blocked sample, then bisect.
+  const double length = distance(a, b);
+  const int steps = std::max(1, static_cast<int>(std::ceil(length / 0.25)));
+  double good = 0;
+  double bad = 1;
+  for (int i = 1; i <= steps; ++i) {
+    const double t = static_cast<double>(i) / steps;
+    if (!segmentFree(a, a + t * (b - a))) {
+      bad = t;
+      break;
+    }
+    good = t;
+  }
+  while ((bad - good) * length > tolerance) {
+    const double mid = 0.5 * (good + bad);
+    if (segmentFree(a, a + mid * (b - a))) good = mid; else bad = mid;
+  }
+  return good;
+}
+
+double PlanningMap::clearance(Point2 p) const {
+  const double u = std::clamp(p.x - 0.5, 0.0, raw_.width() - 1.0);
+  const double v = std::clamp(p.y - 0.5, 0.0, raw_.height() - 1.0);
+  const int x0 = static_cast<int>(u);
+  const int y0 = static_cast<int>(v);
+  const int x1 = std::min(x0 + 1, raw_.width() - 1);
+  const int y1 = std::min(y0 + 1, raw_.height() - 1);
+  const double fx = u - x0;
+  const double fy = v - y0;
+  const auto d = [&](int x, int y) { return static_cast<double>(raw_distance_.at<float>(y, x)); };
+  return (1 - fy) * ((1 - fx) * d(x0, y0) + fx * d(x1, y0)) + fy * ((1 - fx) * d(x0, y1) + fx * d(x1, y1));
+}
+
+}  // namespace beft::planners

@@ -1,0 +1,48 @@
+// The map representation and validity checker shared by every planner, so
+// that comparisons are fair: the raw obstacle grid, the grid inflated by the
+// robot's radius, and collision tests of points and straight segments against
+// the inflated grid.
+//
+// A point or segment is free when every cell its closed extent touches (with a
+// tolerance of 1e-7 cells) is free. So a diagonal step through a cell corner
+// needs all four cells around the corner free (no corner cutting), exactly
+// the rule of MovingAI's octile grids, and a path made of free segments keeps
+// the robot's disc clear of every obstacle cell.
+#pragma once
+
+#include "geometry.hpp"
+#include "grid_map.hpp"
+
+#include <opencv2/core.hpp>
+
+namespace beft::planners {
+
+class PlanningMap {
+ public:
+  PlanningMap(GridMap raw, double robot_radius_cells);
+
+  const GridMap& raw() const { return raw_; }
+  const GridMap& inflated() const { return inflated_; }
+  double robotRadius() const { return radius_; }  // [cells]
+  int width() const { return raw_.width(); }
+  int height() const { return raw_.height(); }
+
+  bool pointFree(Point2 p) const;
+  bool segmentFree(Point2 a, Point2 b) const;
+  // The largest t in [0, 1] such that segment a -> a + t (b - a) is free
+  // (0 when a itself is blocked), found to within `tolerance` cells.
+  double freeFraction(Point2 a, Point2 b, double tolerance = 0.05) const;
+
+  // Distance from p to the nearest raw obstacle cell [cells], from a distance
+  // transform of the raw grid (exact at cell centres, interpolated between;
+  // the map border does not count as an obstacle).
+  double clearance(Point2 p) const;
+
+ private:
+  GridMap raw_;
+  GridMap inflated_;
+  double radius_;
+  cv::Mat raw_distance_;  // CV_32F, per cell centre: distance to nearest obstacle edge
+};
+
+}  // namespace beft::planners

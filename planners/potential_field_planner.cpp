@@ -1,0 +1,312 @@
+#include "potential_field_planner.hpp"
+
+#include "path_tools.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+
+namespace beft::planners {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+uint64_t splitMix64(uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+double parseNumber(const std::string& name, const std::string& value) {
+  size_t used = 0;
+  double number = 0;
+  try {
+    number = std::stod(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != value.size() || value.empty() || !std::isfinite(number)) {
+    throw std::invalid_argument("parameter " + name + ": '" + value + "' is not a number");
+  }
+  return number;
+}
+
+void requirePositive(const std::string& name, double value) {
+  if (!(value > 0)) throw std::invalid_argument("parameter " + name + " must be > 0");
+}
+
+void requireNonNegative(const std::string& name, double value) {
+  if (!(value >= 0)) throw std::invalid_argument("parameter " + name + " must be >= 0");
+}
+
+Path resample(const Path& path, double spacing) {
+  if (path.size() < 2) return path;
+  Path out{path.front()};
+  double carried = 0;
+  for (size_t i = 1; i < path.size(); ++i) {
+    const double length = distance(path[i - 1], path[i]);
+    double at = spacing - carried;
+    while (at <= length) {
+      out.push_back(path[i - 1] + (at / length) * (path[i] - path[i - 1]));
+      at += spacing;
+    }
+    carried = length - (at - spacing);
+  }
+  if (distance(out.back(), path.back()) > 1e-9) out.push_back(path.back());
+  return out;
+}
+
+// One step of the octile grid between cell centres, as in octile_search.
+bool moveAllowed(const GridMap& grid, int x, int y, int dx, int dy) {
+  if (grid.blocked(x + dx, y + dy)) return false;
+  if (dx != 0 && dy != 0) return grid.free(x + dx, y) && grid.free(x, y + dy);
+  return true;
+}
+
+}  // namespace
+
+void PotentialFieldParams::set(const std::string& name, const std::string& value) {
+  if (name == "target") {
+    if (value == "euclidean" || value == "paper") target = TargetPotential::Euclidean;
+    else if (value == "geodesic") target = TargetPotential::Geodesic;
+    else throw std::invalid_argument("parameter target: '" + value + "' is not euclidean or geodesic");
+    return;
+  }
+  const double number = parseNumber(name, value);
+  if (name == "particles") {
+    if (number < 1 || number != std::floor(number) || number > 100000) {
+      throw std::invalid_argument("parameter particles must be a whole number in [1, 100000]");
+    }
+    particles = static_cast<int>(number);
+  } else if (name == "sigma") { requirePositive(name, number); sigma = number; }
+  else if (name == "target_weight") { requirePositive(name, number); target_weight = number; }
+  else if (name == "obstacle_weight") { requireNonNegative(name, number); obstacle_weight = number; }
+  else if (name == "noise") { requireNonNegative(name, number); noise = number; }
+  else if (name == "noise_decay") { requirePositive(name, number); noise_decay = number; }
+  else if (name == "noise_correlation") {
+    if (!(number >= 1)) throw std::invalid_argument("parameter noise_correlation must be >= 1 step");
+    noise_correlation = number;
+  }
+  else if (name == "step") {
+    if (!(number > 0 && number <= 1)) throw std::invalid_argument("parameter step must be in (0, 1] cells");
+    step = number;
+  }
+  else if (name == "goal_tolerance") { requirePositive(name, number); goal_tolerance = number; }
+  else if (name == "straightness_weight") { requireNonNegative(name, number); straightness_weight = number; }
+  else if (name == "stall_steps") {
+    if (number < 2 || number != std::floor(number)) throw std::invalid_argument("parameter stall_steps must be a whole number >= 2");
+    stall_steps = static_cast<int>(number);
+  }
+  else if (name == "max_travel") { requirePositive(name, number); max_travel = number; }
+  else throw std::invalid_argument("unknown potential-field parameter '" + name + "'");
+}
+
+std::vector<std::string> PotentialFieldParams::names() {
+  const PotentialFieldParams d;
+  return {"target=euclidean|geodesic",
+          "particles=" + std::to_string(d.particles),
+          "sigma=" + std::to_string(d.sigma),
+          "target_weight=" + std::to_string(d.target_weight),
+          "obstacle_weight=" + std::to_string(d.obstacle_weight),
+          "noise=" + std::to_string(d.noise),
+          "noise_decay=" + std::to_string(d.noise_decay),
+          "noise_correlation=" + std::to_string(d.noise_correlation),
+          "step=" + std::to_string(d.step),
+          "goal_tolerance=" + std::to_string(d.goal_tolerance),
+          "straightness_weight=" + std::to_string(d.straightness_weight),
+          "stall_steps=" + std::to_string(d.stall_steps),
+          "max_travel=" + std::to_string(d.max_travel)};
+}
+
+double particleCost(const Path& trace, double straightness_weight) {
+  return pathLength(trace) + straightness_weight * totalTurning(resample(trace, 2.0));
+}
+
+PotentialFieldPlanner::PotentialFieldPlanner(PotentialFieldParams params) : params_(params) {}
+
+std::string PotentialFieldPlanner::name() const {
+  return params_.target == TargetPotential::Geodesic ? "pf-geodesic" : "pf";
+}
+
+void PotentialFieldPlanner::setupMap() {
+  potential_ = obstaclePotential(map_->inflated(), params_.sigma);
+  obstacle_force_ = negativeGradient(potential_);
+}
+
+double PotentialFieldPlanner::wavefrontAt(Point2 p) const {
+  const int x = std::clamp(static_cast<int>(std::floor(p.x)), 0, target_distance_.cols - 1);
+  const int y = std::clamp(static_cast<int>(std::floor(p.y)), 0, target_distance_.rows - 1);
+  return target_distance_.at<float>(y, x);
+}
+
+Point2 PotentialFieldPlanner::tryMove(Point2 p, Point2 move) const {
+  const Point2 full = p + move;
+  if (map_->segmentFree(p, full)) return full;
+  // Slide along the obstacle: keep the larger free component of the move.
+  const Point2 along_x{p.x + move.x, p.y};
+  const Point2 along_y{p.x, p.y + move.y};
+  const bool x_first = std::abs(move.x) >= std::abs(move.y);
+  for (const Point2& q : x_first ? std::array<Point2, 2>{along_x, along_y} : std::array<Point2, 2>{along_y, along_x}) {
+    if (distance(p, q) > 1e-6 && map_->segmentFree(p, q)) return q;
+  }
+  return p;
+}
+
+// Moves p to its cell's centre, then to the free neighbouring cell with the
+// lowest wavefront value. False when no neighbour is lower (p is in the goal
+// cell, or the wavefront is undefined here).
+bool PotentialFieldPlanner::stepDownWavefront(Point2& p, Path& trace) const {
+  const GridMap& grid = map_->inflated();
+  const int x = std::clamp(static_cast<int>(std::floor(p.x)), 0, grid.width() - 1);
+  const int y = std::clamp(static_cast<int>(std::floor(p.y)), 0, grid.height() - 1);
+  const float here = target_distance_.at<float>(y, x);
+  if (!std::isfinite(here) || grid.blocked(x, y)) return false;
+  int best_dx = 0, best_dy = 0;
+  float best = here;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      if ((dx == 0 && dy == 0) || !moveAllowed(grid, x, y, dx, dy)) continue;
+      const float value = target_distance_.at<float>(y + dy, x + dx);
+      if (value < best) {
+        best = value;
+        best_dx = dx;
+        best_dy = dy;
+      }
+    }
+  }
+  if (best_dx == 0 && best_dy == 0) return false;
+  const Point2 centre = cellCentre(x, y);
+  if (distance(p, centre) > 1e-9) trace.push_back(centre);
+  p = cellCentre(x + best_dx, y + best_dy);
+  trace.push_back(p);
+  return true;
+}
+
+PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index, Point2 start, Point2 goal,
+                                                                      const Deadline& deadline) const {
+  ParticleRun run;
+  run.trace.push_back(start);
+  std::mt19937_64 rng(splitMix64(seed_ * 0x100000001b3ULL + static_cast<uint64_t>(index)));
+  std::normal_distribution<double> gaussian(0.0, 1.0);
+  // r_t: stationary unit-variance components, so E|r|^2 = 2; scaled to unit RMS below.
+  const double keep = std::exp(-1.0 / params_.noise_correlation);
+  const double renew = std::sqrt(1.0 - keep * keep);
+  Point2 random_drift{gaussian(rng), gaussian(rng)};
+  const bool geodesic = params_.target == TargetPotential::Geodesic;
+  const double force_scale = params_.sigma * std::sqrt(2 * kPi);
+  const double max_travel = params_.max_travel * (map_->width() + map_->height());
+  const long max_steps = static_cast<long>(max_travel / params_.step) + 1;
+
+  Point2 p = start;
+  double best_wavefront = geodesic ? wavefrontAt(p) : 0.0;
+  int steps_without_headway = 0;
+  Point2 window_start = p;
+  for (long step = 0; step < max_steps; ++step) {
+    if ((step & 63) == 0 && deadline.expired()) {
+      run.aborted = true;
+      return run;
+    }
+    if (distance(p, goal) <= params_.goal_tolerance && map_->segmentFree(p, goal)) {
+      run.trace.push_back(goal);
+      run.arrived = true;
+      return run;
+    }
+    Point2 toward = target_force_.at(p);
+    double toward_norm = norm(toward);
+    if (toward_norm < 1e-12) {  // flat spot of M_T (e.g. the goal cell): head straight for the goal
+      toward = goal - p;
+      toward_norm = std::max(norm(toward), 1e-12);
+    }
+    const Point2 repulsion = force_scale * obstacle_force_.at(p);
+    const double noise = params_.noise * std::exp(-step * params_.step / params_.noise_decay) / std::sqrt(2.0);
+    random_drift = keep * random_drift + renew * Point2{gaussian(rng), gaussian(rng)};
+    Point2 direction = (params_.target_weight / toward_norm) * toward + params_.obstacle_weight * repulsion +
+                       noise * random_drift;
+    const double magnitude = norm(direction);
+    if (magnitude > 1) direction = (1 / magnitude) * direction;
+
+    const Point2 next = tryMove(p, params_.step * direction);
+    const bool moved = distance(next, p) > 1e-9;
+    if (moved) {
+      p = next;
+      run.trace.push_back(p);
+    }
+    if (geodesic) {
+      const double value = wavefrontAt(p);
+      if (value < best_wavefront) {
+        best_wavefront = value;
+        steps_without_headway = 0;
+      } else if (!moved || ++steps_without_headway >= params_.stall_steps) {
+        if (!stepDownWavefront(p, run.trace)) {
+          if (wavefrontAt(p) == 0 && map_->segmentFree(p, goal)) continue;  // in the goal cell
+          return run;  // wavefront undefined here: give up
+        }
+        ++run.discrete_steps;
+        best_wavefront = wavefrontAt(p);
+        steps_without_headway = 0;
+      }
+    } else if (++steps_without_headway >= params_.stall_steps) {
+      // The paper's field: no headway over the window means a local minimum.
+      if (distance(p, window_start) < 0.1 * params_.step * params_.stall_steps) return run;
+      window_start = p;
+      steps_without_headway = 0;
+    }
+  }
+  return run;
+}
+
+Path PotentialFieldPlanner::solvePath(Point2 start, Point2 goal, const Deadline& deadline, std::string& why_not) {
+  traces_.clear();
+  const auto field_begin = Deadline::Clock::now();
+  const GridCell goal_cell{static_cast<int>(std::floor(goal.x)), static_cast<int>(std::floor(goal.y))};
+  if (params_.target == TargetPotential::Geodesic) {
+    target_distance_ = geodesicTargetDistance(map_->inflated(), goal_cell);
+    if (!std::isfinite(wavefrontAt(start))) {
+      why_not = name() + ": goal unreachable from start";
+      return {};
+    }
+    target_force_ = negativeGradientFinite(target_distance_);
+  } else {
+    target_distance_ = euclideanTargetDistance(map_->width(), map_->height(), goal_cell);
+    target_force_ = negativeGradient(target_distance_);
+  }
+  stats_["field_ms"] = std::chrono::duration<double, std::milli>(Deadline::Clock::now() - field_begin).count();
+
+  int arrived = 0;
+  int discrete_steps = 0;
+  bool aborted = false;
+  double best_cost = std::numeric_limits<double>::infinity();
+  Path best;
+  for (int i = 0; i < params_.particles; ++i) {
+    ParticleRun run = runParticle(i, start, goal, deadline);
+    discrete_steps += run.discrete_steps;
+    if (run.arrived) {
+      ++arrived;
+      const double cost = particleCost(run.trace, params_.straightness_weight);
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = run.trace;
+      }
+    }
+    traces_.push_back(std::move(run.trace));
+    if (run.aborted) {
+      aborted = true;
+      break;
+    }
+  }
+  stats_["particles"] = static_cast<double>(traces_.size());
+  stats_["arrived"] = arrived;
+  stats_["discrete_steps"] = discrete_steps;
+  if (best.empty()) {
+    why_not = aborted ? name() + ": deadline passed before any particle arrived"
+                      : name() + ": no particle reached the goal (" + std::to_string(traces_.size()) +
+                            " trapped or out of steps)";
+  }
+  return best;
+}
+
+}  // namespace beft::planners

@@ -1,0 +1,109 @@
+// The paper's particle potential-field planner (section 3.1, spec/model.md).
+//
+// Per map: M_P = normalised Gaussian blur (sigma cells) of the inflated
+// obstacle grid; M_F = -grad M_P. Per query: M_D = normalised distance to the
+// target, M_T = -grad M_D. N_P particles leave the start; each step a
+// particle moves by `step` cells along
+//     target_weight * unit(M_T) + obstacle_weight * (sigma sqrt(2 pi)) M_F
+//     + noise * exp(-t step / noise_decay) * r_t
+// (clipped to unit length), where t counts the particle's steps and r_t is a
+// random vector with unit RMS length, correlated over noise_correlation steps
+// (an Ornstein-Uhlenbeck process): the random component decays over time, and
+// while it lasts it drives each particle its own way round obstacles instead
+// of averaging out step by step. M_T enters as a direction: its magnitude,
+// 1/max(M_D) per cell, carries no information. The factor sigma sqrt(2 pi)
+// scales M_F so that the edge of a thick obstacle pushes with about 1. A step
+// into an obstacle slides along x or y, or waits. The winner among the
+// particles that reach the goal minimises
+//     length + straightness_weight * total turning (path resampled every 2 cells).
+//
+// Two target potentials:
+//  - Euclidean (the paper's, default): the distance transform to the target
+//    ignoring obstacles. The combined field has local minima (a U-shaped
+//    obstacle facing the start traps every particle once the noise has
+//    decayed); a particle that stops making headway fails.
+//  - Geodesic: the octile wavefront to the target around obstacles, which
+//    has no local minima. A particle that has not lowered its wavefront value
+//    for `stall_steps` steps, or cannot move, steps to the lowest neighbouring
+//    cell, so every particle reaches a reachable goal.
+#pragma once
+
+#include "octile_search.hpp"
+#include "planner.hpp"
+#include "potential_fields.hpp"
+
+#include <string>
+#include <vector>
+
+namespace beft::planners {
+
+enum class TargetPotential { Euclidean, Geodesic };
+
+struct PotentialFieldParams {
+  TargetPotential target = TargetPotential::Euclidean;
+  int particles = 100;               // N_P
+  double sigma = 3.0;                // Gaussian blur of M_O [cells]
+  double target_weight = 1.0;        // weight of unit(M_T)
+  double obstacle_weight = 2.0;      // weight of the scaled M_F
+  double noise = 2.0;                // initial random component (RMS), relative to target_weight
+  double noise_decay = 100.0;        // the random component falls by 1/e in noise_decay / step steps [cells]
+  double noise_correlation = 100.0;  // correlation time of the random component [steps]
+  double step = 0.5;                 // particle step [cells]
+  double goal_tolerance = 1.5;       // distance at which a particle heads straight for the goal [cells]
+  double straightness_weight = 2.0;  // cost of turning in the winner choice [cells/rad]
+  int stall_steps = 40;              // steps without headway that stop (or, geodesic, redirect) a particle
+  double max_travel = 4.0;           // particle travel limit, in multiples of (width + height)
+
+  // Sets one parameter by name (the member names above; target = euclidean
+  // or geodesic). Throws std::invalid_argument naming the parameter.
+  void set(const std::string& name, const std::string& value);
+  // "name=value" pairs for --help.
+  static std::vector<std::string> names();
+};
+
+class PotentialFieldPlanner : public Planner {
+ public:
+  explicit PotentialFieldPlanner(PotentialFieldParams params = {});
+
+  std::string name() const override;
+  void setSeed(uint64_t seed) override { seed_ = seed; }
+  const PotentialFieldParams& params() const { return params_; }
+  // Changes take effect at the next solve; sigma at the next setup.
+  PotentialFieldParams& params() { return params_; }
+
+  // Every particle's trace of the last solve, for pictures.
+  const std::vector<Path>& particleTraces() const { return traces_; }
+  // The fields of the current map / last query (for pictures and tests).
+  const cv::Mat& obstaclePotentialMap() const { return potential_; }
+  const cv::Mat& targetDistanceMap() const { return target_distance_; }
+
+ protected:
+  void setupMap() override;
+  Path solvePath(Point2 start, Point2 goal, const Deadline& deadline, std::string& why_not) override;
+
+ private:
+  struct ParticleRun {
+    Path trace;
+    bool arrived = false;
+    bool aborted = false;  // the deadline passed
+    int discrete_steps = 0;
+  };
+  ParticleRun runParticle(int index, Point2 start, Point2 goal, const Deadline& deadline) const;
+  bool stepDownWavefront(Point2& p, Path& trace) const;
+  double wavefrontAt(Point2 p) const;
+  Point2 tryMove(Point2 p, Point2 move) const;
+
+  PotentialFieldParams params_;
+  uint64_t seed_ = 1;
+  cv::Mat potential_;        // M_P
+  VectorField obstacle_force_;  // M_F
+  cv::Mat target_distance_;  // M_D of the last query
+  VectorField target_force_;    // M_T of the last query
+  std::vector<Path> traces_;
+};
+
+// Winner cost of a particle path: length + weight * turning of the path
+// resampled every 2 cells.
+double particleCost(const Path& trace, double straightness_weight);
+
+}  // namespace beft::planners
