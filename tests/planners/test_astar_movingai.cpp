@@ -1,0 +1,142 @@
+#include "astar_planner.hpp"
+#include "movingai.hpp"
+#include "octile_search.hpp"
+#include "planner_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include <unistd.h>
+
+namespace beft::planners {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> sharedMaps() {
+  std::vector<std::string> maps;
+  if (!fs::is_directory(test::movingAiDir())) return maps;
+  for (const auto& entry : fs::directory_iterator(test::movingAiDir())) {
+    if (entry.path().extension() == ".map") maps.push_back(entry.path().string());
+  }
+  std::sort(maps.begin(), maps.end());
+  return maps;
+}
+
+// About `count` queries spread evenly over the file (it is sorted by bucket).
+std::vector<MovingAiQuery> stratified(const std::vector<MovingAiQuery>& all, size_t count) {
+  std::vector<MovingAiQuery> out;
+  for (size_t i = 0; i < count && !all.empty(); ++i) out.push_back(all[i * (all.size() - 1) / std::max<size_t>(1, count - 1)]);
+  return out;
+}
+
+TEST(MovingAi, AStarReproducesTheScenarioOptimaOnEveryMap) {
+  const auto maps = sharedMaps();
+  if (maps.empty()) GTEST_SKIP() << "no MovingAI maps in " << test::movingAiDir();
+  int checked = 0;
+  for (const std::string& map_file : maps) {
+    SCOPED_TRACE(map_file);
+    const GridMap grid = loadMovingAiMap(map_file);
+    const auto queries = loadMovingAiScenario(map_file + ".scen");
+    ASSERT_FALSE(queries.empty());
+    for (const MovingAiQuery& q : stratified(queries, 12)) {
+      SCOPED_TRACE("scenario line " + std::to_string(q.line));
+      ASSERT_EQ(q.map_width, grid.width());
+      ASSERT_EQ(q.map_height, grid.height());
+      const auto result = octileAStar(grid, {q.start_x, q.start_y}, {q.goal_x, q.goal_y});
+      if (!q.reachable()) {
+        EXPECT_FALSE(result.found);
+        continue;
+      }
+      ASSERT_TRUE(result.found);
+      // The files print 6 significant digits (e.g. 1176.61).
+      EXPECT_NEAR(result.cost, q.optimal_length, 1e-4 + 5e-6 * q.optimal_length);
+      // The cell path is a chain of allowed moves whose length is the cost.
+      Path centres;
+      for (const GridCell& c : result.cells) centres.push_back(cellCentre(c.x, c.y));
+      EXPECT_NEAR(pathLength(centres), result.cost, 1e-6);
+      EXPECT_EQ(test::findCollision(grid, centres), "");
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 90);
+}
+
+TEST(MovingAi, AStarPlannerReportsTheOptimumAndAFreeSparsePath) {
+  const std::string map_file = test::movingAiDir() + "/random-32-32-20.map";
+  if (!fs::exists(map_file)) GTEST_SKIP() << "missing " << map_file;
+  auto map = std::make_shared<PlanningMap>(loadMovingAiMap(map_file), 0.0);
+  const auto queries = loadMovingAiScenario(map_file + ".scen");
+  AStarPlanner planner;
+  planner.setup(map);
+  for (const MovingAiQuery& q : stratified(queries, 10)) {
+    const PlanResult r = planner.solve(cellCentre(q.start_x, q.start_y), cellCentre(q.goal_x, q.goal_y),
+                                       Deadline::after(5));
+    ASSERT_TRUE(r.success) << r.message;
+    EXPECT_NEAR(planner.statistics().at("octile_cost"), q.optimal_length, 1e-4);
+    EXPECT_NEAR(pathLength(r.raw_path), q.optimal_length, 1e-4);
+    EXPECT_LE(r.length(), q.optimal_length + 1e-9);  // shortcutting never lengthens
+    EXPECT_EQ(test::findCollision(map->inflated(), r.path), "");
+  }
+}
+
+class MovingAiFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("beft_movingai_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) {
+    const std::string path = (dir_ / name).string();
+    std::ofstream(path) << text;
+    return path;
+  }
+  fs::path dir_;
+};
+
+TEST_F(MovingAiFiles, ReadsCrlfMaps) {
+  const auto path = write("ok.map", "type octile\r\nheight 2\r\nwidth 3\r\nmap\r\n.@.\r\nTG.\r\n");
+  const GridMap grid = loadMovingAiMap(path);
+  EXPECT_EQ(grid.width(), 3);
+  EXPECT_EQ(grid.height(), 2);
+  EXPECT_TRUE(grid.blocked(1, 0));
+  EXPECT_TRUE(grid.blocked(0, 1));
+  EXPECT_FALSE(grid.blocked(1, 1));
+}
+
+TEST_F(MovingAiFiles, RefusesBrokenMapsWithFileAndLine) {
+  const auto expect_error = [](const std::string& path, const std::string& fragment) {
+    try {
+      loadMovingAiMap(path);
+      ADD_FAILURE() << "no error for " << path;
+    } catch (const MapFormatError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  expect_error((dir_ / "missing.map").string(), "cannot open");
+  expect_error(write("a.map", "hello\n"), "a.map:1: expected 'type octile'");
+  expect_error(write("b.map", "type octile\nheight x\nwidth 3\nmap\n"), "b.map:2: expected 'height N'");
+  expect_error(write("c.map", "type octile\nheight 2\nwidth 3\nmap\n...\n..\n"), "c.map:6: row has 2 cells");
+  expect_error(write("d.map", "type octile\nheight 2\nwidth 3\nmap\n...\n.x.\n"), "d.map:6: unknown cell character 'x'");
+  expect_error(write("e.map", "type octile\nheight 3\nwidth 3\nmap\n...\n...\n"), "e.map:7: the map has 2 rows");
+}
+
+TEST_F(MovingAiFiles, RefusesBrokenScenarios) {
+  const auto path = write("x.map.scen", "version 1\n0\tx.map\t3\t2\t0\t0\t2\t1\t2.41\n0\tx.map\t3\t2\t0\t0\n");
+  try {
+    loadMovingAiScenario(path);
+    ADD_FAILURE() << "no error";
+  } catch (const MapFormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("x.map.scen:3: expected 9 fields"), std::string::npos) << e.what();
+  }
+  const auto outside = write("y.map.scen", "version 1\n0\ty.map\t3\t2\t0\t0\t5\t1\t2.41\n");
+  EXPECT_THROW(loadMovingAiScenario(outside), MapFormatError);
+}
+
+}  // namespace
+}  // namespace beft::planners

@@ -1,0 +1,167 @@
+#include "octile_search.hpp"
+#include "planner_test_support.hpp"
+#include "potential_field_planner.hpp"
+#include "synthetic_maps.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+namespace beft::planners {
+namespace {
+
+PlanResult plan(PotentialFieldPlanner& planner, const SyntheticCase& c, size_t query, double radius = 0.0) {
+  planner.setup(std::make_shared<PlanningMap>(c.map, radius));
+  return planner.solve(c.queries[query].first, c.queries[query].second, Deadline::after(10));
+}
+
+TEST(PotentialFields, ObstaclePotentialIsNormalisedAndForcePointsAway) {
+  GridMap grid(60, 40);
+  grid.fillRect(30, 0, 59, 39);  // right half blocked
+  const cv::Mat potential = obstaclePotential(grid, 3.0);
+  double lo = 0, hi = 0;
+  cv::minMaxLoc(potential, &lo, &hi);
+  EXPECT_GE(lo, 0.0);
+  EXPECT_DOUBLE_EQ(hi, 1.0);
+  EXPECT_LT(potential.at<float>(20, 20), potential.at<float>(20, 28));  // rises toward the obstacle
+  const VectorField force = negativeGradient(potential);
+  const Point2 f = force.at(cellCentre(27, 20));
+  EXPECT_LT(f.x, -0.05);  // pushed away (-x), about 1 / (sigma sqrt(2 pi)) = 0.13 at the edge
+  EXPECT_NEAR(f.y, 0.0, 1e-3);
+}
+
+TEST(PotentialFields, TargetDistancesAreNormalisedAndGeodesicGoesAround) {
+  GridMap grid(30, 30);
+  grid.fillRect(15, 0, 15, 25);
+  const GridCell goal{25, 5};
+  const cv::Mat euclidean = euclideanTargetDistance(30, 30, goal);
+  EXPECT_FLOAT_EQ(euclidean.at<float>(5, 25), 0.0f);
+  double hi = 0;
+  cv::minMaxLoc(euclidean, nullptr, &hi);
+  EXPECT_DOUBLE_EQ(hi, 1.0);
+  const cv::Mat geodesic = geodesicTargetDistance(grid, goal);
+  EXPECT_TRUE(std::isinf(geodesic.at<float>(10, 15)));  // a wall cell
+  // Across the wall from the goal the geodesic distance is far larger.
+  EXPECT_GT(geodesic.at<float>(5, 5) / geodesic.at<float>(5, 24), 10.0f);
+  EXPECT_LT(euclidean.at<float>(5, 5), 1.0f);
+  // Its descent direction at (5, 5) points up, toward the end of the wall.
+  const Point2 down = negativeGradientFinite(geodesic).at(cellCentre(5, 5));
+  EXPECT_GT(down.y, 0.0);
+}
+
+TEST(PotentialFieldPlanner, PaperPlannerGoesAroundASimpleWall) {
+  const SyntheticCase wall = simpleWallCase();
+  for (size_t q = 0; q < wall.queries.size(); ++q) {
+    PotentialFieldPlanner planner;
+    const PlanResult r = plan(planner, wall, q);
+    ASSERT_TRUE(r.success) << r.message;
+    EXPECT_EQ(test::findCollision(wall.map, r.raw_path), "");
+    EXPECT_EQ(test::findCollision(wall.map, r.path), "");
+    EXPECT_DOUBLE_EQ(r.path.back().x, wall.queries[q].second.x);
+    EXPECT_GE(planner.statistics().at("arrived"), 20);
+    // No longer than 1.3 x the octile optimum.
+    const auto best = octileAStar(wall.map, {static_cast<int>(wall.queries[q].first.x), static_cast<int>(wall.queries[q].first.y)},
+                                  {static_cast<int>(wall.queries[q].second.x), static_cast<int>(wall.queries[q].second.y)});
+    EXPECT_LT(r.length(), 1.3 * best.cost);
+  }
+}
+
+TEST(PotentialFieldPlanner, GeodesicVariantEscapesTheUTrap) {
+  const SyntheticCase trap = uTrapCase();
+  PotentialFieldParams params;
+  params.target = TargetPotential::Geodesic;
+  for (size_t q = 0; q < trap.queries.size(); ++q) {
+    PotentialFieldPlanner planner(params);
+    const PlanResult r = plan(planner, trap, q);
+    ASSERT_TRUE(r.success) << r.message;
+    EXPECT_EQ(planner.statistics().at("arrived"), 100);  // every particle
+    EXPECT_EQ(test::findCollision(trap.map, r.path), "");
+  }
+}
+
+TEST(PotentialFieldPlanner, PaperPlannerIsTrappedByTheUWithoutNoise) {
+  // Pure gradient descent on the paper's field stops at the local minimum
+  // in front of the U's bottom.
+  const SyntheticCase trap = uTrapCase();
+  PotentialFieldParams params;
+  params.noise = 0;
+  PotentialFieldPlanner planner(params);
+  const PlanResult r = plan(planner, trap, 0);
+  EXPECT_FALSE(r.success);
+  EXPECT_EQ(planner.statistics().at("arrived"), 0);
+  EXPECT_NE(r.message.find("no particle reached the goal"), std::string::npos);
+  // The particles end inside the U, in front of its bottom.
+  const Point2 end = planner.particleTraces().front().back();
+  EXPECT_GT(end.x, 20.0);
+  EXPECT_LT(end.x, 38.0);
+  EXPECT_GT(end.y, 18.0);
+  EXPECT_LT(end.y, 46.0);
+}
+
+TEST(PotentialFieldPlanner, SameSeedSamePathOtherSeedOtherParticles) {
+  const SyntheticCase wall = simpleWallCase();
+  PotentialFieldPlanner a, b, c;
+  a.setSeed(5);
+  b.setSeed(5);
+  c.setSeed(6);
+  const PlanResult ra = plan(a, wall, 0), rb = plan(b, wall, 0), rc = plan(c, wall, 0);
+  ASSERT_TRUE(ra.success && rb.success && rc.success);
+  ASSERT_EQ(ra.raw_path.size(), rb.raw_path.size());
+  for (size_t i = 0; i < ra.raw_path.size(); ++i) {
+    EXPECT_EQ(ra.raw_path[i].x, rb.raw_path[i].x);
+    EXPECT_EQ(ra.raw_path[i].y, rb.raw_path[i].y);
+  }
+  EXPECT_NE(a.particleTraces()[0].size() * 1000 + a.particleTraces()[1].size(),
+            c.particleTraces()[0].size() * 1000 + c.particleTraces()[1].size());
+}
+
+TEST(PotentialFieldPlanner, ReportsUnreachableGoalsAndPassedDeadlines) {
+  GridMap grid(20, 20);
+  grid.fillRect(10, 0, 10, 19);  // splits the map
+  auto map = std::make_shared<PlanningMap>(grid, 0.0);
+  PotentialFieldParams params;
+  params.target = TargetPotential::Geodesic;
+  PotentialFieldPlanner geodesic(params);
+  geodesic.setup(map);
+  const PlanResult unreachable = geodesic.solve(cellCentre(3, 3), cellCentre(16, 3), Deadline::after(5));
+  EXPECT_FALSE(unreachable.success);
+  EXPECT_NE(unreachable.message.find("unreachable"), std::string::npos) << unreachable.message;
+
+  PotentialFieldPlanner paper;
+  paper.setup(std::make_shared<PlanningMap>(GridMap(200, 200), 0.0));
+  const PlanResult late = paper.solve(cellCentre(3, 3), cellCentre(190, 190), Deadline::after(0));
+  EXPECT_FALSE(late.success);
+  EXPECT_NE(late.message.find("deadline"), std::string::npos) << late.message;
+}
+
+TEST(PotentialFieldPlanner, StartOrGoalInAnObstacleIsAFailureNotACrash) {
+  const SyntheticCase wall = simpleWallCase();
+  PotentialFieldPlanner planner;
+  planner.setup(std::make_shared<PlanningMap>(wall.map, 0.0));
+  const PlanResult r = planner.solve(cellCentre(20, 10), cellCentre(30, 10), Deadline::after(1));
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.message.find("start"), std::string::npos);
+  const PlanResult outside = planner.solve(cellCentre(2, 2), {55.0, 3.0}, Deadline::after(1));
+  EXPECT_FALSE(outside.success);
+  EXPECT_NE(outside.message.find("outside"), std::string::npos);
+}
+
+TEST(PotentialFieldParams, SetsByNameAndRefusesNonsense) {
+  PotentialFieldParams p;
+  p.set("particles", "20");
+  p.set("sigma", "2.5");
+  p.set("target", "geodesic");
+  EXPECT_EQ(p.particles, 20);
+  EXPECT_DOUBLE_EQ(p.sigma, 2.5);
+  EXPECT_EQ(p.target, TargetPotential::Geodesic);
+  EXPECT_THROW(p.set("particles", "0"), std::invalid_argument);
+  EXPECT_THROW(p.set("particles", "2.5"), std::invalid_argument);
+  EXPECT_THROW(p.set("sigma", "abc"), std::invalid_argument);
+  EXPECT_THROW(p.set("step", "3"), std::invalid_argument);
+  EXPECT_THROW(p.set("nonsense", "1"), std::invalid_argument);
+  EXPECT_THROW(p.set("target", "manhattan"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace beft::planners
