@@ -1,0 +1,8 @@
+// beft-audio: the low-level audio expert process (see --help).
+#include "audio_expert.hpp"
+#include "run_expert.hpp"
+
+int main(int argc, char** argv) {
+  beft::audio::AudioExpert expert;
+  return beft::expert::runExpertMain(argc, argv, expert);
+}

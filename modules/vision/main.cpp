@@ -1,0 +1,8 @@
+// beft-vision: the low-level vision expert process (see --help).
+#include "run_expert.hpp"
+#include "vision_expert.hpp"
+
+int main(int argc, char** argv) {
+  beft::vision::VisionExpert expert;
+  return beft::expert::runExpertMain(argc, argv, expert);
+}

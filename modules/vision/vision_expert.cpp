@@ -1,0 +1,99 @@
+#include "vision_expert.hpp"
+
+#include <stdexcept>
+
+#include "camera_model.hpp"
+#include "channels.hpp"
+#include "depth_rays.hpp"
+#include "log.hpp"
+#include "scene_geometry.hpp"
+#include "visual_occlusion.hpp"
+
+namespace beft::vision {
+
+std::string VisionExpert::description() const {
+  return "Low-level vision expert: the visual occlusion O_v = 100 (1 - visible / expected) of "
+         "every object with a visual (visible: its pixels in the instance image; expected: the "
+         "pixels it would cover if nothing were in front; out of view = 100), and the obstacle "
+         "map M_O: depth pixels back-projected into the world; returns above "
+         "obstacle_min_height mark OCCUPIED cells, cells the rays crossed become FREE, and an "
+         "occupied cell is cleared only when a ray crosses it below obstacle_min_height (so a "
+         "person who walked away stops blocking the map). The map covers the world of "
+         "GT_OBJECTS at --param resolution and accumulates over the run. Reads GT_OBJECTS, "
+         "CAMERA_DEPTH and CAMERA_INSTANCE of the fired tick, writes VISION and OBSTACLE_MAP "
+         "(RLE). To run it alone: start beft-world and feed FIRE tokens for 'vision' (or run "
+         "the arbiter), and watch VISION with lcm-spy.";
+}
+
+std::vector<expert::ChannelSpec> VisionExpert::reads() const {
+  return {{channels::kGroundTruth, "beft.scene_objects_t"},
+          {channels::kCameraDepth, "beft.camera_frame_t"},
+          {channels::kCameraInstance, "beft.camera_frame_t"}};
+}
+
+std::vector<expert::ChannelSpec> VisionExpert::writes() const {
+  return {{channels::kVision, "beft.visual_percepts_t"}, {channels::kObstacleMap, "beft.obstacle_map_t"}};
+}
+
+std::vector<std::vector<std::string>> VisionExpert::parameterHelp() const {
+  return {{"resolution", "0.1", "obstacle map cell edge [m]"},
+          {"obstacle_min_height", "0.15", "depth returns above this height are obstacles [m]"},
+          {"free_space_stride", "2", "trace free space along every n-th depth pixel (obstacles use all)"}};
+}
+
+void VisionExpert::onStartUp(const expert::Parameters& parameters) {
+  map_config_.resolution = parameters.getDouble("resolution", map_config_.resolution);
+  map_config_.obstacle_min_height = parameters.getDouble("obstacle_min_height", map_config_.obstacle_min_height);
+  free_space_stride_ = static_cast<int>(parameters.getInt("free_space_stride", free_space_stride_));
+  if (!(map_config_.resolution > 0)) throw std::invalid_argument("resolution must be > 0");
+  if (!(map_config_.obstacle_min_height >= 0)) throw std::invalid_argument("obstacle_min_height must be >= 0");
+  if (free_space_stride_ < 1) throw std::invalid_argument("free_space_stride must be >= 1");
+}
+
+bool VisionExpert::onMessage(const std::string& channel, const void* data, int size) {
+  if (channel == channels::kGroundTruth) return scene_.store(data, size);
+  if (channel == channels::kCameraDepth) return depth_.store(data, size);
+  if (channel == channels::kCameraInstance) return instance_.store(data, size);
+  return false;
+}
+
+bool VisionExpert::inputsReady(const expert::Firing& firing) const {
+  return scene_.has(firing.tick) && depth_.has(firing.tick) && instance_.has(firing.tick);
+}
+
+expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output& out) {
+  const auto* scene = scene_.ofTick(firing.tick);
+  const auto* depth = depth_.ofTick(firing.tick);
+  const auto* instance = instance_.ofTick(firing.tick);
+  if (scene == nullptr || depth == nullptr || instance == nullptr)
+    return expert::Outcome::failure(
+        std::string("no ") + (scene == nullptr ? "GT_OBJECTS" : depth == nullptr ? "CAMERA_DEPTH" : "CAMERA_INSTANCE") +
+        " for tick " + std::to_string(firing.tick));
+  try {
+    const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
+    const std::vector<int> expected = ray_caster_.expectedPixelsPerObject(solids, camera::cameraOfFrame(*instance));
+    const std::vector<int> visible = countVisiblePixels(*instance, *scene);
+    out.publish(channels::kVision, estimateVisualOcclusion(*scene, visible, expected));
+    updateMap(*scene, *depth, firing.tick);
+    out.publish(channels::kObstacleMap, mapper_->toMessage(scene->utime, firing.tick));
+  } catch (const std::exception& e) {
+    return expert::Outcome::failure("tick " + std::to_string(firing.tick) + ": " + e.what());
+  }
+  return expert::Outcome::success();
+}
+
+void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t& depth, int64_t tick) {
+  if (!mapper_ || scene.world_width != mapped_world_width_ || scene.world_height != mapped_world_height_) {
+    if (mapper_) log::warn("world size changed: obstacle map restarted");
+    mapper_ = std::make_unique<ObstacleMapper>(scene.world_width, scene.world_height, map_config_);
+    mapped_world_width_ = scene.world_width;
+    mapped_world_height_ = scene.world_height;
+    last_mapped_tick_ = -1;
+  }
+  if (tick == last_mapped_tick_) return;  // a re-sent FIRE: this frame is in the map already
+  const Eigen::Vector3d origin(depth.cam_x, depth.cam_y, depth.cam_z);
+  mapper_->integrate(origin, depthRays(depth), free_space_stride_);
+  last_mapped_tick_ = tick;
+}
+
+}  // namespace beft::vision

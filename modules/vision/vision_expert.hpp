@@ -1,0 +1,44 @@
+// The vision expert as a process (low level): stores GT_OBJECTS and the
+// depth and instance images, and on FIRE for tick k publishes VISION (O_v of
+// every object with a visual) and OBSTACLE_MAP (M_O, accumulated).
+#pragma once
+
+#include <memory>
+
+#include <beft/camera_frame_t.hpp>
+#include <beft/scene_objects_t.hpp>
+
+#include "expert.hpp"
+#include "obstacle_mapper.hpp"
+#include "ray_caster.hpp"
+#include "tick_channel.hpp"
+
+namespace beft::vision {
+
+class VisionExpert : public expert::Expert {
+ public:
+  std::string name() const override { return "vision"; }
+  std::string description() const override;
+  std::vector<expert::ChannelSpec> reads() const override;
+  std::vector<expert::ChannelSpec> writes() const override;
+  std::vector<std::vector<std::string>> parameterHelp() const override;
+  void onStartUp(const expert::Parameters& parameters) override;
+  bool onMessage(const std::string& channel, const void* data, int size) override;
+  bool inputsReady(const expert::Firing& firing) const override;
+  expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
+
+ private:
+  void updateMap(const scene_objects_t& scene, const camera_frame_t& depth, int64_t tick);
+
+  ObstacleMapConfig map_config_;
+  int free_space_stride_ = 2;
+  std::unique_ptr<ObstacleMapper> mapper_;
+  double mapped_world_width_ = 0, mapped_world_height_ = 0;
+  int64_t last_mapped_tick_ = -1;
+  camera::RayCaster ray_caster_;
+  expert::TickChannel<scene_objects_t> scene_;
+  expert::TickChannel<camera_frame_t> depth_{4};
+  expert::TickChannel<camera_frame_t> instance_{4};
+};
+
+}  // namespace beft::vision

@@ -1,0 +1,28 @@
+// Visual occlusion O_v (spec/model.md) of every object with a visual:
+//   O_v = 100 * (1 - visible / expected)
+// visible: the object's pixels in the instance image; expected: the pixels
+// it would cover from the same camera if nothing were in front of it
+// (camera::expectedPixelsPerObject). Out of view or beyond range
+// (expected = 0) gives 100.
+#pragma once
+
+#include <vector>
+
+#include <beft/camera_frame_t.hpp>
+#include <beft/scene_objects_t.hpp>
+#include <beft/visual_percepts_t.hpp>
+
+namespace beft::vision {
+
+// Pixels per object (index into scene.objects) of an INSTANCE16 frame, matched
+// through the frame's instance_ids. Throws std::invalid_argument on a frame
+// that is not INSTANCE16, has a wrong data size or a pixel value beyond its id
+// list; ids not in the scene are ignored.
+std::vector<int> countVisiblePixels(const camera_frame_t& instance, const scene_objects_t& scene);
+
+// One percept per object with a visual, in scene order; stamped with the
+// scene's utime and tick. visible and expected are indexed like scene.objects.
+visual_percepts_t estimateVisualOcclusion(const scene_objects_t& scene, const std::vector<int>& visible,
+                                          const std::vector<int>& expected);
+
+}  // namespace beft::vision
