@@ -365,7 +365,7 @@ class Loader {
 
   static uint32_t parseColor(const ElementReader& reader, const std::string& text) {
     const bool well_formed = text.size() == 7 && text[0] == '#' &&
-                             std::all_of(text.begin() + 1, text.end(), [](char c) { return std::isxdigit(c); });
+                             std::all_of(text.begin() + 1, text.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; });
     if (!well_formed) reader.fail("attribute 'color' of <visual> must be '#rrggbb', got '" + text + "'");
     return static_cast<uint32_t>(std::stoul(text.substr(1), nullptr, 16));
   }
@@ -451,6 +451,7 @@ class Loader {
     if (auto label = reader.optionalString("label")) event.label = requireCategory(reader, *label);
     finish(reader);
 
+    if (event.sound && event.sound->empty()) reader.fail("attribute 'sound' of <event> is empty");
     if (event.sound) event.sound_path = resolveSound(reader, *event.sound);
     const double x = event.x.value_or(object.x);
     const double y = event.y.value_or(object.y);
