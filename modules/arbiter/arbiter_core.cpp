@@ -1,0 +1,509 @@
+#include "arbiter_core.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "log.hpp"
+
+namespace beft::arbiter {
+
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+constexpr size_t kEndedWindow = 4096;  // ended firing ids remembered, to classify stray DONEs
+
+std::string seconds(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.3g s", s);
+  return buffer;
+}
+
+std::string joinNames(const std::vector<std::string>& names, const char* separator = ", ") {
+  std::string text;
+  for (const auto& name : names) {
+    if (!text.empty()) text += separator;
+    text += name;
+  }
+  return text;
+}
+
+}  // namespace
+
+const char* runStateName(RunState state) {
+  switch (state) {
+    case RunState::Waiting: return "WAITING";
+    case RunState::Running: return "RUNNING";
+    case RunState::Finished: return "FINISHED";
+    case RunState::Failed: return "FAILED";
+  }
+  return "?";
+}
+
+ArbiterCore::ArbiterCore(Net net, ArbiterConfig config, Clock& clock, ArbiterOutput& output)
+    : net_(std::move(net)), config_(config), clock_(clock), output_(output) {
+  marking_ = net_.initialMarking();
+  for (const auto& name : net_.experts()) {
+    ExpertState expert;
+    expert.name = name;
+    experts_.push_back(expert);
+  }
+  for (const auto& transition : net_.transitions)
+    transition_expert_.push_back(transition.silent() ? -1 : expertIndex(transition.expert));
+}
+
+std::vector<std::string> ArbiterCore::missingExperts() const {
+  std::vector<std::string> missing;
+  for (const auto& expert : experts_)
+    if (!expert.heard) missing.push_back(expert.name);
+  return missing;
+}
+
+void ArbiterCore::start() {
+  if (started_) return;
+  started_ = true;
+  const double now = clock_.now();
+  run_start_ = now;
+  startup_deadline_ = now + config_.startup_timeout_s;
+  next_startup_report_ = now + config_.startup_report_period_s;
+  const auto missing = missingExperts();
+  if (missing.empty()) {
+    beginRun();
+    return;
+  }
+  log::info("waiting up to ", seconds(config_.startup_timeout_s), " for the first heartbeat of: ",
+            joinNames(missing));
+  sendStatus(beft::run_status_t::STATE_WAITING, "waiting for heartbeats from: " + joinNames(missing));
+}
+
+void ArbiterCore::beginRun() {
+  state_ = RunState::Running;
+  run_start_ = clock_.now();
+  // Experts drop a FIRE whose id is not above the last they ran: continue
+  // above anything they report, so a restarted arbiter is heard.
+  next_firing_id_ = std::max<int64_t>(1, highest_reported_firing_id_ + 1);
+  log::info("every expert is up; the run starts (first firing id ", next_firing_id_, ")");
+  sendStatus(beft::run_status_t::STATE_RUNNING, "tick 0");
+  step("start");
+}
+
+void ArbiterCore::onHeartbeat(const beft::heartbeat_t& heartbeat) {
+  const int e = expertIndex(heartbeat.process);
+  if (e < 0) return;  // another process (blackboard, viewer): not scheduled by this net
+  ExpertState& expert = experts_[e];
+  const bool first = !expert.heard;
+  expert.heard = true;
+  expert.last_heartbeat = clock_.now();
+  if (expert.reported_silent) {
+    expert.reported_silent = false;
+    log::info("expert ", expert.name, " sends heartbeats again");
+  }
+  if (state_ == RunState::Waiting) {
+    highest_reported_firing_id_ = std::max(highest_reported_firing_id_, heartbeat.last_firing_id);
+    if (first && started_) {
+      log::info("heard ", expert.name, " (pid ", heartbeat.pid, " on ", heartbeat.host, ")");
+      if (missingExperts().empty()) beginRun();
+    }
+  } else if (state_ == RunState::Running && heartbeat.last_firing_id >= next_firing_id_ &&
+             !expert.warned_foreign) {
+    expert.warned_foreign = true;
+    log::warn("expert ", expert.name, " reports firing ", heartbeat.last_firing_id,
+              ", which this arbiter never issued: is another arbiter running on this LCM URL?");
+  }
+}
+
+void ArbiterCore::onDone(const beft::done_t& done) {
+  if (state_ != RunState::Running) {
+    log::info("DONE from ", done.expert, " for firing ", done.firing_id, " while the run is ",
+              runStateName(state_), ": dropped");
+    return;
+  }
+  const int e = expertIndex(done.expert);
+  if (e >= 0 && experts_[e].running && experts_[e].running->firing_id == done.firing_id) {
+    completeFiring(e, done);
+    step("done " + done.expert);
+    return;
+  }
+  // Not the firing in flight: say why it is dropped.
+  if (const auto found = recently_ended_.find(done.firing_id); found != recently_ended_.end()) {
+    const EndedFiring& ended = found->second;
+    if (ended.expert != e) {
+      ++stats_.unknown_dones;
+      log::warn("DONE from '", done.expert, "' for firing ", done.firing_id,
+                ", which was addressed to ", experts_[ended.expert].name, ": dropped");
+    } else if (ended.completed) {
+      ++stats_.duplicate_dones;
+      log::info("duplicate DONE from ", done.expert, " for firing ", done.firing_id, ": dropped");
+    } else {
+      ++stats_.late_dones;
+      log::warn("late DONE from ", done.expert, " for firing ", done.firing_id, " (tick ", done.tick,
+                "), which was already given up: dropped");
+    }
+    return;
+  }
+  ++stats_.unknown_dones;
+  if (done.firing_id >= next_firing_id_)
+    log::warn("DONE from ", done.expert, " for firing ", done.firing_id,
+              ", which this arbiter never issued (is another arbiter running on this LCM URL?): dropped");
+  else if (e < 0)
+    log::warn("DONE from '", done.expert, "', which is not an expert of this net: dropped");
+  else
+    log::warn("DONE from ", done.expert, " for old firing ", done.firing_id, ": dropped");
+}
+
+void ArbiterCore::onStopRequest(const std::string& why) {
+  if (ended()) return;
+  if (state_ == RunState::Waiting) {
+    finish("stopped before the first tick: " + why);
+    return;
+  }
+  if (stop_requested_) return;
+  stop_requested_ = true;
+  stop_reason_ = why;
+  log::info("stop requested (", why, "): the run ends at the end of tick ", tick_);
+  step("stop requested");
+}
+
+void ArbiterCore::onAbort(const std::string& why) {
+  if (ended()) return;
+  fail("aborted: " + why);
+}
+
+void ArbiterCore::onTimeAdvanced() {
+  const double now = clock_.now();
+  if (ended()) {
+    if (final_sends_left_ > 0 && now >= next_final_send_) {
+      sendStatus(state_ == RunState::Finished ? beft::run_status_t::STATE_FINISHED
+                                              : beft::run_status_t::STATE_FAILED,
+                 message_);
+      --final_sends_left_;
+      next_final_send_ = now + config_.final_status_period_s;
+    }
+    return;
+  }
+  if (state_ == RunState::Waiting) {
+    if (!started_) return;
+    const auto missing = missingExperts();
+    if (now >= startup_deadline_) {
+      fail("no heartbeat within " + seconds(config_.startup_timeout_s) + " from: " +
+           joinNames(missing) + " (are they started, on the same --lcm-url?)");
+    } else if (now >= next_startup_report_) {
+      log::info("still waiting for heartbeats from: ", joinNames(missing), " (",
+                seconds(startup_deadline_ - now), " left)");
+      sendStatus(beft::run_status_t::STATE_WAITING, "waiting for heartbeats from: " + joinNames(missing));
+      while (next_startup_report_ <= now) next_startup_report_ += config_.startup_report_period_s;
+    }
+    return;
+  }
+  checkRunningFirings(now);
+}
+
+void ArbiterCore::checkRunningFirings(double now) {
+  bool changed = false;
+  for (size_t e = 0; e < experts_.size() && state_ == RunState::Running; ++e) {
+    ExpertState& expert = experts_[e];
+    if (!expert.running) {
+      if (expert.heard && !expert.reported_silent &&
+          now >= expert.last_heartbeat + config_.heartbeat_timeout_s) {
+        expert.reported_silent = true;
+        log::warn("no heartbeat from ", expert.name, " for ", seconds(now - expert.last_heartbeat),
+                  " (idle; its next firing will tell whether it is gone)");
+      }
+      continue;
+    }
+    const Running& running = *expert.running;
+    const Transition& transition = net_.transitions[running.transition];
+    const Deadlines due = deadlinesOf(static_cast<int>(e));
+    if (now >= due.timeout) {
+      applyPolicy(static_cast<int>(e), transition.policy.on_timeout, "timeout",
+                  "no DONE within " + seconds(transition.policy.timeout_s), -1.0);
+      changed = true;
+    } else if (now >= due.heartbeat) {
+      applyPolicy(static_cast<int>(e), transition.policy.on_timeout, "no-heartbeat",
+                  "no heartbeat for " + seconds(now - (due.heartbeat - heartbeatTimeout(transition))) +
+                      " (expert gone?)",
+                  -1.0);
+      changed = true;
+    } else if (now >= due.resend) {
+      sendFire(static_cast<int>(e));
+      ++stats_.fire_resends;
+    }
+  }
+  if (changed) step("expiry");
+}
+
+double ArbiterCore::nextDeadline() const {
+  double next = kNever;
+  if (ended()) return final_sends_left_ > 0 ? next_final_send_ : kNever;
+  if (state_ == RunState::Waiting)
+    return started_ ? std::min(startup_deadline_, next_startup_report_) : kNever;
+  for (const auto& expert : experts_) {
+    if (!expert.running) {
+      if (expert.heard && !expert.reported_silent)
+        next = std::min(next, expert.last_heartbeat + config_.heartbeat_timeout_s);
+      continue;
+    }
+    const Deadlines due = deadlinesOf(static_cast<int>(&expert - experts_.data()));
+    next = std::min({next, due.resend, due.timeout, due.heartbeat});
+  }
+  return next;
+}
+
+// One formula for both nextDeadline() and the checks, so a deadline that is
+// announced is also found due at that very time.
+ArbiterCore::Deadlines ArbiterCore::deadlinesOf(int e) const {
+  const ExpertState& expert = experts_[e];
+  const Running& running = *expert.running;
+  const Transition& transition = net_.transitions[running.transition];
+  // A first attempt counts from the last heartbeat (an expert already gone
+  // is found at once); a retry gives a restarted expert a full period.
+  const double heartbeat_reference = running.attempt == 1
+                                         ? expert.last_heartbeat
+                                         : std::max(expert.last_heartbeat, running.attempt_start);
+  Deadlines due;
+  due.resend = running.last_send + config_.resend_period_s;
+  due.timeout = running.attempt_start + transition.policy.timeout_s;
+  due.heartbeat = heartbeat_reference + heartbeatTimeout(transition);
+  return due;
+}
+
+void ArbiterCore::step(const std::string& event) {
+  if (state_ != RunState::Running) return;
+  std::string text = event;
+  const auto note = [&text](const std::string& what) { text += (text.empty() ? "" : "; ") + what; };
+  const int tick_transition = net_.tick_transition;
+  const Transition& tick = net_.transitions[tick_transition];
+  int64_t silent_firings = 0;
+  while (true) {
+    // After the last tick, nothing new starts once the tick transition is enabled.
+    if (endingAtTickEnd() && isEnabled(tick, marking_)) break;
+    bool progress = false;
+    for (size_t t = 0; t < net_.transitions.size(); ++t) {
+      if (static_cast<int>(t) == tick_transition) continue;
+      const Transition& transition = net_.transitions[t];
+      if (!isEnabled(transition, marking_)) continue;
+      if (transition.silent()) {
+        consumeInputs(transition, marking_);
+        produceOutputs(transition, marking_);
+        ++silent_firings;
+        progress = true;
+      } else if (!experts_[transition_expert_[t]].running) {
+        startFiring(static_cast<int>(t), 1, tick_);
+        note("fire " + transition.expert);
+        progress = true;
+      }
+    }
+    // The tick closes when nothing else can start.
+    if (!progress && !endingAtTickEnd() && isEnabled(tick, marking_)) {
+      consumeInputs(tick, marking_);
+      produceOutputs(tick, marking_);
+      ++tick_;
+      ++stats_.ticks_completed;
+      ++silent_firings;
+      note("tick " + std::to_string(tick_));
+      sendStatus(beft::run_status_t::STATE_RUNNING, "tick " + std::to_string(tick_));
+      progress = true;
+    }
+    if (silent_firings > config_.max_silent_firings_per_step) {
+      publishMarking(text);
+      fail("silent transitions fired " + std::to_string(silent_firings) +
+           " times without any expert running: the net has a cycle without an expert");
+      return;
+    }
+    if (!progress) break;
+  }
+  publishMarking(text);
+  if (anyRunning()) return;
+  if (endingAtTickEnd() && isEnabled(tick, marking_)) {
+    const int64_t ticks = tick_ + 1;
+    ++stats_.ticks_completed;
+    finish(stop_requested_ ? "stopped on request after " + std::to_string(ticks) + " ticks: " + stop_reason_
+                           : "finished after " + std::to_string(ticks) + " ticks");
+    return;
+  }
+  fail("deadlock in tick " + std::to_string(tick_) +
+       ": no transition is enabled and no expert is running; marking: " +
+       describeMarking(net_, marking_));
+}
+
+bool ArbiterCore::endingAtTickEnd() const {
+  return stop_requested_ || (config_.max_ticks > 0 && tick_ + 1 >= config_.max_ticks);
+}
+
+void ArbiterCore::startFiring(int transition, int attempt, int64_t tick) {
+  const int e = transition_expert_[transition];
+  if (attempt == 1) consumeInputs(net_.transitions[transition], marking_);
+  Running running;
+  running.transition = transition;
+  running.firing_id = next_firing_id_++;
+  running.tick = tick;
+  running.attempt = attempt;
+  running.attempt_start = clock_.now();
+  experts_[e].running = running;
+  ++stats_.firings_started;
+  sendFire(e);
+}
+
+void ArbiterCore::sendFire(int e) {
+  Running& running = *experts_[e].running;
+  beft::fire_t fire;
+  fire.utime = utimeOfTick(running.tick);
+  fire.expert = experts_[e].name;
+  fire.transition = net_.transitions[running.transition].id;
+  fire.tick = running.tick;
+  fire.firing_id = running.firing_id;
+  running.last_send = clock_.now();
+  output_.sendFire(fire);
+}
+
+void ArbiterCore::completeFiring(int e, const beft::done_t& done) {
+  const Running running = *experts_[e].running;
+  if (done.tick != running.tick)
+    log::warn("DONE from ", done.expert, " for firing ", done.firing_id, " says tick ", done.tick,
+              ", the firing was for tick ", running.tick, " (accepted by firing id)");
+  if (done.outcome == beft::done_t::OUTCOME_OK) {
+    output_.firingEnded(recordOf(e, "ok", "", done.message, done.duration));
+    produceOutputs(net_.transitions[running.transition], marking_);
+    endFiring(e, true);
+    ++stats_.firings_done;
+    return;
+  }
+  applyPolicy(e, net_.transitions[running.transition].policy.on_failure, "failed",
+              done.message.empty() ? "the expert reported a failure" : "failed: " + done.message,
+              done.duration);
+}
+
+void ArbiterCore::applyPolicy(int e, ExpiryAction action, const std::string& outcome,
+                              const std::string& reason, double expert_duration_s) {
+  const Running running = *experts_[e].running;
+  const Transition& transition = net_.transitions[running.transition];
+  const FiringPolicy& policy = transition.policy;
+  const std::string what = describeFiring(running, e) + ": " + reason;
+  if (action == ExpiryAction::Retry && running.attempt <= policy.retries) {
+    output_.firingEnded(recordOf(e, outcome, "retry", reason, expert_duration_s));
+    endFiring(e, false);
+    ++stats_.retries;
+    log::warn(what, "; retry ", running.attempt, " of ", policy.retries);
+    startFiring(running.transition, running.attempt + 1, running.tick);
+    return;
+  }
+  const ExpiryAction effective = action == ExpiryAction::Retry ? policy.after_retries : action;
+  const std::string after =
+      action == ExpiryAction::Retry ? " (after " + std::to_string(policy.retries) + " retries)" : "";
+  if (effective == ExpiryAction::Skip) {
+    output_.firingEnded(recordOf(e, outcome, "skip", reason, expert_duration_s));
+    produceOutputs(transition, marking_);
+    endFiring(e, false);
+    ++stats_.skips;
+    log::warn(what, after, "; skipped as the net says: the run goes on as if it were done");
+    return;
+  }
+  output_.firingEnded(recordOf(e, outcome, "fail", reason, expert_duration_s));
+  endFiring(e, false);
+  fail(what + after + "; the net's policy for transition " + transition.id + " is to fail the run");
+}
+
+void ArbiterCore::endFiring(int e, bool completed) {
+  const int64_t id = experts_[e].running->firing_id;
+  recently_ended_[id] = EndedFiring{e, completed};
+  while (recently_ended_.size() > kEndedWindow) recently_ended_.erase(recently_ended_.begin());
+  experts_[e].running.reset();
+}
+
+FiringRecord ArbiterCore::recordOf(int e, const std::string& outcome, const std::string& action,
+                                   const std::string& message, double expert_duration_s) const {
+  const Running& running = *experts_[e].running;
+  FiringRecord record;
+  record.tick = running.tick;
+  record.firing_id = running.firing_id;
+  record.expert = experts_[e].name;
+  record.transition = net_.transitions[running.transition].id;
+  record.attempt = running.attempt;
+  record.start_s = running.attempt_start - run_start_;
+  record.duration_s = clock_.now() - running.attempt_start;
+  record.expert_duration_s = expert_duration_s;
+  record.outcome = outcome;
+  record.action = action;
+  record.message = message;
+  return record;
+}
+
+void ArbiterCore::fail(const std::string& why) { endRun(RunState::Failed, why); }
+
+void ArbiterCore::finish(const std::string& why) { endRun(RunState::Finished, why); }
+
+void ArbiterCore::endRun(RunState state, const std::string& why) {
+  if (ended()) return;
+  const bool started_ticks = state_ == RunState::Running;
+  state_ = state;
+  message_ = why;
+  for (size_t e = 0; e < experts_.size(); ++e) {
+    if (!experts_[e].running) continue;
+    output_.firingEnded(recordOf(static_cast<int>(e), "abandoned", "", "the run ended", -1.0));
+    endFiring(static_cast<int>(e), false);
+  }
+  if (state == RunState::Failed && started_ticks) log::error("run FAILED in tick ", tick_, ": ", why);
+  else if (state == RunState::Failed) log::error("run FAILED before the first tick: ", why);
+  else log::info("run FINISHED: ", why);
+  sendStatus(state == RunState::Finished ? beft::run_status_t::STATE_FINISHED
+                                         : beft::run_status_t::STATE_FAILED,
+             why);
+  final_sends_left_ = std::max(0, config_.final_status_repeats - 1);
+  next_final_send_ = clock_.now() + config_.final_status_period_s;
+}
+
+void ArbiterCore::sendStatus(int8_t state, const std::string& message) {
+  beft::run_status_t status;
+  status.utime = utimeOfTick(tick_);
+  status.tick = tick_;
+  status.state = state;
+  status.message = message;
+  output_.sendRunStatus(status);
+}
+
+void ArbiterCore::publishMarking(const std::string& event) {
+  beft::marking_t marking;
+  marking.utime = utimeOfTick(tick_);
+  marking.tick = tick_;
+  marking.step = ++stats_.steps;
+  marking.event = event;
+  marking.num_places = static_cast<int32_t>(net_.places.size());
+  marking.place_ids.reserve(net_.places.size());
+  for (const auto& place : net_.places) marking.place_ids.push_back(place.id);
+  marking.tokens.assign(marking_.begin(), marking_.end());
+  for (const auto& expert : experts_)
+    if (expert.running) marking.running.push_back(expert.name);
+  marking.num_running = static_cast<int32_t>(marking.running.size());
+  output_.sendMarking(marking);
+}
+
+bool ArbiterCore::anyRunning() const {
+  for (const auto& expert : experts_)
+    if (expert.running) return true;
+  return false;
+}
+
+double ArbiterCore::heartbeatTimeout(const Transition& transition) const {
+  return transition.policy.heartbeat_timeout_s > 0.0 ? transition.policy.heartbeat_timeout_s
+                                                     : config_.heartbeat_timeout_s;
+}
+
+int ArbiterCore::expertIndex(const std::string& name) const {
+  for (size_t i = 0; i < experts_.size(); ++i)
+    if (experts_[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int64_t ArbiterCore::utimeOfTick(int64_t tick) const {
+  return static_cast<int64_t>(std::llround(static_cast<double>(tick) * config_.dt_s * 1e6));
+}
+
+std::string ArbiterCore::describeFiring(const Running& running, int e) const {
+  std::string text = experts_[e].name + " (tick " + std::to_string(running.tick) + ", firing " +
+                     std::to_string(running.firing_id);
+  if (running.attempt > 1) text += ", attempt " + std::to_string(running.attempt);
+  return text + ")";
+}
+
+}  // namespace beft::arbiter
