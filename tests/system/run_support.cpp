@@ -1,0 +1,98 @@
+#include "run_support.hpp"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <poll.h>
+#include <fcntl.h>
+#include <stdexcept>
+#include <thread>
+
+namespace beft::system_test {
+
+ProgramResult runCommand(const std::string& command_line, double timeout_s) {
+  int fds[2];
+  if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
+  const pid_t pid = fork();
+  if (pid == 0) {
+    setpgid(0, 0);
+    dup2(fds[1], STDOUT_FILENO);
+    dup2(fds[1], STDERR_FILENO);
+    close(fds[0]);
+    close(fds[1]);
+    execl("/bin/sh", "sh", "-c", command_line.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  close(fds[1]);
+  fcntl(fds[0], F_SETFL, O_NONBLOCK);
+  ProgramResult result;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  int status = 0;
+  bool exited = false;
+  while (!exited) {
+    pollfd pfd{fds[0], POLLIN, 0};
+    poll(&pfd, 1, 50);
+    char buffer[4096];
+    ssize_t n;
+    while ((n = read(fds[0], buffer, sizeof(buffer))) > 0) result.output.append(buffer, static_cast<std::size_t>(n));
+    if (waitpid(pid, &status, WNOHANG) == pid) exited = true;
+    else if (std::chrono::steady_clock::now() > deadline) {
+      kill(-pid, SIGTERM);
+      std::this_thread::sleep_for(std::chrono::seconds(2));
+      kill(-pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      result.output += "\n[test] killed after " + std::to_string(timeout_s) + " s\n";
+      exited = true;
+    }
+  }
+  char buffer[4096];
+  ssize_t n;
+  while ((n = read(fds[0], buffer, sizeof(buffer))) > 0) result.output.append(buffer, static_cast<std::size_t>(n));
+  close(fds[0]);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return result;
+}
+
+std::string binDir() { return BEFT_BIN_DIR; }
+std::string sourceDir() { return BEFT_SOURCE_DIR; }
+
+std::string makeTempDir(const std::string& tag) {
+  std::string pattern = "/tmp/beft_" + tag + "_XXXXXX";
+  if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+  return pattern;
+}
+
+std::vector<LoggedMessage> readLog(const std::string& path) {
+  lcm::LogFile log(path, "r");
+  if (!log.good()) throw std::runtime_error("cannot read log " + path);
+  std::vector<LoggedMessage> events;
+  while (const lcm::LogEvent* event = log.readNextEvent()) {
+    const auto* bytes = static_cast<const uint8_t*>(event->data);
+    events.push_back({event->channel, event->timestamp, {bytes, bytes + event->datalen}});
+  }
+  return events;
+}
+
+nlohmann::json readJson(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  return nlohmann::json::parse(in);
+}
+
+std::string lineAfter(const std::string& output, const std::string& prefix) {
+  std::size_t pos = 0;
+  while (pos < output.size()) {
+    const auto end = output.find('\n', pos);
+    const std::string line = output.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
+    if (line.rfind(prefix, 0) == 0) return line.substr(prefix.size());
+    if (end == std::string::npos) break;
+    pos = end + 1;
+  }
+  return "";
+}
+
+}  // namespace beft::system_test

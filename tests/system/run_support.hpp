@@ -1,0 +1,52 @@
+// Support for the system tests: run programs, read a run's log and report.
+#pragma once
+
+#include <lcm/lcm-cpp.hpp>
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace beft::system_test {
+
+struct ProgramResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Runs a command line through sh, capturing its output; kills it after timeout_s.
+ProgramResult runCommand(const std::string& command_line, double timeout_s);
+
+std::string binDir();     // build/bin
+std::string sourceDir();  // the repository root
+std::string makeTempDir(const std::string& tag);
+
+struct LoggedMessage {
+  std::string channel;
+  int64_t timestamp = 0;  // logger receive time [us]
+  std::vector<uint8_t> data;
+};
+
+// Every event of an LCM log file, in order.
+std::vector<LoggedMessage> readLog(const std::string& path);
+
+template <typename Message>
+std::vector<Message> messagesOn(const std::vector<LoggedMessage>& log, const std::string& channel) {
+  std::vector<Message> out;
+  for (const auto& event : log) {
+    if (event.channel != channel) continue;
+    Message message;
+    if (message.decode(event.data.data(), 0, static_cast<int>(event.data.size())) ==
+        static_cast<int>(event.data.size()))
+      out.push_back(message);
+  }
+  return out;
+}
+
+nlohmann::json readJson(const std::string& path);
+
+// The first line of `output` that starts with `prefix`, without it; "" if none.
+std::string lineAfter(const std::string& output, const std::string& prefix);
+
+}  // namespace beft::system_test

@@ -1,0 +1,229 @@
+// The expert hierarchy as separate processes (a short run of yard.xml):
+// schedule order from the log, labels against the model library, replay of
+// experts against the recorded log, lcm-logplayer, and running one expert by hand.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <map>
+#include <set>
+#include <thread>
+
+#include <beft/done_t.hpp>
+#include <beft/fire_t.hpp>
+#include <beft/geometry_percepts_t.hpp>
+#include <beft/labels_t.hpp>
+#include <beft/acoustic_percepts_t.hpp>
+#include <beft/scene_objects_t.hpp>
+#include <beft/visual_percepts_t.hpp>
+
+#include "model.hpp"
+#include "run_support.hpp"
+
+using namespace beft::system_test;
+
+namespace {
+
+constexpr int kShortTicks = 40;
+
+struct ShortRun {
+  std::string dir;
+  ProgramResult result;
+  std::vector<LoggedMessage> log;
+};
+
+const ShortRun& shortYardRun() {
+  static ShortRun run = [] {
+    ShortRun r;
+    r.dir = makeTempDir("short_yard");
+    r.result = runCommand(binDir() + "/beft-run " + sourceDir() + "/scenarios/yard.xml --max-ticks " +
+                              std::to_string(kShortTicks) + " --no-report --out " + r.dir,
+                          300);
+    try {
+      r.log = readLog(r.dir + "/run.lcmlog");
+    } catch (const std::exception& e) {
+      r.result.output += e.what();
+    }
+    return r;
+  }();
+  return run;
+}
+
+const std::vector<std::string> kLow = {"geometry", "vision", "audio"};
+const std::vector<std::string> kMid = {"visual_labels", "acoustic_labels"};
+const std::vector<std::string> kHigh = {"fusion", "dw", "exploration", "tasks"};
+
+}  // namespace
+
+TEST(Pipeline, EachExpertFiresOncePerTickInThePapersOrder) {
+  const auto& run = shortYardRun();
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  // Position in the log of the first FIRE and the first DONE of each (tick, expert).
+  std::map<std::pair<int64_t, std::string>, std::size_t> first_fire, first_done;
+  std::map<std::pair<int64_t, std::string>, std::set<int64_t>> firing_ids;
+  for (std::size_t i = 0; i < run.log.size(); ++i) {
+    const auto& event = run.log[i];
+    if (event.channel == "FIRE") {
+      beft::fire_t f;
+      f.decode(event.data.data(), 0, static_cast<int>(event.data.size()));
+      first_fire.emplace(std::make_pair(f.tick, f.expert), i);
+      firing_ids[{f.tick, f.expert}].insert(f.firing_id);
+    } else if (event.channel == "DONE") {
+      beft::done_t d;
+      d.decode(event.data.data(), 0, static_cast<int>(event.data.size()));
+      first_done.emplace(std::make_pair(d.tick, d.expert), i);
+    }
+  }
+  int ticks_checked = 0;
+  for (int64_t tick = 1; tick < kShortTicks - 1; ++tick) {
+    auto fire = [&](const std::string& e) { return first_fire.at({tick, e}); };
+    auto done = [&](const std::string& e) { return first_done.at({tick, e}); };
+    std::vector<std::string> all = {"world"};
+    all.insert(all.end(), kLow.begin(), kLow.end());
+    all.insert(all.end(), kMid.begin(), kMid.end());
+    all.insert(all.end(), kHigh.begin(), kHigh.end());
+    bool complete = true;
+    for (const auto& e : all) complete &= first_fire.count({tick, e}) && first_done.count({tick, e});
+    ASSERT_TRUE(complete) << "tick " << tick << " misses a FIRE or DONE";
+    for (const auto& e : all) EXPECT_EQ(firing_ids[{tick, e}].size(), 1u) << e << " fired twice in tick " << tick;
+    for (const auto& low : kLow) EXPECT_LT(done("world"), fire(low)) << tick;
+    for (const auto& mid : kMid)
+      for (const auto& low : kLow) EXPECT_LT(done(low), fire(mid)) << tick << " " << low << " " << mid;
+    for (const auto& mid : kMid) EXPECT_LT(done(mid), fire("fusion")) << tick;
+    for (std::size_t i = 1; i < kHigh.size(); ++i) EXPECT_LT(done(kHigh[i - 1]), fire(kHigh[i])) << tick;
+    ++ticks_checked;
+  }
+  EXPECT_EQ(ticks_checked, kShortTicks - 2);
+}
+
+TEST(Pipeline, LabelsOnTheBlackboardMatchTheModelLibrary) {
+  const auto& run = shortYardRun();
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  std::map<int64_t, beft::geometry_percepts_t> geometry;
+  std::map<int64_t, beft::visual_percepts_t> vision;
+  std::map<int64_t, beft::acoustic_percepts_t> audio;
+  std::map<std::string, std::string> label_of, acoustic_label_of;
+  for (const auto& g : messagesOn<beft::geometry_percepts_t>(run.log, "GEOMETRY")) geometry[g.tick] = g;
+  for (const auto& v : messagesOn<beft::visual_percepts_t>(run.log, "VISION")) vision[v.tick] = v;
+  for (const auto& a : messagesOn<beft::acoustic_percepts_t>(run.log, "AUDIO")) audio[a.tick] = a;
+  for (const auto& gt : messagesOn<beft::scene_objects_t>(run.log, "GT_OBJECTS"))
+    for (const auto& o : gt.objects) label_of[o.id] = o.label, acoustic_label_of[o.id] = o.acoustic_label;
+  int visual_checked = 0, acoustic_checked = 0;
+  for (const auto& labels : messagesOn<beft::labels_t>(run.log, "LABELS_VISUAL")) {
+    if (!geometry.count(labels.tick) || !vision.count(labels.tick)) continue;
+    for (const auto& object : labels.objects) {
+      double d = -1, occlusion = -1;
+      for (const auto& p : geometry[labels.tick].percepts) if (p.object_id == object.object_id) d = p.distance;
+      for (const auto& p : vision[labels.tick].percepts) if (p.object_id == object.object_id) occlusion = p.occlusion;
+      ASSERT_GE(d, 0);
+      ASSERT_GE(occlusion, 0);
+      const double v_p = beft::model::visualPerceptibility(d, occlusion);  // eq. 1
+      EXPECT_NEAR(object.perceptibility, v_p, 1e-9) << object.object_id;
+      for (int j = 0; j < object.num_categories; ++j)
+        EXPECT_NEAR(object.confidence[j],
+                    beft::model::labelConfidence(object.categories[j] == label_of[object.object_id], v_p), 1e-9);
+      ++visual_checked;
+    }
+  }
+  for (const auto& labels : messagesOn<beft::labels_t>(run.log, "LABELS_ACOUSTIC")) {
+    if (!geometry.count(labels.tick) || !audio.count(labels.tick)) continue;
+    for (const auto& object : labels.objects) {
+      double d = -1, alpha = 0, occlusion = -1;
+      for (const auto& p : geometry[labels.tick].percepts)
+        if (p.object_id == object.object_id) d = p.distance, alpha = p.azimuth;
+      for (const auto& p : audio[labels.tick].percepts) if (p.object_id == object.object_id) occlusion = p.occlusion;
+      ASSERT_GE(d, 0);
+      ASSERT_GE(occlusion, 0);
+      const double a_p = beft::model::acousticPerceptibility(d, occlusion, alpha);  // eq. 2
+      EXPECT_NEAR(object.perceptibility, a_p, 1e-9) << object.object_id;
+      for (int j = 0; j < object.num_categories; ++j)
+        EXPECT_NEAR(object.confidence[j],
+                    beft::model::labelConfidence(object.categories[j] == acoustic_label_of[object.object_id], a_p),
+                    1e-9);
+      ++acoustic_checked;
+    }
+  }
+  EXPECT_GT(visual_checked, kShortTicks);
+  EXPECT_GT(acoustic_checked, kShortTicks);
+}
+
+TEST(Replay, FusionAndVisualLabelsMatchTheRecordedRunExactly) {
+  const auto& run = shortYardRun();
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  for (const char* module : {"fusion", "visual_labels"}) {
+    const auto replay = runCommand(binDir() + "/beft-replay " + run.dir + "/run.lcmlog --module " + module, 120);
+    EXPECT_EQ(replay.exit_code, 0) << replay.output;
+    EXPECT_NE(replay.output.find("EXACT MATCH"), std::string::npos) << replay.output;
+  }
+}
+
+TEST(Replay, AChangedParameterShowsTheDifference) {
+  const auto& run = shortYardRun();
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  const auto replay = runCommand(
+      binDir() + "/beft-replay " + run.dir + "/run.lcmlog --module visual_labels --param label_gain=10", 120);
+  EXPECT_EQ(replay.exit_code, 3) << replay.output;
+  EXPECT_NE(replay.output.find("DIFFERENCES FOUND"), std::string::npos) << replay.output;
+  EXPECT_NE(replay.output.find("first difference on LABELS_VISUAL"), std::string::npos) << replay.output;
+  EXPECT_NE(replay.output.find("confidence"), std::string::npos) << replay.output;
+}
+
+TEST(Replay, LcmLogplayerPlaysTheLogIntoASubscriberThatHearsEveryChannel) {
+  const auto& run = shortYardRun();
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  std::set<std::string> logged;
+  for (const auto& event : run.log) logged.insert(event.channel);
+  const int port = 23000 + getpid() % 5000;
+  const std::string url = "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=8388608";
+  lcm::LCM lcm(url);
+  ASSERT_TRUE(lcm.good());
+  std::set<std::string> heard;
+  struct Handler {
+    std::set<std::string>* heard;
+    void on(const lcm::ReceiveBuffer*, const std::string& channel) { heard->insert(channel); }
+  } handler{&heard};
+  lcm.subscribe(".*", &Handler::on, &handler)->setQueueCapacity(100000);
+  const pid_t player = fork();
+  if (player == 0) {
+    execlp("lcm-logplayer", "lcm-logplayer", "--speed=2", ("--lcm-url=" + url).c_str(),
+           (run.dir + "/run.lcmlog").c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (heard.size() < logged.size() && std::chrono::steady_clock::now() < deadline) lcm.handleTimeout(50);
+  kill(player, SIGTERM);
+  waitpid(player, nullptr, 0);
+  EXPECT_EQ(heard, logged);
+  EXPECT_GE(logged.size(), 15u);
+}
+
+TEST(Launch, AnExpertStartedByHandLaterCompletesTheRun) {
+  const std::string dir = makeTempDir("except_vision");
+  // The run starts without vision; the test starts it by hand a few seconds later.
+  const pid_t runner = fork();
+  if (runner == 0) {
+    const std::string command = binDir() + "/beft-run " + sourceDir() + "/scenarios/yard.xml --max-ticks 20 "
+                                "--no-report --except vision --out " + dir + " > " + dir + "/run_output.txt 2>&1";
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::string url;
+  for (int i = 0; i < 100 && url.empty(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    const auto out = runCommand("cat " + dir + "/run_output.txt", 5).output;
+    const auto line = lineAfter(out, "[run] LCM ");
+    if (!line.empty()) url = line.substr(0, line.find(';'));
+  }
+  ASSERT_FALSE(url.empty());
+  std::this_thread::sleep_for(std::chrono::seconds(3));
+  const auto vision = runCommand(binDir() + "/beft-vision --lcm-url '" + url + "'", 120);
+  int status = 0;
+  waitpid(runner, &status, 0);
+  const auto out = runCommand("cat " + dir + "/run_output.txt", 5).output;
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out << "\nvision:\n" << vision.output;
+  EXPECT_NE(out.find("not starting vision (--except)"), std::string::npos) << out;
+  int vision_done = 0;
+  for (const auto& d : messagesOn<beft::done_t>(readLog(dir + "/run.lcmlog"), "DONE")) vision_done += d.expert == "vision";
+  EXPECT_GE(vision_done, 20);
+}
