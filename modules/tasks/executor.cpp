@@ -144,8 +144,6 @@ Executor::TickOutput Executor::tick(TaskStack& stack, int64_t utime) {
     }
 
     if (!finish) break;
-    out.log.push_back(std::string(finish->first == Status::Done ? "done " : "FAILED ") +
-                      std::to_string(task.id) + " " + describe(task) + ": " + finish->second);
     stack.finish(task.id, finish->first, finish->second);
     runs_.erase(task.id);
     out.command = hold(utime);

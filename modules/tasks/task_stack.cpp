@@ -91,12 +91,13 @@ int64_t TaskStack::push(Task task, int64_t command_id) {
   task.id = next_id_++;
   std::size_t position;
   if (parent_index >= 0) {
-    // Directly above the parent and the sub-tasks stacked on it, then above
-    // anything of lower priority.
+    // Directly above the parent, below its earlier sub-tasks of higher or
+    // equal priority: siblings run in the order they were pushed.
     task.priority = std::max(task.priority, tasks_[parent_index].priority);
     int above = parent_index;
-    while (above > 0 && isDescendant(tasks_[above - 1].id, task.parent)) --above;
-    while (above > 0 && tasks_[above - 1].priority < task.priority) --above;
+    while (above > 0 && isDescendant(tasks_[above - 1].id, task.parent) &&
+           tasks_[above - 1].priority < task.priority)
+      --above;
     position = static_cast<std::size_t>(above);
   } else {
     // Below every task of higher or equal priority.
@@ -163,6 +164,10 @@ bool TaskStack::pop(int64_t command_id) {
 void TaskStack::clear(int64_t command_id) {
   for (const auto& task : tasks_) emit(TaskEvent::Kind::Removed, task, command_id, "cleared");
   tasks_.clear();
+}
+
+void TaskStack::reject(const Task& task, const std::string& reason, int64_t command_id) {
+  emit(TaskEvent::Kind::Rejected, task, command_id, reason);
 }
 
 void TaskStack::updateStatuses(int64_t command_id) {

@@ -1,9 +1,11 @@
 // The task stack (paper section 2.3): tasks ordered by priority, top first.
 // A task of higher priority than the top interrupts it (the top is suspended
 // and resumes once the new one is gone); a task of equal or lower priority
-// goes below every task of higher or equal priority. A sub-task (parent set)
-// goes directly above its parent and its parent's other sub-tasks, so a
-// composite task's children run before it resumes. Plain logic, no LCM.
+// goes below every task of higher or equal priority, so equals run in the
+// order pushed. A sub-task (parent set) runs at least at its parent's
+// priority and goes directly above its parent, below the parent's earlier
+// sub-tasks: a composite task pushes its steps in the order they run, and
+// resumes when they are all gone. Plain logic, no LCM.
 #pragma once
 
 #include <cstddef>
@@ -53,6 +55,8 @@ class TaskStack {
   bool pop(int64_t command_id = 0);
   // Cancels every task.
   void clear(int64_t command_id = 0);
+  // Records that a command could not be applied (a Rejected event).
+  void reject(const Task& task, const std::string& reason, int64_t command_id = 0);
 
   const std::vector<Task>& tasks() const { return tasks_; }  // top first
   bool empty() const { return tasks_.empty(); }

@@ -85,23 +85,26 @@ TEST(TaskStack, EqualOrLowerPriorityGoesBelowTheHigherOnes) {
   EXPECT_EQ(stack.find(b)->status, Status::Pending);    // it never ran
 }
 
-TEST(TaskStack, SubTasksGoAboveTheirParentAndRunFirst) {
+TEST(TaskStack, SubTasksGoAboveTheirParentAndRunInTheOrderPushed) {
   TaskStack stack;
   const int64_t other = stack.push(make("goto", 5));
   const int64_t verify = stack.push(make("verify", 20));
   const int64_t go = stack.push(make("goto", 0, verify));
   const int64_t look = stack.push(make("look_at", 0, verify));
-  EXPECT_EQ(ids(stack), (std::vector<int64_t>{look, go, verify, other}));
+  EXPECT_EQ(ids(stack), (std::vector<int64_t>{go, look, verify, other}));
   EXPECT_EQ(stack.find(go)->priority, 20) << "a sub-task runs at least at its parent's priority";
   EXPECT_EQ(stack.find(verify)->status, Status::Suspended);
   EXPECT_TRUE(stack.hasSubTasks(verify));
   EXPECT_TRUE(stack.isDescendant(look, verify));
   EXPECT_FALSE(stack.isDescendant(other, verify));
 
-  // A grandchild goes above its parent, still under the higher-priority reflex.
+  // A grandchild goes directly above its parent; the reflex stays on top.
   const int64_t reflex = stack.push(make("look_at", 100));
-  const int64_t grandchild = stack.push(make("turn_head", 0, look));
-  EXPECT_EQ(ids(stack), (std::vector<int64_t>{reflex, grandchild, look, go, verify, other}));
+  const int64_t grandchild = stack.push(make("turn_head", 0, go));
+  EXPECT_EQ(ids(stack), (std::vector<int64_t>{reflex, grandchild, go, look, verify, other}));
+  // An urgent sub-task goes above its lower-priority siblings, not above the reflex.
+  const int64_t urgent = stack.push(make("turn", 50, verify));
+  EXPECT_EQ(ids(stack), (std::vector<int64_t>{reflex, urgent, grandchild, go, look, verify, other}));
 }
 
 TEST(TaskStack, DoneSubTasksLetTheParentResume) {

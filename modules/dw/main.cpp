@@ -1,0 +1,8 @@
+// beft-dw: the dynamic-weighting expert process (see --help).
+#include "dw_expert.hpp"
+#include "run_expert.hpp"
+
+int main(int argc, char** argv) {
+  beft::dw::DwExpert expert;
+  return beft::expert::runExpertMain(argc, argv, expert);
+}

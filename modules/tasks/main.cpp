@@ -1,0 +1,8 @@
+// beft-tasks: the task stack and executor process (see --help).
+#include "run_expert.hpp"
+#include "tasks_expert.hpp"
+
+int main(int argc, char** argv) {
+  beft::tasks::TasksExpert expert;
+  return beft::expert::runExpertMain(argc, argv, expert);
+}
