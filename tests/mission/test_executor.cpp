@@ -55,13 +55,13 @@ class FakeRobot {
   }
   static double limited(double delta, double max) { return std::clamp(delta, -max, max); }
 
-  beft::robot_state_t state;
+  beft::robot_state_t state{};
   std::vector<Disc> obstacles;
 };
 
 beft::plan_result_t answer(const beft::plan_request_t& request, std::vector<std::array<double, 3>> points,
                            bool success = true) {
-  beft::plan_result_t result;
+  beft::plan_result_t result{};
   result.utime = request.utime;
   result.request_id = request.request_id;
   result.success = success;
@@ -70,7 +70,7 @@ beft::plan_result_t answer(const beft::plan_request_t& request, std::vector<std:
   result.planning_time = 0.001;
   result.message = success ? "" : "goal is inside an obstacle";
   for (const auto& p : points) {
-    beft::waypoint_t w;
+    beft::waypoint_t w{};
     w.x = p[0];
     w.y = p[1];
     w.yaw = p[2];

@@ -93,7 +93,7 @@ TEST(TaskCli, FormatsTheStackTopFirst) {
   EXPECT_NE(text.find("suspended"), std::string::npos);
   EXPECT_NE(text.find("turn-to reflex"), std::string::npos);
 
-  beft::task_stack_t empty;
+  beft::task_stack_t empty{};
   empty.utime = 0;
   empty.tick = 0;
   empty.num_tasks = 0;

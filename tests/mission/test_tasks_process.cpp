@@ -45,7 +45,7 @@ using Clock = std::chrono::steady_clock;
 class Child {
  public:
   Child(const std::vector<std::string>& args, const std::string& output_file) : output_file_(output_file) {
-    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_t actions{};
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, 1, output_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
@@ -169,7 +169,7 @@ class TasksProcess : public ::testing::Test {
     const int64_t utime = tick_ * 100000;
     state_.utime = utime;
     state_.tick = tick_;
-    fire_t fire;
+    fire_t fire{};
     fire.utime = utime;
     fire.expert = "tasks";
     fire.transition = "t_tasks";
@@ -205,7 +205,7 @@ class TasksProcess : public ::testing::Test {
   std::string url_;
   std::unique_ptr<lcm::LCM> lcm_;
   std::unique_ptr<Child> tasks_;
-  robot_state_t state_;
+  robot_state_t state_{};
   int64_t tick_ = 0;
   int cli_runs_ = 0;
   std::map<int64_t, done_t> done_;
@@ -224,7 +224,7 @@ TEST_F(TasksProcess, PushListAndClearAgainstARunningStack) {
 
   // The planner service: a path via (4, 1).
   planner_ = [this](const plan_request_t& r) {
-    plan_result_t result;
+    plan_result_t result{};
     result.utime = r.utime;
     result.request_id = r.request_id;
     result.success = true;
@@ -232,7 +232,7 @@ TEST_F(TasksProcess, PushListAndClearAgainstARunningStack) {
     result.length = 10;
     result.planning_time = 0.001;
     for (auto p : std::vector<std::array<double, 3>>{{r.start_x, r.start_y, 0}, {4, 1, 90}, {r.goal_x, r.goal_y, r.goal_yaw}}) {
-      waypoint_t w;
+      waypoint_t w{};
       w.x = p[0];
       w.y = p[1];
       w.yaw = p[2];
