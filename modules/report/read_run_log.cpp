@@ -1,0 +1,212 @@
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <beft/dynamic_weights_t.hpp>
+#include <beft/hypotheses_t.hpp>
+#include <beft/obstacle_map_t.hpp>
+#include <beft/robot_state_t.hpp>
+#include <beft/run_status_t.hpp>
+#include <beft/scene_objects_t.hpp>
+#include <beft/task_stack_t.hpp>
+
+#include "channels.hpp"
+#include "run_record.hpp"
+
+namespace beft::report {
+namespace {
+
+constexpr double kTrailStep = 0.05;  // a moving object's trail gets a point every 5 cm
+
+double seconds(int64_t utime) { return utime * 1e-6; }
+double secondsOrNever(int64_t utime) { return utime < 0 ? -1.0 : seconds(utime); }
+
+template <typename Message>
+bool decode(const lcm::LogEvent& event, Message& message) {
+  return event.datalen >= 0 && message.decode(event.data, 0, event.datalen) == event.datalen;
+}
+
+TruthObject toTruth(const scene_object_t& object) {
+  TruthObject truth;
+  truth.id = object.id;
+  truth.label = object.label;
+  truth.x = object.x;
+  truth.y = object.y;
+  truth.yaw = object.yaw;
+  switch (object.shape) {
+    case scene_object_t::SHAPE_BOX: truth.shape = TruthObject::Shape::Box; break;
+    case scene_object_t::SHAPE_CYLINDER: truth.shape = TruthObject::Shape::Cylinder; break;
+    default: truth.shape = TruthObject::Shape::None; break;
+  }
+  truth.size_x = object.size_x;
+  truth.size_y = object.size_y;
+  truth.radius = object.radius;
+  truth.acoustic = object.has_acoustic;
+  return truth;
+}
+
+class LogReader {
+ public:
+  explicit LogReader(RunRecord& record) : record_(record) {}
+
+  void add(const lcm::LogEvent& event) {
+    if (record_.events == 0) record_.first_timestamp_us = event.timestamp;
+    record_.last_timestamp_us = std::max(record_.last_timestamp_us, event.timestamp);
+    ++record_.events;
+    const std::string& channel = event.channel;
+    bool ok = true;
+    if (channel == channels::kGroundTruth) ok = addGroundTruth(event);
+    else if (channel == channels::kRobotState) ok = addRobotState(event);
+    else if (channel == channels::kHypotheses) ok = addHypotheses(event);
+    else if (channel == channels::kDynamicWeights) ok = addWeights(event);
+    else if (channel == channels::kTaskStack) ok = addTaskStack(event);
+    else if (channel == channels::kObstacleMap) ok = addObstacleMap(event);
+    else if (channel == channels::kStopRequest) ok = addStatus(event, record_.stop_reason);
+    else if (channel == channels::kRunStatus) ok = addStatus(event, record_.run_status);
+    if (!ok) ++record_.undecodable[channel];
+  }
+
+  void finish() {
+    // Ticks in order, the last message of a tick wins (a re-sent tick).
+    std::stable_sort(record_.robot.begin(), record_.robot.end(),
+                     [](const RobotSample& a, const RobotSample& b) { return a.tick < b.tick; });
+    std::vector<RobotSample> unique;
+    for (const auto& sample : record_.robot) {
+      if (!unique.empty() && unique.back().tick == sample.tick) unique.back() = sample;
+      else unique.push_back(sample);
+    }
+    record_.robot.swap(unique);
+  }
+
+ private:
+  bool addGroundTruth(const lcm::LogEvent& event) {
+    scene_objects_t scene;
+    if (!decode(event, scene)) return false;
+    record_.scenario_name = scene.scenario;
+    record_.world_width = scene.world_width;
+    record_.world_height = scene.world_height;
+    record_.dt = scene.dt;
+    record_.duration = scene.duration;
+    record_.categories = scene.categories;
+    record_.truth.clear();
+    for (const auto& object : scene.objects) {
+      record_.truth.push_back(toTruth(object));
+      auto& trail = record_.trails[object.id];
+      if (trail.empty() || std::hypot(trail.back().first - object.x, trail.back().second - object.y) >= kTrailStep)
+        trail.emplace_back(object.x, object.y);
+    }
+    return true;
+  }
+
+  bool addRobotState(const lcm::LogEvent& event) {
+    robot_state_t state;
+    if (!decode(event, state)) return false;
+    RobotSample sample;
+    sample.t = seconds(state.utime);
+    sample.tick = state.tick;
+    sample.x = state.x;
+    sample.y = state.y;
+    sample.yaw = state.yaw;
+    sample.head_yaw = state.head_yaw;
+    sample.path_length = state.path_length;
+    sample.collisions = state.collisions;
+    record_.robot.push_back(sample);
+    record_.robot_radius = state.radius;
+    return true;
+  }
+
+  bool addHypotheses(const lcm::LogEvent& event) {
+    hypotheses_t message;
+    if (!decode(event, message)) return false;
+    HypothesesSample sample;
+    sample.t = seconds(message.utime);
+    for (const auto& h : message.hypotheses) {
+      HypothesisState state;
+      state.object_id = h.object_id;
+      state.x = h.x;
+      state.y = h.y;
+      state.best_category = h.best_category;
+      state.confidence = h.confidence;
+      state.seen = h.seen;
+      state.heard = h.heard;
+      state.verified = h.verified;
+      state.falsified = h.falsified;
+      state.seen_as = h.seen_as;
+      state.heard_as = h.heard_as;
+      state.first_heard_s = secondsOrNever(h.first_heard_utime);
+      state.first_seen_s = secondsOrNever(h.first_seen_utime);
+      state.settled_s = secondsOrNever(h.settled_utime);
+      sample.hypotheses.push_back(std::move(state));
+    }
+    record_.hypotheses.push_back(std::move(sample));
+    return true;
+  }
+
+  bool addWeights(const lcm::LogEvent& event) {
+    dynamic_weights_t message;
+    if (!decode(event, message)) return false;
+    WeightSample sample;
+    sample.t = seconds(message.utime);
+    sample.viewing_direction = message.viewing_direction;
+    sample.current_task = message.current_task;
+    sample.attended_object = message.attended_object;
+    for (const auto& w : message.weights) sample.weights[w.object_id] = w.weight;
+    record_.weights.push_back(std::move(sample));
+    return true;
+  }
+
+  bool addTaskStack(const lcm::LogEvent& event) {
+    task_stack_t message;
+    if (!decode(event, message)) return false;
+    TaskSample sample;
+    sample.t = seconds(message.utime);
+    if (!message.tasks.empty()) {
+      const auto& top = message.tasks.front();
+      sample.top = top.kind + (top.object_id.empty() ? "" : " " + top.object_id);
+    }
+    record_.tasks.push_back(std::move(sample));
+    return true;
+  }
+
+  bool addObstacleMap(const lcm::LogEvent& event) {
+    obstacle_map_t message;
+    if (!decode(event, message)) return false;
+    try {
+      record_.obstacle_map = planners::decodeObstacleMap(message);
+    } catch (const planners::ObstacleMapError&) {
+      return false;
+    }
+    return true;
+  }
+
+  bool addStatus(const lcm::LogEvent& event, std::string& into) {
+    run_status_t status;
+    if (!decode(event, status)) return false;
+    into = status.message;
+    return true;
+  }
+
+  RunRecord& record_;
+};
+
+}  // namespace
+
+RunRecord readRunLog(const std::string& path) {
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe) throw ReportError(path + ": cannot open the log file");
+  }
+  lcm::LogFile log(path, "r");
+  if (!log.good()) throw ReportError(path + ": not a readable LCM log");
+  RunRecord record;
+  record.log_path = path;
+  LogReader reader(record);
+  while (const lcm::LogEvent* event = log.readNextEvent()) reader.add(*event);
+  reader.finish();
+  if (record.events == 0) throw ReportError(path + ": the log holds no event (not an LCM log, or empty)");
+  return record;
+}
+
+}  // namespace beft::report
