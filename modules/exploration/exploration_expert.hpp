@@ -1,0 +1,62 @@
+// The exploration expert as a process (high level, fired once per tick after
+// dynamic weighting): stores HYPOTHESES, OBSTACLE_MAP, ROBOT_STATE,
+// TASK_STACK, DYNAMIC_WEIGHTS and GT_OBJECTS (for the scenario's duration
+// only: never positions or labels), runs the Explorer, and publishes its task
+// changes on TASK_COMMAND and, when the mission is over, STOP_REQUEST.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <beft/dynamic_weights_t.hpp>
+#include <beft/hypotheses_t.hpp>
+#include <beft/obstacle_map_t.hpp>
+#include <beft/robot_state_t.hpp>
+#include <beft/scene_objects_t.hpp>
+#include <beft/task_command_t.hpp>
+#include <beft/task_stack_t.hpp>
+
+#include "explorer.hpp"
+#include "expert.hpp"
+#include "tick_channel.hpp"
+
+namespace beft::exploration {
+
+// What the Explorer sees of one hypothesis: hypothesis_t with the DW weight.
+HypothesisView viewOf(const hypothesis_t& hypothesis, const dynamic_weights_t* weights);
+// A request of the Explorer as a TASK_COMMAND (command_id and utime not set).
+task_command_t commandOf(const TaskRequest& request, const std::string& origin);
+
+class ExplorationExpert : public expert::Expert {
+ public:
+  std::string name() const override { return "exploration"; }
+  std::string description() const override;
+  std::vector<expert::ChannelSpec> reads() const override;
+  std::vector<expert::ChannelSpec> writes() const override;
+  std::vector<std::vector<std::string>> parameterHelp() const override;
+  void onStartUp(const expert::Parameters& parameters) override;
+  bool onMessage(const std::string& channel, const void* data, int size) override;
+  bool inputsReady(const expert::Firing& firing) const override;
+  expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
+
+ private:
+  Observation observe(const expert::Firing& firing);
+
+  ExplorerParameters parameters_;
+  std::unique_ptr<Explorer> explorer_;
+  int64_t next_command_id_ = 1;
+  bool publish_stop_ = true;
+  int64_t map_utime_ = -1;  // the obstacle map last decoded
+  std::shared_ptr<const planners::ObstacleCells> map_;
+  bool map_warned_ = false;
+
+  expert::TickChannel<robot_state_t> robot_;
+  expert::TickChannel<hypotheses_t> hypotheses_{4};
+  expert::TickChannel<dynamic_weights_t> weights_{4};
+  expert::TickChannel<obstacle_map_t> map_messages_{2};
+  expert::TickChannel<task_stack_t> stack_{4};
+  expert::TickChannel<scene_objects_t> scene_{2};
+};
+
+}  // namespace beft::exploration

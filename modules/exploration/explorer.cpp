@@ -1,0 +1,450 @@
+#include "explorer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace beft::exploration {
+namespace {
+
+const char* kVerifyKind = "verify";
+const char* kExploreKind = "explore";
+
+std::string fixed(double value, int decimals = 1) {
+  char buffer[48];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+std::string at(double x, double y) { return "(" + fixed(x) + ", " + fixed(y) + ")"; }
+
+double wrapDeg(double deg) {
+  deg = std::fmod(deg + 180.0, 360.0);
+  if (deg < 0) deg += 360.0;
+  return deg - 180.0;
+}
+
+bool contains(const std::vector<int64_t>& ids, int64_t id) {
+  return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+
+TaskRequest subTask(const std::string& kind, double x, double y, double yaw, const std::string& object_id,
+                    const std::string& note) {
+  TaskRequest request;
+  request.type = TaskRequest::Type::Push;
+  request.kind = kind;
+  request.x = x;
+  request.y = y;
+  request.yaw = yaw;
+  request.object_id = object_id;
+  request.note = note;
+  return request;
+}
+
+}  // namespace
+
+Explorer::Explorer(ExplorerParameters parameters)
+    : parameters_(std::move(parameters)), memory_(parameters_.frontiers) {}
+
+Explorer::Phase Explorer::phase() const {
+  if (stopped_) return Phase::Stopped;
+  if (!job_) return Phase::Idle;
+  switch (job_->kind) {
+    case JobKind::LookAround: return Phase::LookAround;
+    case JobKind::Verify:
+    case JobKind::Inspect: return Phase::Verify;
+    case JobKind::Explore: return Phase::Explore;
+  }
+  return Phase::Idle;
+}
+
+int Explorer::attempts(const std::string& object_id) const {
+  const auto it = targets_.find(object_id);
+  return it == targets_.end() ? 0 : it->second.attempts;
+}
+
+bool Explorer::givenUp(const std::string& object_id) const {
+  const auto it = targets_.find(object_id);
+  return it != targets_.end() && it->second.given_up;
+}
+
+const std::vector<Point>& Explorer::triedViewpoints(const std::string& object_id) const {
+  static const std::vector<Point> none;
+  const auto it = targets_.find(object_id);
+  return it == targets_.end() ? none : it->second.tried;
+}
+
+bool Explorer::wantsVerify(const HypothesisView& h) const { return h.heard && !h.verified && !h.falsified; }
+
+bool Explorer::wantsInspect(const HypothesisView& h) const {
+  return parameters_.inspect_glimpsed && h.glimpsed && !h.heard && !h.seen &&
+         h.person_confidence >= h.confidence - parameters_.inspect_person_margin;
+}
+
+const HypothesisView* Explorer::findHypothesis(const Observation& o, const std::string& id) const {
+  for (const auto& h : o.hypotheses)
+    if (h.object_id == id) return &h;
+  return nullptr;
+}
+
+const KnownMap* Explorer::knownMap(const Observation& o) {
+  if (!o.map) return nullptr;
+  const double radius = o.robot_radius + parameters_.safety_margin_m;
+  if (!map_ || map_version_ != o.map_version || map_radius_ != radius) {
+    map_ = std::make_unique<KnownMap>(*o.map, radius);
+    map_version_ = o.map_version;
+    map_radius_ = radius;
+  }
+  return map_.get();
+}
+
+void Explorer::updateTrail(const Observation& o) {
+  const auto& stood = memory_.stood();
+  if (stood.empty() ||
+      std::hypot(stood.back().x - o.robot_x, stood.back().y - o.robot_y) >= parameters_.stood_spacing_m)
+    memory_.addStood({o.robot_x, o.robot_y});
+}
+
+Decision Explorer::step(const Observation& o) {
+  Decision d;
+  if (stopped_) {
+    d.stop = stop_reason_;
+    return d;
+  }
+  if (!o.robot_known) return d;  // nothing sensible to decide yet
+  updateTrail(o);
+  finishStrayComposites(o, d);
+  if (o.duration > 0 && o.t >= o.duration) {
+    if (job_) endJob(o, d, false, "the scenario's duration ended", true);
+    stop("the scenario's duration of " + fixed(o.duration) + " s is reached", d);
+    return d;
+  }
+  if (job_) followJob(o, d);
+  if (!job_ && !stopped_) decide(o, d);
+  return d;
+}
+
+// Composites of ours on the stack that no job follows (an earlier job's whose
+// finish was lost, or one whose push was confirmed too late): finish them.
+void Explorer::finishStrayComposites(const Observation& o, Decision& d) {
+  for (const auto& entry : o.stack) {
+    if (entry.origin != parameters_.origin || entry.parent != 0) continue;
+    if (job_ && entry.id == job_->composite_id) continue;
+    const bool awaited = job_ && job_->composite_id == 0 && !contains(known_task_ids_, entry.id);
+    if (awaited || contains(finish_sent_, entry.id)) continue;
+    TaskRequest finish;
+    finish.type = TaskRequest::Type::Finish;
+    finish.task_id = entry.id;
+    finish.success = false;
+    finish.reason = "no longer pursued";
+    d.requests.push_back(finish);
+    finish_sent_.push_back(entry.id);
+  }
+}
+
+void Explorer::followJob(const Observation& o, Decision& d) {
+  Job& job = *job_;
+  const std::string composite_kind = (job.kind == JobKind::Verify || job.kind == JobKind::Inspect) ? kVerifyKind : kExploreKind;
+
+  if (job.composite_id == 0) {  // waiting to learn the id the stack gave our composite
+    for (const auto& entry : o.stack) {
+      if (entry.origin == parameters_.origin && entry.parent == 0 && entry.kind == composite_kind &&
+          entry.object_id == job.object_id && !contains(known_task_ids_, entry.id)) {
+        job.composite_id = entry.id;
+        job.sub_tasks_pushed_t = o.t;
+        known_task_ids_.push_back(entry.id);
+        for (auto sub : job.sub_tasks) {
+          sub.parent = entry.id;
+          d.requests.push_back(sub);
+        }
+        return;
+      }
+    }
+    if (o.t - job.pushed_t > parameters_.confirm_timeout_s) {
+      if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect)
+        recordFailedAttempt(job.object_id, {job.x, job.y}, "its task never showed on the stack", d);
+      endJob(o, d, false, "the task never showed on the stack", false);
+    }
+    return;
+  }
+
+  const bool on_stack = std::any_of(o.stack.begin(), o.stack.end(),
+                                    [&](const StackEntry& e) { return e.id == job.composite_id; });
+  int sub_tasks = 0;
+  for (const auto& entry : o.stack)
+    if (entry.parent == job.composite_id) ++sub_tasks;
+
+  if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect) {
+    const HypothesisView* h = findHypothesis(o, job.object_id);
+    if (h != nullptr) {
+      const bool settled = job.kind == JobKind::Verify ? (h->verified || h->falsified) : (h->seen || h->heard);
+      if (settled) {
+        const std::string what = h->verified ? "verified" : h->falsified ? "falsified" : h->seen ? "seen" : "heard";
+        endJob(o, d, true, job.object_id + " " + what, on_stack);
+        return;
+      }
+    }
+    if (!on_stack) {  // the stack ended it: a sub-task failed, or it was removed
+      recordFailedAttempt(job.object_id, {job.x, job.y}, "the task ended before it was settled", d);
+      endJob(o, d, false, "the task ended on the stack before " + job.object_id + " was settled", false);
+      return;
+    }
+  } else if (!on_stack) {
+    if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
+    endJob(o, d, false, "the task ended on the stack", false);
+    return;
+  }
+
+  if (job.kind == JobKind::Explore) {
+    for (const auto& h : o.hypotheses) {
+      const auto it = targets_.find(h.object_id);
+      // Only a hypothesis not known to lack a viewpoint: those wait for this job to end.
+      const bool available = it == targets_.end() || (!it->second.given_up && !it->second.no_viewpoint);
+      if (wantsVerify(h) && available) {
+        endJob(o, d, true, "interrupted: " + h.object_id + " to verify", true);
+        return;
+      }
+    }
+  }
+
+  // The stack seen now has applied the sub-tasks pushed at an earlier step:
+  // none left means the robot got there and looked.
+  if (sub_tasks == 0 && o.t > job.sub_tasks_pushed_t) {
+    if (job.done_looking_t < 0) job.done_looking_t = o.t;
+    switch (job.kind) {
+      case JobKind::LookAround: endJob(o, d, true, "looked around", true); return;
+      case JobKind::Explore:
+        memory_.addVisited({job.x, job.y});
+        endJob(o, d, true, "frontier at " + at(job.x, job.y) + " reached", true);
+        return;
+      case JobKind::Verify:
+      case JobKind::Inspect:
+        if (o.t - job.done_looking_t >= parameters_.look_dwell_s) {
+          const std::string why = "still not settled after looking from " + at(job.x, job.y);
+          recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
+          endJob(o, d, false, why, true);
+        }
+        return;
+    }
+  }
+
+  if (o.t > job.deadline_t) {
+    if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect)
+      recordFailedAttempt(job.object_id, {job.x, job.y}, "timed out", d);
+    if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
+    endJob(o, d, false, "timed out", true);
+    return;
+  }
+
+  if (o.t - job.last_check_t >= parameters_.revalidate_period_s) {
+    job.last_check_t = o.t;
+    std::string why;
+    if (!jobStillValid(o, why)) {
+      if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect)
+        recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
+      if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
+      endJob(o, d, job.kind == JobKind::Explore, why, true);
+    }
+  }
+}
+
+bool Explorer::jobStillValid(const Observation& o, std::string& why) {
+  const Job& job = *job_;
+  const KnownMap* map = knownMap(o);
+  if (map == nullptr || job.kind == JobKind::LookAround) return true;
+  if (job.kind == JobKind::Explore) {
+    if (!frontierNear(*map, memory_, job.x, job.y, parameters_.frontier_check_radius_m)) {
+      why = "frontier at " + at(job.x, job.y) + " revealed";
+      return false;
+    }
+    return true;
+  }
+  const HypothesisView* h = findHypothesis(o, job.object_id);
+  if (h == nullptr) return true;
+  const double distance = std::hypot(h->x - job.x, h->y - job.y);
+  if (distance > parameters_.viewpoints.max_distance_m + 1.0 || distance < parameters_.viewpoints.min_distance_m * 0.5) {
+    why = job.object_id + " moved: " + fixed(distance) + " m from the viewpoint";
+    return false;
+  }
+  Cell cell;
+  if (!map->cellOf(job.x, job.y, cell) || !map->standable(cell.x, cell.y)) {
+    why = "the viewpoint " + at(job.x, job.y) + " is blocked on the map";
+    return false;
+  }
+  if (!inLineOfSight(*map, job.x, job.y, h->x, h->y, parameters_.viewpoints)) {
+    why = "an obstacle now blocks the view of " + job.object_id + " from " + at(job.x, job.y);
+    return false;
+  }
+  return true;
+}
+
+void Explorer::recordFailedAttempt(const std::string& object_id, const Point& viewpoint, const std::string& why,
+                                   Decision& d) {
+  TargetMemory& memory = targets_[object_id];
+  ++memory.attempts;
+  memory.tried.push_back(viewpoint);
+  const Job* job = job_ ? &*job_ : nullptr;
+  const int limit = job != nullptr && job->kind == JobKind::Inspect ? parameters_.inspect_attempts
+                                                                    : parameters_.verify_attempts;
+  d.log.push_back(object_id + ": attempt " + std::to_string(memory.attempts) + " failed (" + why + ")");
+  if (memory.attempts >= limit) {
+    memory.given_up = true;
+    d.log.push_back(object_id + ": given up after " + std::to_string(memory.attempts) + " viewpoints");
+  }
+}
+
+void Explorer::endJob(const Observation& o, Decision& d, bool success, const std::string& reason,
+                      bool finish_on_stack) {
+  (void)o;
+  Job& job = *job_;
+  if (finish_on_stack && job.composite_id != 0 && !contains(finish_sent_, job.composite_id)) {
+    TaskRequest finish;
+    finish.type = TaskRequest::Type::Finish;
+    finish.task_id = job.composite_id;
+    finish.success = success;
+    finish.reason = reason;
+    d.requests.push_back(finish);
+    finish_sent_.push_back(job.composite_id);
+  } else if (job.composite_id != 0) {
+    finish_sent_.push_back(job.composite_id);  // gone already: never finish it later
+  }
+  if (job.kind == JobKind::LookAround) looked_around_ = true;
+  d.log.push_back((success ? "done: " : "ended: ") + reason);
+  job_.reset();
+}
+
+void Explorer::stop(const std::string& reason, Decision& d) {
+  stopped_ = true;
+  stop_reason_ = reason;
+  d.stop = reason;
+  d.log.push_back("stop: " + reason);
+}
+
+void Explorer::startJob(Job job, const std::string& note, int32_t priority, const Observation& o, Decision& d) {
+  TaskRequest composite;
+  composite.type = TaskRequest::Type::Push;
+  composite.kind = (job.kind == JobKind::Verify || job.kind == JobKind::Inspect) ? kVerifyKind : kExploreKind;
+  composite.object_id = job.object_id;
+  composite.priority = priority;
+  composite.x = job.x;
+  composite.y = job.y;
+  composite.yaw = job.yaw;
+  composite.note = note;
+  d.requests.push_back(composite);
+  d.log.push_back("start: " + note);
+  job.pushed_t = o.t;
+  job.last_check_t = o.t;
+  job_ = std::move(job);
+}
+
+void Explorer::decide(const Observation& o, Decision& d) {
+  if (parameters_.look_around && !looked_around_) {
+    Job job;
+    job.kind = JobKind::LookAround;
+    job.x = o.robot_x;
+    job.y = o.robot_y;
+    job.yaw = o.robot_yaw;
+    // The stack runs the sub-task pushed last first: push the last turn first.
+    for (int quarter = 4; quarter >= 1; --quarter)
+      job.sub_tasks.push_back(subTask("turn", 0, 0, wrapDeg(o.robot_yaw + 90.0 * quarter), "",
+                                      "look around, " + std::to_string(90 * quarter) + " deg"));
+    job.deadline_t = o.t + parameters_.attempt_timeout_s;
+    startJob(std::move(job), "look around", parameters_.explore_priority, o, d);
+    return;
+  }
+  if (startTargetJob(o, d, false)) return;
+  if (startTargetJob(o, d, true)) return;
+  if (startExploreJob(o, d)) return;
+
+  if (!o.map) {
+    if (o.t >= parameters_.confirm_timeout_s * 3)
+      stop("no obstacle map has arrived: nothing can be explored", d);
+    return;
+  }
+  int waiting = 0, no_viewpoint = 0, verified = 0, falsified = 0, given_up = 0;
+  for (const auto& h : o.hypotheses) {
+    verified += h.verified ? 1 : 0;
+    falsified += h.falsified ? 1 : 0;
+    if (!wantsVerify(h) && !wantsInspect(h)) continue;
+    const auto it = targets_.find(h.object_id);
+    if (it != targets_.end() && it->second.given_up) ++given_up;
+    else if (it != targets_.end() && it->second.no_viewpoint) ++no_viewpoint;
+    else ++waiting;
+  }
+  if (waiting > 0) return;  // a hypothesis is due for another try soon
+  std::string reason = "nothing left to explore: " + std::to_string(o.hypotheses.size()) + " hypotheses (" +
+                       std::to_string(verified) + " verified, " + std::to_string(falsified) + " falsified";
+  if (given_up > 0) reason += ", " + std::to_string(given_up) + " given up";
+  if (no_viewpoint > 0) reason += ", " + std::to_string(no_viewpoint) + " without a reachable viewpoint";
+  reason += "), no reachable frontier left";
+  stop(reason, d);
+}
+
+bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
+  const KnownMap* map = knownMap(o);
+  if (map == nullptr) return false;
+  std::optional<TravelField> travel;
+  const HypothesisView* best = nullptr;
+  Viewpoint best_viewpoint;
+  double best_score = 0;
+  for (const auto& h : o.hypotheses) {
+    if (!(inspect ? wantsInspect(h) : wantsVerify(h))) continue;
+    TargetMemory& memory = targets_[h.object_id];
+    if (memory.given_up || o.t < memory.retry_t) continue;
+    if (!travel) travel.emplace(*map, o.robot_x, o.robot_y, o.robot_radius + parameters_.safety_margin_m + map->resolution());
+    const auto viewpoint = chooseViewpoint(*map, *travel, h.x, h.y, memory.tried, parameters_.viewpoints);
+    if (!viewpoint) {
+      if (!memory.no_viewpoint) d.log.push_back(h.object_id + ": no reachable viewpoint on the known map");
+      memory.no_viewpoint = true;
+      memory.retry_t = o.t + parameters_.retry_after_s;
+      continue;
+    }
+    memory.no_viewpoint = false;
+    const double score = viewpoint->cost - parameters_.weight_gain_m * std::max(0.0, h.weight);
+    if (best == nullptr || score < best_score) {
+      best = &h;
+      best_viewpoint = *viewpoint;
+      best_score = score;
+    }
+  }
+  if (best == nullptr) return false;
+  Job job;
+  job.kind = inspect ? JobKind::Inspect : JobKind::Verify;
+  job.object_id = best->object_id;
+  job.x = best_viewpoint.x;
+  job.y = best_viewpoint.y;
+  job.yaw = best_viewpoint.yaw;
+  // Run order goto, then look_at: pushed in reverse.
+  job.sub_tasks.push_back(subTask("look_at", best->x, best->y, 0, best->object_id, "look at " + best->object_id));
+  job.sub_tasks.push_back(subTask("goto", job.x, job.y, job.yaw, "",
+                                  "go to a viewpoint of " + best->object_id));
+  job.deadline_t = o.t + parameters_.attempt_timeout_s + best_viewpoint.travel_m / parameters_.nominal_speed;
+  const std::string note = std::string(inspect ? "inspect " : "verify ") + best->object_id + " at " +
+                           at(best->x, best->y) + " from " + at(job.x, job.y) + ", travel " +
+                           fixed(best_viewpoint.travel_m) + " m";
+  startJob(std::move(job), note, parameters_.verify_priority, o, d);
+  return true;
+}
+
+bool Explorer::startExploreJob(const Observation& o, Decision& d) {
+  const KnownMap* map = knownMap(o);
+  if (map == nullptr) return false;
+  const TravelField travel(*map, o.robot_x, o.robot_y, o.robot_radius + parameters_.safety_margin_m + map->resolution());
+  const auto goals = findFrontiers(*map, travel, memory_);
+  if (goals.empty()) return false;
+  const FrontierGoal& goal = goals.front();
+  Job job;
+  job.kind = JobKind::Explore;
+  job.x = goal.x;
+  job.y = goal.y;
+  job.yaw = goal.yaw;
+  job.sub_tasks.push_back(subTask("goto", goal.x, goal.y, goal.yaw, "", "go to the frontier"));
+  job.deadline_t = o.t + parameters_.attempt_timeout_s + goal.travel_m / parameters_.nominal_speed;
+  startJob(std::move(job),
+           "explore the frontier at " + at(goal.x, goal.y) + " (" + std::to_string(goal.size) + " cells, travel " +
+               fixed(goal.travel_m) + " m)",
+           parameters_.explore_priority, o, d);
+  return true;
+}
+
+}  // namespace beft::exploration

@@ -1,0 +1,185 @@
+// The exploration expert's logic (section "Active exploration"), one decision
+// per tick, without LCM.
+//
+// What it does, in order of preference:
+//  1. At the start, look around: turn the platform in place a full circle
+//     (a composite `explore` task with four `turn` sub-tasks).
+//  2. Verify: a hypothesis heard but not settled (neither verified nor
+//     falsified by vision) gets a viewpoint (viewpoints.hpp); a composite
+//     `verify` task with sub-tasks `goto x y yaw` (facing the target) then
+//     `look_at object` is pushed. When fusion settles the hypothesis the task
+//     is finished; when the robot got there, looked, and it is still unsettled,
+//     the attempt failed: another viewpoint is tried (tried ones are
+//     remembered), up to max_attempts, then the hypothesis is given up.
+//  3. Inspect: a hypothesis glimpsed (some pixels, too few to count as seen),
+//     never heard, that may be a person, is approached the same way.
+//  4. Explore: the nearest reachable frontier (frontiers.hpp), facing the
+//     unknown. A hypothesis to verify interrupts it.
+//  5. Stop: nothing to verify or inspect and no reachable frontier left, or
+//     the scenario's duration reached: a stop request with the reason.
+//
+// Hypotheses are chosen by DW weight (the sounds that matter first), then by
+// the cost of their best viewpoint. Only what the robot perceived is used:
+// hypotheses, the obstacle map, its own state and the task stack.
+// Deterministic: decisions depend only on the inputs and their order.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "frontiers.hpp"
+#include "known_map.hpp"
+#include "viewpoints.hpp"
+
+namespace beft::exploration {
+
+// A hypothesis as fusion publishes it, with what the choice needs.
+struct HypothesisView {
+  std::string object_id;
+  double x = 0, y = 0;               // estimated position [m]
+  bool seen = false, heard = false, verified = false, falsified = false;
+  bool glimpsed = false;             // perceived by vision without counting as seen
+  std::string best_category;
+  double confidence = 0;             // of best_category
+  double person_confidence = 0;      // fused confidence of `person`
+  double weight = -1;                // DW weight, -1 when DW has none
+};
+
+// One task of the stack (top first), as task_t carries it.
+struct StackEntry {
+  int64_t id = 0, parent = 0;
+  std::string kind, object_id, origin;
+  int8_t status = 0;  // task_t::STATUS_*
+};
+
+struct Observation {
+  double t = 0;                      // simulated time [s]
+  double duration = 0;               // scenario duration [s], <= 0 unknown
+  double robot_x = 0, robot_y = 0, robot_yaw = 0;  // [m], [deg]
+  double robot_radius = 0.35;        // [m]
+  bool robot_known = false;
+  std::vector<HypothesisView> hypotheses;
+  std::shared_ptr<const planners::ObstacleCells> map;  // null until one arrived
+  int64_t map_version = 0;           // changes when the map does
+  std::vector<StackEntry> stack;     // top first
+  bool stack_known = false;          // a TASK_STACK has arrived
+};
+
+// A change to the task stack, for TASK_COMMAND.
+struct TaskRequest {
+  enum class Type { Push, Finish } type = Type::Push;
+  // Push:
+  int64_t parent = 0;
+  std::string kind, object_id, note;
+  int32_t priority = 0;
+  double x = 0, y = 0, yaw = 0;
+  // Finish:
+  int64_t task_id = 0;
+  bool success = true;
+  std::string reason;
+};
+
+struct Decision {
+  std::vector<TaskRequest> requests;
+  std::optional<std::string> stop;   // the run should end, and why
+  std::vector<std::string> log;      // what was decided, for the process log
+};
+
+struct ExplorerParameters {
+  std::string origin = "exploration";  // name on the tasks it pushes
+  int32_t verify_priority = 20;
+  int32_t explore_priority = 10;
+  double safety_margin_m = 0.1;        // added to the robot radius for standable cells
+  bool look_around = true;             // turn a full circle at the start
+  int verify_attempts = 4;             // viewpoints per heard hypothesis before giving up
+  int inspect_attempts = 2;            // viewpoints per glimpsed hypothesis
+  bool inspect_glimpsed = true;
+  double inspect_person_margin = 0.02; // glimpsed: person within this of the best category
+  double look_dwell_s = 1.5;           // after looking, wait this long for fusion to settle
+  double confirm_timeout_s = 3.0;      // a pushed task must show on the stack within this
+  double attempt_timeout_s = 30.0;     // plus travel / speed
+  double nominal_speed = 0.5;          // [m/s] to scale the timeout
+  double retry_after_s = 5.0;          // a hypothesis without a viewpoint is reconsidered after this
+  double revalidate_period_s = 0.5;    // how often a running task's goal is re-checked
+  double weight_gain_m = 20.0;         // a DW weight of 1 is worth this much travel
+  double stood_spacing_m = 0.5;        // the robot's trail is sampled at this pitch
+  double frontier_check_radius_m = 1.0;  // an explore goal ends when no frontier is this near it
+  ViewpointParameters viewpoints;
+  FrontierParameters frontiers;
+};
+
+class Explorer {
+ public:
+  explicit Explorer(ExplorerParameters parameters = {});
+
+  Decision step(const Observation& observation);
+
+  // For tests and logs.
+  enum class Phase { LookAround, Verify, Explore, Idle, Stopped };
+  Phase phase() const;
+  bool stopped() const { return stopped_; }
+  int attempts(const std::string& object_id) const;
+  bool givenUp(const std::string& object_id) const;
+  const std::vector<Point>& triedViewpoints(const std::string& object_id) const;
+
+ private:
+  enum class JobKind { LookAround, Verify, Inspect, Explore };
+  struct Job {
+    JobKind kind = JobKind::Explore;
+    std::string object_id;           // verify / inspect
+    double x = 0, y = 0, yaw = 0;    // goal pose
+    std::vector<TaskRequest> sub_tasks;  // pushed once the composite shows, in this order
+    int64_t composite_id = 0;        // 0 until seen on the stack
+    double sub_tasks_pushed_t = -1;  // when the sub-tasks were pushed, -1 not yet
+    double pushed_t = 0;
+    double done_looking_t = -1;      // when the sub-tasks had all ended
+    double deadline_t = 0;
+    double last_check_t = 0;
+  };
+  struct TargetMemory {
+    int attempts = 0;                // viewpoints tried
+    std::vector<Point> tried;
+    bool given_up = false;
+    bool no_viewpoint = false;       // the last search found no viewpoint
+    double retry_t = -1;             // not reconsidered before this sim time
+  };
+
+  void updateTrail(const Observation& o);
+  bool wantsVerify(const HypothesisView& h) const;
+  bool wantsInspect(const HypothesisView& h) const;
+  const HypothesisView* findHypothesis(const Observation& o, const std::string& id) const;
+
+  void followJob(const Observation& o, Decision& d);
+  void endJob(const Observation& o, Decision& d, bool success, const std::string& reason, bool finish_on_stack);
+  void recordFailedAttempt(const std::string& object_id, const Point& viewpoint, const std::string& why, Decision& d);
+  void finishStrayComposites(const Observation& o, Decision& d);
+  bool jobStillValid(const Observation& o, std::string& why);
+
+  void decide(const Observation& o, Decision& d);
+  bool startTargetJob(const Observation& o, Decision& d, bool inspect);
+  bool startExploreJob(const Observation& o, Decision& d);
+  void startJob(Job job, const std::string& note, int32_t priority, const Observation& o, Decision& d);
+  void stop(const std::string& reason, Decision& d);
+
+  // Map views, rebuilt when the map or the robot's radius changes.
+  const KnownMap* knownMap(const Observation& o);
+
+  ExplorerParameters parameters_;
+  std::optional<Job> job_;
+  std::map<std::string, TargetMemory> targets_;
+  ExplorationMemory memory_;         // where the robot stood, frontier goals visited
+  std::vector<int64_t> known_task_ids_;  // composites of ours already matched to a job
+  std::vector<int64_t> finish_sent_;     // composites we asked the stack to finish
+  bool looked_around_ = false;
+  bool stopped_ = false;
+  std::string stop_reason_;
+  std::unique_ptr<KnownMap> map_;
+  int64_t map_version_ = -1;
+  double map_radius_ = -1;
+};
+
+}  // namespace beft::exploration

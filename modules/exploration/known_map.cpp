@@ -1,0 +1,97 @@
+#include "known_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <beft/obstacle_map_t.hpp>
+
+#include "octile_search.hpp"
+
+namespace beft::exploration {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+KnownMap::KnownMap(planners::ObstacleCells cells, double radius) : cells_(std::move(cells)) {
+  planners::GridMap occupied(cells_.width, cells_.height);
+  for (int y = 0; y < cells_.height; ++y)
+    for (int x = 0; x < cells_.width; ++x)
+      if (cells_.at(x, y) == obstacle_map_t::CELL_OCCUPIED) occupied.setBlocked(x, y);
+  const double radius_cells = std::max(0.0, radius / cells_.resolution);
+  standing_ = planners::inflate(occupied, radius_cells);
+  // The world's border is a wall: the robot's disc stays inside.
+  const int border = static_cast<int>(std::ceil(radius_cells - 0.5));
+  if (border > 0) {
+    standing_.fillRect(0, 0, cells_.width - 1, border - 1);
+    standing_.fillRect(0, cells_.height - border, cells_.width - 1, cells_.height - 1);
+    standing_.fillRect(0, 0, border - 1, cells_.height - 1);
+    standing_.fillRect(cells_.width - border, 0, cells_.width - 1, cells_.height - 1);
+  }
+}
+
+uint8_t KnownMap::at(int x, int y) const {
+  return inside(x, y) ? cells_.at(x, y) : static_cast<uint8_t>(obstacle_map_t::CELL_OCCUPIED);
+}
+
+bool KnownMap::cellOf(double wx, double wy, Cell& cell) const {
+  const double fx = (wx - cells_.origin_x) / cells_.resolution;
+  const double fy = (wy - cells_.origin_y) / cells_.resolution;
+  if (!std::isfinite(fx) || !std::isfinite(fy)) return false;
+  cell = {static_cast<int>(std::floor(fx)), static_cast<int>(std::floor(fy))};
+  return inside(cell.x, cell.y);
+}
+
+SightLine KnownMap::sight(double ax, double ay, double bx, double by, double ignore_near_b) const {
+  SightLine line;
+  const double length = std::hypot(bx - ax, by - ay);
+  const double step = cells_.resolution / 4;
+  const int samples = std::max(1, static_cast<int>(std::ceil(length / step)));
+  Cell previous{-1, -1};
+  for (int i = 0; i <= samples; ++i) {
+    const double s = static_cast<double>(i) / samples;
+    const double x = ax + (bx - ax) * s, y = ay + (by - ay) * s;
+    if ((1 - s) * length < ignore_near_b) break;  // the target's own footprint from here on
+    Cell cell;
+    if (!cellOf(x, y, cell)) return line;  // leaves the map: no sight
+    if (cell.x == previous.x && cell.y == previous.y) continue;
+    previous = cell;
+    const uint8_t value = cells_.at(cell.x, cell.y);
+    if (value == obstacle_map_t::CELL_OCCUPIED) return line;
+    if (value == obstacle_map_t::CELL_UNKNOWN) line.unknown_m += cells_.resolution;
+  }
+  line.clear = true;
+  return line;
+}
+
+TravelField::TravelField(const KnownMap& map, double robot_x, double robot_y, double escape_radius)
+    : width_(map.width()), height_(map.height()), resolution_(map.resolution()) {
+  Cell start;
+  if (!map.cellOf(robot_x, robot_y, start)) {
+    cells_.assign(static_cast<size_t>(width_) * height_, kInfinity);
+    return;
+  }
+  planners::GridMap grid = map.standing();
+  // Let a robot that stands (or believes it stands) too close to an obstacle
+  // drive away from it: free the inflated, not occupied, cells around it.
+  const int reach = static_cast<int>(std::ceil(escape_radius / resolution_));
+  for (int dy = -reach; dy <= reach; ++dy)
+    for (int dx = -reach; dx <= reach; ++dx) {
+      const int x = start.x + dx, y = start.y + dy;
+      if (std::hypot(dx, dy) * resolution_ <= escape_radius && map.inside(x, y) &&
+          map.at(x, y) != obstacle_map_t::CELL_OCCUPIED)
+        grid.setBlocked(x, y, false);
+    }
+  cells_ = planners::octileDistanceField(grid, {start.x, start.y});
+}
+
+double TravelField::at(int x, int y) const {
+  if (x < 0 || y < 0 || x >= width_ || y >= height_) return kInfinity;
+  return cells_[static_cast<size_t>(y) * width_ + x] * resolution_;
+}
+
+bool TravelField::reachable(int x, int y) const { return std::isfinite(at(x, y)); }
+
+}  // namespace beft::exploration

@@ -1,0 +1,71 @@
+// What the robot knows of the world, as the exploration expert uses it: the
+// obstacle map M_O (unknown / free / occupied cells), the cells a robot of a
+// given radius may stand on (obstacles grown by the radius; unknown counts as
+// free, the world's border as a wall), travel distances from the robot over
+// those cells, and straight lines of sight.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "grid_map.hpp"
+#include "obstacle_map_codec.hpp"
+
+namespace beft::exploration {
+
+struct Cell {
+  int x = 0, y = 0;  // column along +x, row along +y
+};
+
+// What a straight line from a viewpoint to a target crosses.
+struct SightLine {
+  bool clear = false;       // no occupied cell on it (away from the target itself)
+  double unknown_m = 0;     // length of it through unknown cells [m]
+};
+
+class KnownMap {
+ public:
+  // radius: robot footprint radius plus safety margin [m].
+  KnownMap(planners::ObstacleCells cells, double radius);
+
+  int width() const { return cells_.width; }
+  int height() const { return cells_.height; }
+  double resolution() const { return cells_.resolution; }
+  bool inside(int x, int y) const { return x >= 0 && y >= 0 && x < cells_.width && y < cells_.height; }
+  // CELL_* value; CELL_OCCUPIED outside the map.
+  uint8_t at(int x, int y) const;
+  bool cellOf(double wx, double wy, Cell& cell) const;  // false outside the map
+  double centreX(int x) const { return cells_.origin_x + (x + 0.5) * cells_.resolution; }
+  double centreY(int y) const { return cells_.origin_y + (y + 0.5) * cells_.resolution; }
+
+  // The robot may stand with its centre in this cell.
+  bool standable(int x, int y) const { return inside(x, y) && !standing_.blocked(x, y); }
+  const planners::GridMap& standing() const { return standing_; }
+
+  // Straight line from (ax, ay) to (bx, by); occupied cells closer than
+  // ignore_near_b to b (the target's own footprint) do not block it.
+  SightLine sight(double ax, double ay, double bx, double by, double ignore_near_b) const;
+
+ private:
+  planners::ObstacleCells cells_;
+  planners::GridMap standing_;  // 1 = the robot's centre may not be here
+};
+
+// Travel distances [m] from the robot to every cell over standable cells
+// (8-connected, no corner cutting); +infinity where unreachable. A robot too
+// close to an obstacle may still leave: cells within escape_radius of it count
+// as standable for this search.
+class TravelField {
+ public:
+  TravelField(const KnownMap& map, double robot_x, double robot_y, double escape_radius);
+  double at(int x, int y) const;  // +infinity outside or unreachable
+  bool reachable(int x, int y) const;
+
+ private:
+  int width_ = 0, height_ = 0;
+  double resolution_ = 0.1;
+  std::vector<double> cells_;  // [cells] as the search returns them
+};
+
+}  // namespace beft::exploration

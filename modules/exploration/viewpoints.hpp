@@ -1,0 +1,51 @@
+// Choosing where to look at a hypothesis from (section "Active exploration"):
+// a pose from which the known obstacle map says the target would be in line
+// of sight, that the robot can stand on and reach, not too close nor too far,
+// preferring short travel and lines of sight through known free space.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "known_map.hpp"
+
+namespace beft::exploration {
+
+struct ViewpointParameters {
+  double min_distance_m = 1.5;     // closest viewpoint to the target [m]
+  double max_distance_m = 6.0;     // farthest (well within camera range) [m]
+  double preferred_distance_m = 4.0;  // beyond this each metre costs distance_cost
+  double distance_cost = 0.5;      // [m of travel per m beyond preferred]
+  double candidate_spacing_m = 0.25;  // viewpoints are tried on a grid of this pitch
+  double target_radius_m = 0.3;    // half width of the target: the sight lines to its
+                                   // two sides must be clear too
+  double target_clearance_m = 0.5; // occupied cells this close to the target are its own
+  double unknown_cost = 2.0;       // [m of travel per m of sight line through unknown cells]
+  double tried_radius_m = 1.0;     // a viewpoint this close to a tried one is not tried again
+};
+
+struct Viewpoint {
+  double x = 0, y = 0;    // [m]
+  double yaw = 0;         // facing the target [deg]
+  double travel_m = 0;    // travel from the robot on the known map [m]
+  double cost = 0;        // travel plus penalties [m]
+};
+
+struct Point {
+  double x = 0, y = 0;
+};
+
+// True when the target would be in line of sight from (x, y): the centre line
+// and the lines to both sides of the target cross no occupied cell.
+bool inLineOfSight(const KnownMap& map, double x, double y, double target_x, double target_y,
+                   const ViewpointParameters& parameters, double* unknown_m = nullptr);
+
+// The cheapest viewpoint, or none. tried: viewpoints already used for this target.
+std::optional<Viewpoint> chooseViewpoint(const KnownMap& map, const TravelField& travel, double target_x,
+                                         double target_y, const std::vector<Point>& tried,
+                                         const ViewpointParameters& parameters);
+
+// Bearing from (x0, y0) to (x1, y1), CCW from +x [deg].
+double bearingDeg(double x0, double y0, double x1, double y1);
+
+}  // namespace beft::exploration

@@ -1,0 +1,514 @@
+// The exploration expert's logic on synthetic maps and hypotheses: viewpoints
+// with a line of sight around a wall (never through it), frontiers on a
+// half-known map, and the decision sequence from looking around to verifying,
+// retrying, giving up and stopping.
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include <beft/obstacle_map_t.hpp>
+
+#include "explorer.hpp"
+#include "frontiers.hpp"
+#include "known_map.hpp"
+#include "viewpoints.hpp"
+
+namespace beft::exploration {
+namespace {
+
+constexpr uint8_t kUnknown = obstacle_map_t::CELL_UNKNOWN;
+constexpr uint8_t kFree = obstacle_map_t::CELL_FREE;
+constexpr uint8_t kOccupied = obstacle_map_t::CELL_OCCUPIED;
+
+// A width_m x height_m world at 0.1 m, every cell `fill`.
+planners::ObstacleCells makeCells(double width_m, double height_m, uint8_t fill) {
+  planners::ObstacleCells cells;
+  cells.resolution = 0.1;
+  cells.width = static_cast<int>(std::lround(width_m / cells.resolution));
+  cells.height = static_cast<int>(std::lround(height_m / cells.resolution));
+  cells.cells.assign(static_cast<size_t>(cells.width) * cells.height, fill);
+  return cells;
+}
+
+// Sets the cells whose centres lie in [x0, x1] x [y0, y1] (metres).
+void fillRect(planners::ObstacleCells& cells, double x0, double y0, double x1, double y1, uint8_t value) {
+  for (int y = 0; y < cells.height; ++y)
+    for (int x = 0; x < cells.width; ++x) {
+      const double cx = (x + 0.5) * cells.resolution, cy = (y + 0.5) * cells.resolution;
+      if (cx >= x0 && cx <= x1 && cy >= y0 && cy <= y1) cells.cells[static_cast<size_t>(y) * cells.width + x] = value;
+    }
+}
+
+// A 20 x 20 m known, free world with a wall from (10, 4) to (10, 16), 0.2 m thick.
+planners::ObstacleCells wallWorld() {
+  auto cells = makeCells(20, 20, kFree);
+  fillRect(cells, 9.9, 4.0, 10.1, 16.0, kOccupied);
+  return cells;
+}
+
+// Does segment p-q cross the axis-aligned rectangle [x0, x1] x [y0, y1]?
+bool segmentHitsRect(double px, double py, double qx, double qy, double x0, double y0, double x1, double y1) {
+  for (int i = 0; i <= 1000; ++i) {
+    const double s = i / 1000.0;
+    const double x = px + (qx - px) * s, y = py + (qy - py) * s;
+    if (x >= x0 && x <= x1 && y >= y0 && y <= y1) return true;
+  }
+  return false;
+}
+
+TEST(KnownMap, StandableCellsKeepTheRobotClearOfObstaclesAndTheBorder) {
+  const KnownMap map(wallWorld(), 0.45);
+  Cell cell;
+  ASSERT_TRUE(map.cellOf(9.5, 10.0, cell));  // 0.4 m from the wall's face
+  EXPECT_FALSE(map.standable(cell.x, cell.y));
+  ASSERT_TRUE(map.cellOf(9.2, 10.0, cell));  // 0.7 m from it
+  EXPECT_TRUE(map.standable(cell.x, cell.y));
+  ASSERT_TRUE(map.cellOf(0.2, 10.0, cell));  // too close to the world's edge
+  EXPECT_FALSE(map.standable(cell.x, cell.y));
+  EXPECT_EQ(map.at(-1, 0), kOccupied);
+}
+
+TEST(KnownMap, SightIsBlockedByOccupiedCellsButNotByTheTargetItself) {
+  auto cells = wallWorld();
+  fillRect(cells, 11.8, 9.8, 12.2, 10.2, kOccupied);  // the target's own footprint
+  const KnownMap map(cells, 0.45);
+  EXPECT_FALSE(map.sight(5, 10, 12, 10, 0.5).clear);  // through the wall
+  EXPECT_TRUE(map.sight(12, 3, 12, 10, 0.5).clear);   // from below, past the wall's end
+  EXPECT_FALSE(map.sight(12, 3, 12, 10, 0.0).clear);  // the target blocks itself unless ignored
+}
+
+TEST(Viewpoints, ChoosesALineOfSightAroundTheWallNotThroughIt) {
+  const KnownMap map(wallWorld(), 0.45);
+  const TravelField travel(map, 5.0, 10.0, 0.6);
+  ViewpointParameters parameters;
+  const double tx = 12.0, ty = 10.0;  // hidden behind the wall
+  const auto viewpoint = chooseViewpoint(map, travel, tx, ty, {}, parameters);
+  ASSERT_TRUE(viewpoint.has_value());
+  // Not through the wall, at a legal distance, facing the target.
+  EXPECT_FALSE(segmentHitsRect(viewpoint->x, viewpoint->y, tx, ty, 9.9, 4.0, 10.1, 16.0))
+      << "viewpoint (" << viewpoint->x << ", " << viewpoint->y << ")";
+  const double distance = std::hypot(viewpoint->x - tx, viewpoint->y - ty);
+  EXPECT_GE(distance, parameters.min_distance_m - 1e-9);
+  EXPECT_LE(distance, parameters.max_distance_m + 1e-9);
+  EXPECT_NEAR(viewpoint->yaw, bearingDeg(viewpoint->x, viewpoint->y, tx, ty), 1e-9);
+  // Points on the robot's side are closer but blocked: the chosen one had to go around.
+  EXPECT_GT(viewpoint->travel_m, 6.0);
+  EXPECT_FALSE(inLineOfSight(map, 8.0, 10.0, tx, ty, parameters));
+  EXPECT_TRUE(inLineOfSight(map, viewpoint->x, viewpoint->y, tx, ty, parameters));
+}
+
+TEST(Viewpoints, PrefersTheRobotsOwnSideWhenTheViewIsClear) {
+  const KnownMap map(wallWorld(), 0.45);
+  const TravelField travel(map, 5.0, 10.0, 0.6);
+  const auto viewpoint = chooseViewpoint(map, travel, 7.0, 10.0, {}, ViewpointParameters{});
+  ASSERT_TRUE(viewpoint.has_value());
+  EXPECT_LT(viewpoint->travel_m, 0.5);  // already in range with a clear view
+}
+
+TEST(Viewpoints, TriedViewpointsAreNotTriedAgain) {
+  const KnownMap map(wallWorld(), 0.45);
+  const TravelField travel(map, 5.0, 10.0, 0.6);
+  ViewpointParameters parameters;
+  const auto first = chooseViewpoint(map, travel, 12, 10, {}, parameters);
+  ASSERT_TRUE(first.has_value());
+  const auto second = chooseViewpoint(map, travel, 12, 10, {{first->x, first->y}}, parameters);
+  ASSERT_TRUE(second.has_value());
+  EXPECT_GE(std::hypot(second->x - first->x, second->y - first->y), parameters.tried_radius_m);
+  EXPECT_GE(second->cost, first->cost);
+}
+
+TEST(Viewpoints, NoneWhenTheTargetIsWalledIn) {
+  auto cells = makeCells(20, 20, kFree);
+  fillRect(cells, 9.0, 9.0, 15.0, 9.2, kOccupied);  // a closed box around (12, 10)
+  fillRect(cells, 9.0, 10.8, 15.0, 11.0, kOccupied);
+  fillRect(cells, 9.0, 9.0, 9.2, 11.0, kOccupied);
+  fillRect(cells, 14.8, 9.0, 15.0, 11.0, kOccupied);
+  const KnownMap map(cells, 0.45);
+  const TravelField travel(map, 3.0, 3.0, 0.6);
+  EXPECT_FALSE(chooseViewpoint(map, travel, 12, 10, {}, ViewpointParameters{}).has_value());
+}
+
+TEST(TravelField, GoesAroundWallsAndTreatsUnknownAsFree) {
+  auto cells = makeCells(20, 20, kUnknown);
+  fillRect(cells, 9.9, 0.0, 10.1, 15.0, kOccupied);  // a wall with a gap at the top
+  const KnownMap map(cells, 0.45);
+  const TravelField travel(map, 5.0, 5.0, 0.6);
+  Cell goal;
+  ASSERT_TRUE(map.cellOf(15.0, 5.0, goal));
+  ASSERT_TRUE(travel.reachable(goal.x, goal.y));
+  EXPECT_GT(travel.at(goal.x, goal.y), 2 * 10.0);  // up, over the wall's end, and down again
+}
+
+TEST(Frontiers, FoundWhereTheKnownHalfMeetsTheUnknownHalf) {
+  auto cells = makeCells(20, 10, kUnknown);
+  fillRect(cells, 0.0, 0.0, 10.0, 10.0, kFree);  // the left half is known free
+  const KnownMap map(cells, 0.45);
+  const TravelField travel(map, 3.0, 5.0, 0.6);
+  ExplorationMemory memory;
+  memory.addStood({3.0, 5.0});
+  const auto goals = findFrontiers(map, travel, memory);
+  ASSERT_EQ(goals.size(), 1u);
+  EXPECT_NEAR(goals[0].x, 9.95, 0.11);      // the last free column
+  EXPECT_NEAR(goals[0].y, 5.0, 0.6);        // straight ahead of the robot
+  EXPECT_NEAR(goals[0].yaw, 0.0, 10.0);     // facing the unknown (+x)
+  EXPECT_GT(goals[0].size, 50);
+  EXPECT_TRUE(frontierNear(map, memory, goals[0].x, goals[0].y, 1.0));
+
+  // Once visited, that stretch no longer counts; the rest of the line still does.
+  memory.addVisited({goals[0].x, goals[0].y});
+  EXPECT_FALSE(frontierNear(map, memory, goals[0].x, goals[0].y, 1.0));
+  const auto later = findFrontiers(map, travel, memory);
+  ASSERT_FALSE(later.empty());
+  EXPECT_GT(std::abs(later[0].y - goals[0].y), memory.parameters().visited_radius_m - 0.1);
+}
+
+TEST(Frontiers, NoneOnAFullyKnownMapNorAroundWhereTheRobotStood) {
+  const KnownMap known(makeCells(20, 10, kFree), 0.45);
+  const TravelField travel(known, 3.0, 5.0, 0.6);
+  ExplorationMemory memory;
+  EXPECT_TRUE(findFrontiers(known, travel, memory).empty());
+
+  // The ground right around the robot is never seen, but it stood there.
+  auto cells = makeCells(20, 10, kFree);
+  fillRect(cells, 2.0, 4.0, 4.0, 6.0, kUnknown);
+  const KnownMap blind(cells, 0.45);
+  ExplorationMemory fresh;
+  EXPECT_FALSE(findFrontiers(blind, travel, fresh).empty());
+  ExplorationMemory stood;
+  stood.addStood({3.0, 5.0});
+  EXPECT_TRUE(findFrontiers(blind, travel, stood).empty());
+}
+
+TEST(Frontiers, UnreachableFrontiersAreIgnored) {
+  auto cells = makeCells(20, 10, kFree);
+  fillRect(cells, 14.0, 0.0, 20.0, 10.0, kUnknown);
+  fillRect(cells, 9.9, 0.0, 10.1, 10.0, kOccupied);  // a wall across the whole world
+  const KnownMap map(cells, 0.45);
+  const TravelField travel(map, 3.0, 5.0, 0.6);
+  ExplorationMemory memory;
+  EXPECT_TRUE(findFrontiers(map, travel, memory).empty());
+}
+
+// Drives an Explorer through a scripted run: a small fake task stack that
+// gives ids to pushed tasks and removes finished ones.
+class FakeStack {
+ public:
+  void apply(const Decision& decision) {
+    for (const auto& r : decision.requests) {
+      if (r.type == TaskRequest::Type::Push) {
+        StackEntry entry;
+        entry.id = next_id_++;
+        entry.parent = r.parent;
+        entry.kind = r.kind;
+        entry.object_id = r.object_id;
+        entry.origin = r.parent == 0 ? "exploration" : "exploration";
+        entries_.insert(entries_.begin(), entry);
+        pushes.push_back(r);
+      } else {
+        finishes.push_back(r);
+        removeWithChildren(r.task_id);
+      }
+    }
+  }
+  // The executor ran every sub-task of `parent`.
+  void completeSubTasks(int64_t parent) {
+    for (size_t i = 0; i < entries_.size();)
+      if (entries_[i].parent == parent) entries_.erase(entries_.begin() + static_cast<long>(i));
+      else ++i;
+  }
+  void removeWithChildren(int64_t id) {
+    completeSubTasks(id);
+    for (size_t i = 0; i < entries_.size();)
+      if (entries_[i].id == id) entries_.erase(entries_.begin() + static_cast<long>(i));
+      else ++i;
+  }
+  const std::vector<StackEntry>& entries() const { return entries_; }
+  int64_t topComposite() const {
+    for (const auto& e : entries_)
+      if (e.parent == 0) return e.id;
+    return 0;
+  }
+
+  std::vector<TaskRequest> pushes, finishes;
+
+ private:
+  std::vector<StackEntry> entries_;
+  int64_t next_id_ = 1;
+};
+
+std::vector<TaskRequest> pushesOf(const Decision& decision) {
+  std::vector<TaskRequest> pushes;
+  for (const auto& r : decision.requests)
+    if (r.type == TaskRequest::Type::Push) pushes.push_back(r);
+  return pushes;
+}
+
+class ExplorerRun : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    observation.robot_known = true;
+    observation.robot_x = 5;
+    observation.robot_y = 10;
+    observation.robot_yaw = 0;
+    observation.robot_radius = 0.35;
+    observation.duration = 120;
+    setMap(wallWorld());
+  }
+  void setMap(planners::ObstacleCells cells) {
+    observation.map = std::make_shared<const planners::ObstacleCells>(std::move(cells));
+    ++observation.map_version;
+  }
+  Decision tick() {
+    observation.stack = stack.entries();
+    observation.stack_known = true;
+    Decision decision = explorer.step(observation);
+    stack.apply(decision);
+    observation.t += 0.1;
+    return decision;
+  }
+  // Runs the look-around until its turns are done; the next tick ends it
+  // and decides what comes next.
+  void lookAround() {
+    tick();  // pushes the composite
+    tick();  // pushes its turns
+    stack.completeSubTasks(stack.topComposite());
+  }
+  HypothesisView hidden(const std::string& id = "victim1") {
+    HypothesisView h;
+    h.object_id = id;
+    h.x = 12;
+    h.y = 10;
+    h.heard = true;
+    h.best_category = "person";
+    h.confidence = 0.7;
+    h.person_confidence = 0.7;
+    h.weight = 0.75;
+    return h;
+  }
+
+  ExplorerParameters parameters;
+  Explorer explorer{parameters};
+  FakeStack stack;
+  Observation observation;
+};
+
+TEST_F(ExplorerRun, LooksAroundFirstWithFourQuarterTurns) {
+  const Decision first = tick();
+  ASSERT_EQ(first.requests.size(), 1u);
+  EXPECT_EQ(first.requests[0].kind, "explore");
+  EXPECT_EQ(first.requests[0].parent, 0);
+  EXPECT_EQ(explorer.phase(), Explorer::Phase::LookAround);
+  const Decision second = tick();
+  ASSERT_EQ(second.requests.size(), 4u);
+  // Pushed last-first: the first turn to run (+90 deg) is pushed last.
+  EXPECT_EQ(second.requests.back().kind, "turn");
+  EXPECT_NEAR(second.requests.back().yaw, 90, 1e-9);
+  EXPECT_NEAR(second.requests.front().yaw, 0, 1e-9);
+  for (const auto& r : second.requests) EXPECT_EQ(r.parent, 1);
+  tick();  // turning: nothing to do
+  EXPECT_TRUE(stack.finishes.empty());
+  stack.completeSubTasks(1);
+  tick();
+  ASSERT_EQ(stack.finishes.size(), 1u);
+  EXPECT_EQ(stack.finishes[0].task_id, 1);
+  EXPECT_TRUE(stack.finishes[0].success);
+}
+
+TEST_F(ExplorerRun, VerifiesAHiddenHypothesisFromAroundTheWallAndFinishesWhenVerified) {
+  lookAround();
+  observation.hypotheses = {hidden()};
+  const Decision start = tick();
+  EXPECT_EQ(stack.finishes.size(), 1u);  // the look-around
+  const auto composites = pushesOf(start);
+  ASSERT_EQ(composites.size(), 1u);
+  EXPECT_EQ(composites[0].kind, "verify");
+  EXPECT_EQ(composites[0].object_id, "victim1");
+  EXPECT_EQ(composites[0].priority, parameters.verify_priority);
+  EXPECT_EQ(explorer.phase(), Explorer::Phase::Verify);
+
+  const auto subs = pushesOf(tick());
+  ASSERT_EQ(subs.size(), 2u);
+  const TaskRequest& look = subs[0];
+  const TaskRequest& go = subs[1];  // pushed last: runs first
+  EXPECT_EQ(look.kind, "look_at");
+  EXPECT_EQ(look.object_id, "victim1");
+  EXPECT_EQ(go.kind, "goto");
+  EXPECT_EQ(go.parent, look.parent);
+  EXPECT_FALSE(segmentHitsRect(go.x, go.y, 12, 10, 9.9, 4.0, 10.1, 16.0));
+  EXPECT_NEAR(go.yaw, bearingDeg(go.x, go.y, 12, 10), 1e-9);
+
+  tick();  // on its way
+  EXPECT_EQ(stack.finishes.size(), 1u);
+  observation.hypotheses[0].seen = true;
+  observation.hypotheses[0].verified = true;
+  tick();
+  ASSERT_EQ(stack.finishes.size(), 2u);
+  EXPECT_EQ(stack.finishes[1].task_id, go.parent);
+  EXPECT_TRUE(stack.finishes[1].success);
+  EXPECT_EQ(explorer.attempts("victim1"), 0);
+}
+
+TEST_F(ExplorerRun, TriesAnotherViewpointWhenStillUnseenAndGivesUpAfterTheLimit) {
+  parameters.verify_attempts = 2;
+  explorer = Explorer(parameters);
+  lookAround();
+  observation.hypotheses = {hidden()};
+  tick();  // ends the look-around, pushes the first verify composite
+  std::vector<Point> goals;
+  Decision last;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    const auto subs = pushesOf(tick());
+    ASSERT_EQ(subs.size(), 2u) << "attempt " << attempt;
+    goals.push_back({subs[1].x, subs[1].y});
+    stack.completeSubTasks(subs[1].parent);  // got there and looked
+    const size_t finishes = stack.finishes.size();
+    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) last = tick();  // dwell, then fail
+    ASSERT_EQ(stack.finishes.size(), finishes + 1);
+    EXPECT_FALSE(stack.finishes.back().success);
+    EXPECT_EQ(explorer.attempts("victim1"), attempt + 1);
+  }
+  EXPECT_GE(std::hypot(goals[0].x - goals[1].x, goals[0].y - goals[1].y), parameters.viewpoints.tried_radius_m);
+  EXPECT_TRUE(explorer.givenUp("victim1"));
+  ASSERT_EQ(explorer.triedViewpoints("victim1").size(), 2u);
+
+  // The map is fully known and nothing is left: the run stops, saying why.
+  ASSERT_TRUE(last.stop.has_value());
+  EXPECT_NE(last.stop->find("1 given up"), std::string::npos) << *last.stop;
+  EXPECT_TRUE(explorer.stopped());
+}
+
+TEST_F(ExplorerRun, ExploresTheUnknownAndStopsWhenAllIsSettledAndKnown) {
+  auto cells = makeCells(20, 20, kUnknown);
+  fillRect(cells, 0.0, 0.0, 10.0, 20.0, kFree);
+  setMap(cells);
+  lookAround();
+  const auto explore = pushesOf(tick());
+  ASSERT_EQ(explore.size(), 1u);
+  EXPECT_EQ(explore[0].kind, "explore");
+  EXPECT_EQ(explorer.phase(), Explorer::Phase::Explore);
+  const auto subs = pushesOf(tick());
+  ASSERT_EQ(subs.size(), 1u);
+  EXPECT_EQ(subs[0].kind, "goto");
+  EXPECT_NEAR(subs[0].x, 9.95, 0.11);
+  EXPECT_NEAR(subs[0].yaw, 0.0, 10.0);
+
+  // A heard hypothesis interrupts exploring.
+  observation.hypotheses = {hidden()};
+  observation.hypotheses[0].x = 7;  // in plain view
+  const auto verify = pushesOf(tick());
+  ASSERT_EQ(stack.finishes.size(), 2u);
+  EXPECT_TRUE(stack.finishes.back().success);
+  ASSERT_EQ(verify.size(), 1u);
+  EXPECT_EQ(verify[0].kind, "verify");
+  EXPECT_EQ(explorer.phase(), Explorer::Phase::Verify);
+  tick();
+  observation.hypotheses[0].seen = observation.hypotheses[0].verified = true;
+  tick();
+  EXPECT_EQ(stack.finishes.size(), 3u);
+  EXPECT_EQ(explorer.phase(), Explorer::Phase::Explore);  // back to the frontier
+
+  // The robot went and saw everything: nothing left, the run stops.
+  setMap(makeCells(20, 20, kFree));
+  Decision last;
+  for (int i = 0; i < 20 && !last.stop; ++i) last = tick();
+  ASSERT_TRUE(last.stop.has_value());
+  EXPECT_NE(last.stop->find("1 verified"), std::string::npos) << *last.stop;
+  EXPECT_NE(last.stop->find("no reachable frontier"), std::string::npos) << *last.stop;
+}
+
+TEST_F(ExplorerRun, FalsifiedCountsAsSettled) {
+  lookAround();
+  HypothesisView radio = hidden("radio");
+  radio.seen = true;
+  radio.falsified = true;
+  observation.hypotheses = {radio};
+  const Decision d = tick();
+  ASSERT_TRUE(d.stop.has_value());
+  EXPECT_NE(d.stop->find("1 falsified"), std::string::npos) << *d.stop;
+}
+
+TEST_F(ExplorerRun, StopsWhenTheDurationEnds) {
+  lookAround();
+  observation.hypotheses = {hidden()};
+  tick();
+  tick();
+  observation.t = observation.duration;
+  const Decision d = tick();
+  ASSERT_TRUE(d.stop.has_value());
+  EXPECT_NE(d.stop->find("duration"), std::string::npos);
+  ASSERT_EQ(stack.finishes.size(), 2u);
+  EXPECT_FALSE(stack.finishes.back().success);  // the running verify task is ended
+  // Asked again, it says the same.
+  EXPECT_EQ(tick().stop, d.stop);
+}
+
+TEST_F(ExplorerRun, PrefersTheHypothesisWithTheHigherWeight) {
+  lookAround();
+  HypothesisView near = hidden("near");
+  near.x = 7;  // close and in view
+  near.weight = 0.25;
+  HypothesisView urgent = hidden("urgent");
+  urgent.weight = 1.0;  // behind the wall, but yelling
+  observation.hypotheses = {near, urgent};
+  const auto pushes = pushesOf(tick());
+  ASSERT_EQ(pushes.size(), 1u);
+  EXPECT_EQ(pushes[0].object_id, "urgent");
+}
+
+TEST_F(ExplorerRun, InspectsAGlimpsedPossiblePersonButNotAClearWall) {
+  lookAround();
+  HypothesisView far;
+  far.object_id = "figure";
+  far.x = 2;
+  far.y = 18;
+  far.glimpsed = true;
+  far.best_category = "car";
+  far.confidence = 0.51;
+  far.person_confidence = 0.5;
+  HypothesisView wall = far;
+  wall.object_id = "wall2";
+  wall.x = 18;
+  wall.best_category = "wall";
+  wall.confidence = 0.7;
+  wall.person_confidence = 0.3;
+  observation.hypotheses = {wall, far};
+  const auto pushes = pushesOf(tick());
+  ASSERT_EQ(pushes.size(), 1u);
+  EXPECT_EQ(pushes[0].kind, "verify");
+  EXPECT_EQ(pushes[0].object_id, "figure");
+}
+
+TEST(ExplorerDeterminism, SameInputsGiveTheSameDecisions) {
+  auto run = [] {
+    Explorer explorer;
+    Observation o;
+    o.robot_known = true;
+    o.robot_x = 3;
+    o.robot_y = 3;
+    auto cells = makeCells(20, 20, kUnknown);
+    fillRect(cells, 0.0, 0.0, 8.0, 8.0, kFree);
+    fillRect(cells, 5.0, 2.0, 5.2, 7.0, kOccupied);
+    o.map = std::make_shared<const planners::ObstacleCells>(cells);
+    FakeStack stack;
+    std::string trace;
+    for (int i = 0; i < 40; ++i) {
+      o.t = i * 0.1;
+      o.stack = stack.entries();
+      if (i == 12) o.hypotheses = {HypothesisView{"v", 7, 4, false, true, false, false, false, "person", 0.6, 0.6, 0.8}};
+      const Decision d = explorer.step(o);
+      stack.apply(d);
+      if (i % 4 == 3) stack.completeSubTasks(stack.topComposite());
+      for (const auto& r : d.requests)
+        trace += r.kind + ":" + std::to_string(r.x) + "," + std::to_string(r.y) + "," + std::to_string(r.yaw) + ";";
+    }
+    return trace;
+  };
+  const std::string first = run();
+  EXPECT_FALSE(first.empty());
+  EXPECT_EQ(first, run());
+}
+
+}  // namespace
+}  // namespace beft::exploration
