@@ -127,14 +127,18 @@ void ArbiterCore::onDone(const beft::done_t& done) {
   }
   // Not the firing in flight: say why it is dropped.
   if (const auto found = recently_ended_.find(done.firing_id); found != recently_ended_.end()) {
-    const EndedFiring& ended = found->second;
+    EndedFiring& ended = found->second;
     if (ended.expert != e) {
       ++stats_.unknown_dones;
       log::warn("DONE from '", done.expert, "' for firing ", done.firing_id,
                 ", which was addressed to ", experts_[ended.expert].name, ": dropped");
     } else if (ended.completed) {
+      // Expected when a firing outlasts the re-send period: the expert answers
+      // every copy of the FIRE. Said once per firing.
       ++stats_.duplicate_dones;
-      log::info("duplicate DONE from ", done.expert, " for firing ", done.firing_id, ": dropped");
+      if (++ended.duplicates == 1)
+        log::info("duplicate DONE from ", done.expert, " for firing ", done.firing_id,
+                  ": dropped (and any further copies)");
     } else {
       ++stats_.late_dones;
       log::warn("late DONE from ", done.expert, " for firing ", done.firing_id, " (tick ", done.tick,
@@ -380,6 +384,13 @@ void ArbiterCore::applyPolicy(int e, ExpiryAction action, const std::string& out
   const Transition& transition = net_.transitions[running.transition];
   const FiringPolicy& policy = transition.policy;
   const std::string what = describeFiring(running, e) + ": " + reason;
+  if (stop_requested_) {  // the run is asked to end: no retry, no waiting on a broken tick
+    output_.firingEnded(recordOf(e, outcome, "stop", reason, expert_duration_s));
+    endFiring(e, false);
+    finish("stopped on request in tick " + std::to_string(tick_) + " (" + stop_reason_ +
+           "), which could not complete: " + what);
+    return;
+  }
   if (action == ExpiryAction::Retry && running.attempt <= policy.retries) {
     output_.firingEnded(recordOf(e, outcome, "retry", reason, expert_duration_s));
     endFiring(e, false);

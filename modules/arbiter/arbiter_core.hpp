@@ -51,7 +51,7 @@ struct FiringRecord {
   double duration_s = 0.0;         // first FIRE to DONE (or to expiry), wall
   double expert_duration_s = -1.0; // the expert's own figure from DONE; -1 without DONE
   std::string outcome;             // ok | failed | timeout | no-heartbeat | abandoned
-  std::string action;              // "" when done, else retry | skip | fail
+  std::string action;              // "" when done, else retry | skip | fail | stop
   std::string message;             // the expert's failure message or the expiry reason
 };
 
@@ -148,6 +148,7 @@ class ArbiterCore {
   struct EndedFiring {
     int expert = -1;
     bool completed = false;  // DONE accepted (else abandoned: expired or retried)
+    int duplicates = 0;      // DONEs received again after it completed
   };
 
   void beginRun();

@@ -82,17 +82,17 @@ void ArbiterEventQueue::deliverTo(ArbiterCore& core) {
   events_.clear();
 }
 
-bool runArbiterLoop(lcm::LCM& lcm, ArbiterCore& core, const Clock& clock,
-                    const std::atomic<int>* interrupts) {
+bool runArbiterLoop(lcm::LCM& lcm, ArbiterCore& core, const Clock& clock, const StopSignals* signals) {
   ArbiterEventQueue queue(lcm);
   int interrupts_seen = 0;
   core.start();
   while (!core.done()) {
-    if (interrupts) {
-      const int count = interrupts->load();
-      if (count >= 1 && interrupts_seen < 1) core.onStopRequest("interrupted by a signal");
-      if (count >= 2 && interrupts_seen < 2) core.onAbort("interrupted twice by a signal");
+    if (signals) {
+      const int count = signals->interrupts.load();
+      if (count >= 1 && interrupts_seen < 1) core.onStopRequest("interrupted (SIGINT)");
+      if (count >= 2 && interrupts_seen < 2) core.onAbort("interrupted twice (SIGINT)");
       interrupts_seen = count;
+      if (signals->terminated.load()) core.onAbort("terminated (SIGTERM)");
     }
     const double wait_s = std::clamp(core.nextDeadline() - clock.now(), 0.0, kLongestWait_s);
     const int wait_ms = static_cast<int>(std::ceil(wait_s * 1e3));

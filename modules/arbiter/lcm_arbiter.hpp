@@ -62,10 +62,15 @@ class ArbiterEventQueue {
   std::vector<ArbiterEvent> events_;
 };
 
-// Runs the core until it is done (final status sent). interrupts counts
-// SIGINT/SIGTERM: the first ends the run at the end of the tick, the second
-// aborts it. Returns false if LCM stopped working (the run is then FAILED).
+// Set by signal handlers, read by the loop.
+struct StopSignals {
+  std::atomic<int> interrupts{0};      // SIGINT: first ends the run after the tick, second aborts
+  std::atomic<bool> terminated{false}; // SIGTERM: end now
+};
+
+// Runs the core until it is done (final status sent). Returns false if LCM
+// stopped working (the run is then FAILED).
 bool runArbiterLoop(lcm::LCM& lcm, ArbiterCore& core, const Clock& clock,
-                    const std::atomic<int>* interrupts = nullptr);
+                    const StopSignals* signals = nullptr);
 
 }  // namespace beft::arbiter

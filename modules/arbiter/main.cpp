@@ -15,8 +15,9 @@
 
 namespace {
 
-std::atomic<int> g_interrupts{0};
-void onSignal(int) { g_interrupts.fetch_add(1); }
+beft::arbiter::StopSignals g_signals;
+void onInterrupt(int) { g_signals.interrupts.fetch_add(1); }
+void onTerminate(int) { g_signals.terminated.store(true); }
 
 const char* kInterface =
     "process: arbiter\n"
@@ -47,7 +48,8 @@ int main(int argc, char** argv) {
       "Waits for a heartbeat of every expert in the net, then each step starts every enabled\n"
       "transition (FIRE, re-sent until DONE) and ends it on DONE; the tick transition opens the\n"
       "next tick. Timeouts, lost heartbeats and failures apply the net's policy (retry, skip,\n"
-      "fail). Prints one line per firing on stdout. Exit 0 when the run FINISHED, 1 when it\n"
+      "fail). Prints one line per firing on stdout. Ctrl-C ends the run after the current\n"
+      "tick, a second Ctrl-C or SIGTERM at once. Exit 0 when the run FINISHED, 1 when it\n"
       "FAILED, 2 on bad input.",
       "beft-arbiter");
   app.add_option("--net", net_path, "PNML net to run")->capture_default_str();
@@ -105,15 +107,16 @@ int main(int argc, char** argv) {
     beft::log::error("cannot open LCM at ", lcm_url);
     return 2;
   }
-  std::signal(SIGINT, onSignal);
-  std::signal(SIGTERM, onSignal);
+  std::signal(SIGINT, onInterrupt);
+  std::signal(SIGTERM, onTerminate);
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // firing lines appear as they happen, also in a pipe
 
   SteadyClock clock;
   LcmArbiterOutput output(lcm, firing_log.get());
   ArbiterCore core(std::move(net), config, clock, output);
   beft::log::info("on ", lcm_url, (config.max_ticks > 0 ? ", " + std::to_string(config.max_ticks) + " ticks" : ""),
-                  " (Ctrl-C: end after this tick; twice: abort)");
-  runArbiterLoop(lcm, core, clock, &g_interrupts);
+                  " (Ctrl-C: end after this tick; twice, or SIGTERM: end now)");
+  runArbiterLoop(lcm, core, clock, &g_signals);
   firing_log->flush();
 
   const ArbiterStats& s = core.stats();

@@ -1,5 +1,6 @@
 #include "pnml_reader.hpp"
 
+#include <sys/stat.h>
 #include <tinyxml2.h>
 
 #include <algorithm>
@@ -72,6 +73,16 @@ std::optional<double> parseSeconds(const std::string& text) {
   return value;
 }
 
+// tinyxml2's message without its "Error=... ErrorID=... Line number=N" wrapper.
+std::string xmlErrorText(const tinyxml2::XMLDocument& document) {
+  if (document.ErrorID() == tinyxml2::XML_ERROR_EMPTY_DOCUMENT) return "the file is empty";
+  std::string text = std::string("not well-formed XML (") + document.ErrorName();
+  const std::string full = document.ErrorStr();
+  const auto detail = full.find(": ", full.find("Line number="));
+  if (detail != std::string::npos) text += ": " + full.substr(detail + 2);
+  return text + ")";
+}
+
 // One node of the net as declared, before arcs are resolved.
 enum class NodeKind { Place, Transition, Reference, Other };
 
@@ -94,8 +105,7 @@ class PnmlReader {
 
   Net read(tinyxml2::XMLDocument& document) {
     if (document.Error()) {
-      problem(std::max(1, document.ErrorLineNum()),
-              std::string("not well-formed XML: ") + document.ErrorStr());
+      problem(std::max(1, document.ErrorLineNum()), xmlErrorText(document));
       throw NetError(problems_);
     }
     const XMLElement* root = document.RootElement();
@@ -510,6 +520,9 @@ NetError::NetError(std::vector<std::string> problems)
     : std::runtime_error(joinLines(problems)), problems_(std::move(problems)) {}
 
 Net readPnmlFile(const std::string& path) {
+  struct stat info {};
+  if (stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+    throw NetError({path + ": is a directory, not a PNML file"});
   std::ifstream in(path, std::ios::binary);
   if (!in) throw NetError({path + ": cannot open the file: " + std::strerror(errno)});
   std::ostringstream text;

@@ -628,6 +628,20 @@ TEST(ArbiterCore, StopRequestEndsTheRunAtTheEndOfTheTick) {
   EXPECT_EQ(positionOf(sim.entries(), 'F', "world", 3), -1);
 }
 
+TEST(ArbiterCore, StopRequestDoesNotWaitOnABrokenTick) {
+  Simulation sim(chainNet({{"world", ""},
+                           {"vision", "<timeout>1</timeout><on_timeout>retry</on_timeout><retries>3</retries>"}}),
+                 testConfig(0));
+  sim.expert("vision").duration = [](const beft::fire_t& f) { return f.tick == 1 ? -1.0 : 0.001; };
+  sim.at(0.5, [&sim] { sim.core().onStopRequest("shutting down"); });
+  sim.run();
+  ASSERT_EQ(sim.core().state(), RunState::Finished) << sim.core().message();
+  EXPECT_TRUE(contains(sim.core().message(), "stopped on request in tick 1 (shutting down), which could not complete"))
+      << sim.core().message();
+  EXPECT_EQ(sim.core().stats().retries, 0);  // no retry once a stop is requested
+  EXPECT_EQ(sim.records().back().action, "stop");
+}
+
 TEST(ArbiterCore, FiringIdsContinueAboveWhatExpertsReport) {
   Simulation sim(chainNet({{"world", ""}, {"vision", ""}}), testConfig(1));
   sim.expert("vision").reported_firing_id = 41;  // ran firings of an earlier arbiter
