@@ -48,8 +48,9 @@ void encodeCameraMessages(const RenderedFrame& frame, int64_t utime, int64_t tic
   fillHeader(frame, utime, tick, beft::camera_frame_t::ENCODING_DEPTH_MM16, out.depth);
   out.depth.data.resize(2 * pixels);
   for (size_t p = 0; p < pixels; ++p) {
-    const double millimetres = std::round(static_cast<double>(frame.depth[p]) * 1000.0);
-    const uint16_t value = (millimetres >= 1 && millimetres <= 65535) ? static_cast<uint16_t>(millimetres) : 0;
+    // Rounded to the nearest millimetre (depths are never negative).
+    const double millimetres = static_cast<double>(frame.depth[p]) * 1000.0 + 0.5;
+    const uint16_t value = (millimetres >= 1 && millimetres < 65536) ? static_cast<uint16_t>(millimetres) : 0;
     putUint16(out.depth.data, p, value);
   }
   out.depth.data_size = static_cast<int32_t>(out.depth.data.size());

@@ -54,7 +54,12 @@ Camera cameraOfFrame(const beft::camera_frame_t& frame) {
 }
 
 Eigen::Vector3d imagePointRay(const CameraFrame& frame, double x, double y) {
-  return frame.forward + ((frame.cx - x) / frame.focal) * frame.left + ((frame.cy - y) / frame.focal) * frame.up;
+  // Summed as (forward + b up) + a left: the renderer builds rays row by row
+  // in this order, so its rays equal these bit for bit.
+  const double a = (frame.cx - x) / frame.focal, b = (frame.cy - y) / frame.focal;
+  return Eigen::Vector3d(frame.forward.x() + b * frame.up.x() + a * frame.left.x(),
+                         frame.forward.y() + b * frame.up.y() + a * frame.left.y(),
+                         frame.forward.z() + b * frame.up.z() + a * frame.left.z());
 }
 
 Eigen::Vector3d pixelRay(const CameraFrame& frame, int u, int v) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 namespace beft::camera {
 
 namespace {
@@ -54,46 +56,62 @@ struct RayCaster::SolidFootprint {
 
 void RayCaster::prepareRays(const Camera& camera) {
   const bool same_intrinsics = width_ == camera.intrinsics.width && height_ == camera.intrinsics.height &&
-                               camera_.intrinsics.fov_deg == camera.intrinsics.fov_deg;
+                               camera_.intrinsics.fov_deg == camera.intrinsics.fov_deg &&
+                               !inverse_length_.empty();
   camera_ = camera;
   camera_frame_ = CameraFrame(camera);
   width_ = std::max(camera.intrinsics.width, 0);
   height_ = std::max(camera.intrinsics.height, 0);
   const size_t pixels = static_cast<size_t>(width_) * height_;
-  ray_x_.resize(pixels);
-  ray_y_.resize(pixels);
-  ray_z_.resize(pixels);
-  t_limit_.resize(pixels);
-  hits_ground_.resize(pixels);
-  nearest_t_.resize(pixels);
-  nearest_solid_.resize(pixels);
-  nearest_face_.resize(pixels);
-  if (!same_intrinsics || ray_length_.size() != pixels) {
-    // |forward + a left + b up| depends on the intrinsics only.
-    ray_length_.resize(pixels);
-    for (int v = 0; v < height_; ++v) {
-      for (int u = 0; u < width_; ++u) {
-        const double a = (camera_frame_.cx - (u + 0.5)) / camera_frame_.focal;
-        const double b = (camera_frame_.cy - (v + 0.5)) / camera_frame_.focal;
-        ray_length_[v * width_ + u] = static_cast<float>(std::sqrt(1.0 + a * a + b * b));
-      }
-    }
-  }
   const CameraFrame& f = camera_frame_;
+  if (!same_intrinsics) {
+    column_a_.resize(width_);
+    row_b_.resize(height_);
+    inverse_length_.resize(pixels);
+    for (int u = 0; u < width_; ++u) column_a_[u] = (f.cx - (u + 0.5)) / f.focal;
+    for (int v = 0; v < height_; ++v) row_b_[v] = (f.cy - (v + 0.5)) / f.focal;
+    for (int v = 0; v < height_; ++v)
+      for (int u = 0; u < width_; ++u)
+        inverse_length_[static_cast<size_t>(v) * width_ + u] =
+            1.0 / std::sqrt(1.0 + column_a_[u] * column_a_[u] + row_b_[v] * row_b_[v]);
+    ray_x_.resize(pixels);
+    ray_y_.resize(pixels);
+    ray_z_.resize(pixels);
+    t_limit_.resize(pixels);
+    hits_ground_.resize(pixels);
+    nearest_t_.resize(pixels);
+    nearest_solid_.resize(pixels);
+    nearest_face_.resize(pixels);
+  }
+  // Frustum side planes from the rays through the image corners.
+  const Eigen::Vector3d corners[4] = {imagePointRay(f, 0, 0), imagePointRay(f, width_, 0),
+                                      imagePointRay(f, width_, height_), imagePointRay(f, 0, height_)};
+  for (int i = 0; i < 4; ++i) {
+    // Corners go clockwise on the image (top-left, top-right, ...), so
+    // this x next points into the frustum.
+    frustum_normals_[i] = corners[i].cross(corners[(i + 1) % 4]).normalized();
+  }
+
   const double range = camera.intrinsics.range;
   const double oz = f.origin.z();
   for (int v = 0; v < height_; ++v) {
+    // Same summation order as imagePointRay: (forward + b up) + a left.
+    const double b = row_b_[v];
+    const double row_x = f.forward.x() + b * f.up.x(), row_y = f.forward.y() + b * f.up.y(),
+                 row_z = f.forward.z() + b * f.up.z();
+    const size_t row = static_cast<size_t>(v) * width_;
     for (int u = 0; u < width_; ++u) {
-      const size_t p = static_cast<size_t>(v) * width_ + u;
-      const Eigen::Vector3d d = pixelRay(f, u, v);
-      ray_x_[p] = d.x();
-      ray_y_[p] = d.y();
-      ray_z_[p] = d.z();
-      const double t_range = range / static_cast<double>(ray_length_[p]);
+      const size_t p = row + u;
+      const double a = column_a_[u];
+      const double dz = row_z + a * f.left.z();
+      ray_x_[p] = row_x + a * f.left.x();
+      ray_y_[p] = row_y + a * f.left.y();
+      ray_z_[p] = dz;
+      const double t_range = range * inverse_length_[p];
       double t_limit = t_range;
       bool ground = false;
-      if (d.z() < 0 && oz > 0) {
-        const double t_ground = -oz / d.z();
+      if (dz < 0 && oz > 0) {
+        const double t_ground = -oz / dz;
         if (t_ground <= t_range) {
           t_limit = t_ground;
           ground = true;
@@ -103,7 +121,6 @@ void RayCaster::prepareRays(const Camera& camera) {
       hits_ground_[p] = ground;
       nearest_t_[p] = t_limit;
       nearest_solid_[p] = -1;
-      nearest_face_[p] = Face::Inside;
     }
   }
 }
@@ -118,6 +135,14 @@ bool RayCaster::projectSolid(const Solid& solid, SolidFootprint& footprint) cons
   const double ez = std::max({solid.z_min - f.origin.z(), 0.0, f.origin.z() - solid.z_max});
   const double range = camera_.intrinsics.range;
   if (ex * ex + ey * ey + ez * ez > range * range) return false;
+  // Outside the frustum: its bounding sphere beyond one of the side planes.
+  const double half_height = 0.5 * (solid.z_max - solid.z_min);
+  const Eigen::Vector3d centre(solid.x, solid.y, solid.z_min + half_height);
+  const double sphere = std::sqrt(solid.half_x * solid.half_x + solid.half_y * solid.half_y + half_height * half_height);
+  const Eigen::Vector3d offset = centre - f.origin;
+  for (const Eigen::Vector3d& normal : frustum_normals_) {
+    if (normal.dot(offset) < -sphere) return false;
+  }
 
   // Corners of its bounding box (oriented for boxes) in camera coordinates:
   // depth (forward), left, up. Bit 0: +x side, bit 1: +y side, bit 2: top.
@@ -233,47 +258,48 @@ void RayCaster::shade(const SceneGeometry& scene, RenderedFrame& frame) const {
   frame.object.resize(pixels);
   frame.rgb.resize(3 * pixels);
   const Eigen::Vector3d& o = camera_frame_.origin;
-  const float inv_range_sq = static_cast<float>(1.0 / (camera_.intrinsics.range * camera_.intrinsics.range));
-  const Rgb horizon = kHaze;
+  const double inv_range = 1.0 / camera_.intrinsics.range;
   // The solid colours once, not per pixel.
   std::vector<Rgb> colours;
   colours.reserve(scene.solids().size());
   for (const Solid& solid : scene.solids()) colours.push_back(unpack(solid.color_rgb));
 
-  for (size_t p = 0; p < pixels; ++p) {
+  uint8_t* rgb = frame.rgb.data();
+  for (size_t p = 0; p < pixels; ++p, rgb += 3) {
     const Eigen::Vector3d d(ray_x_[p], ray_y_[p], ray_z_[p]);
     Rgb colour;
     const int s = nearest_solid_[p];
     if (s >= 0 || hits_ground_[p]) {
       const double t = nearest_t_[p];
-      const Eigen::Vector3d point = o + t * d;
-      const float distance = static_cast<float>(t) * ray_length_[p];
+      const double x = o.x() + t * d.x(), y = o.y() + t * d.y();
       float light;
       if (s >= 0) {
         const Solid& solid = scene.solids()[s];
-        const Eigen::Vector3d normal = entryNormal(solid, point, d, nearest_face_[p]);
+        const Eigen::Vector3d normal = entryNormal(solid, Eigen::Vector3d(x, y, o.z() + t * d.z()), d, nearest_face_[p]);
         light = kAmbient + (1 - kAmbient) * static_cast<float>(std::max(0.0, normal.dot(kLight)));
         colour = colours[s];
         frame.object[p] = solid.object_index;
       } else {
-        const bool dark = (static_cast<long>(std::floor(point.x())) + static_cast<long>(std::floor(point.y()))) & 1;
-        light = dark ? 0.92f : 1.0f;
+        // A faint 1 m checker, so motion over the ground shows.
+        const long cell_x = static_cast<long>(x) - (x < 0), cell_y = static_cast<long>(y) - (y < 0);
+        light = ((cell_x + cell_y) & 1) ? 0.92f : 1.0f;
         colour = kGround;
         frame.object[p] = -1;
       }
-      colour = {colour.r * light, colour.g * light, colour.b * light};
-      colour = mix(colour, kHaze, kFogAtRange * distance * distance * inv_range_sq);
+      const float fraction_of_range = static_cast<float>(t * inverse_length_[p] * inv_range);
+      colour = mix({colour.r * light, colour.g * light, colour.b * light}, kHaze,
+                   kFogAtRange * fraction_of_range * fraction_of_range);
       frame.depth[p] = static_cast<float>(t);
     } else {
       // Sky: haze at and below the horizon, bluer towards the zenith.
-      const float elevation = static_cast<float>(d.z()) / ray_length_[p];
-      colour = mix(horizon, kSkyZenith, std::sqrt(std::clamp(elevation, 0.0f, 1.0f)));
+      const float elevation = std::clamp(static_cast<float>(d.z() * inverse_length_[p]), 0.0f, 1.0f);
+      colour = mix(kHaze, kSkyZenith, elevation * (2.0f - elevation));
       frame.depth[p] = 0;
       frame.object[p] = -1;
     }
-    frame.rgb[3 * p] = toByte(colour.r);
-    frame.rgb[3 * p + 1] = toByte(colour.g);
-    frame.rgb[3 * p + 2] = toByte(colour.b);
+    rgb[0] = toByte(colour.r);
+    rgb[1] = toByte(colour.g);
+    rgb[2] = toByte(colour.b);
   }
 }
 

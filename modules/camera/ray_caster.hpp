@@ -60,10 +60,14 @@ class RayCaster {
   Camera camera_;
   CameraFrame camera_frame_{Camera{}};
   int width_ = 0, height_ = 0;
+  // Depend on the intrinsics only: per column a = (cx - (u + 0.5)) / f, per
+  // row b likewise, per pixel 1 / |forward + a left + b up|.
+  std::vector<double> column_a_, row_b_, inverse_length_;
+  // Inward unit normals of the view frustum's four side planes.
+  Eigen::Vector3d frustum_normals_[4];
   // Per-pixel ray (direction with forward component 1) and the farthest ray
   // parameter with a return (range or ground, whichever is nearer).
   std::vector<double> ray_x_, ray_y_, ray_z_, t_limit_;
-  std::vector<float> ray_length_;  // |direction|: ray parameter to metres
   std::vector<uint8_t> hits_ground_;
   // Nearest solid per pixel so far.
   std::vector<double> nearest_t_;

@@ -15,20 +15,6 @@ namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
 
-// Narrows [enter, exit] to where lo <= origin + t * dir <= hi.
-inline bool clipSlab(double origin, double dir, double lo, double hi, Face face, LineInterval& interval) {
-  if (dir == 0) return origin >= lo && origin <= hi;
-  const double inv = 1.0 / dir;
-  double t1 = (lo - origin) * inv, t2 = (hi - origin) * inv;
-  if (t1 > t2) std::swap(t1, t2);
-  if (t1 > interval.enter) {
-    interval.enter = t1;
-    interval.enter_face = face;
-  }
-  if (t2 < interval.exit) interval.exit = t2;
-  return interval.enter <= interval.exit;
-}
-
 bool finitePositive(double value) { return std::isfinite(value) && value > 0; }
 
 void requireFinite(double value, const char* what) {
@@ -36,39 +22,6 @@ void requireFinite(double value, const char* what) {
 }
 
 }  // namespace
-
-bool intersectLine(const Solid& solid, const Eigen::Vector3d& o, const Eigen::Vector3d& d,
-                   LineInterval& interval) {
-  interval.enter = -SceneGeometry::kInfinity;
-  interval.exit = SceneGeometry::kInfinity;
-  interval.enter_face = Face::Inside;
-  const double ox = o.x() - solid.x, oy = o.y() - solid.y;
-  if (solid.shape == Solid::Shape::Box) {
-    // In the box's own frame (rotated by -yaw).
-    const double c = solid.cos_yaw, s = solid.sin_yaw;
-    const double lox = c * ox + s * oy, loy = -s * ox + c * oy;
-    const double ldx = c * d.x() + s * d.y(), ldy = -s * d.x() + c * d.y();
-    return clipSlab(lox, ldx, -solid.half_x, solid.half_x, Face::BoxX, interval) &&
-           clipSlab(loy, ldy, -solid.half_y, solid.half_y, Face::BoxY, interval) &&
-           clipSlab(o.z(), d.z(), solid.z_min, solid.z_max, Face::Cap, interval);
-  }
-  // Cylinder: inside the infinite vertical cylinder, then between the caps.
-  const double a = d.x() * d.x() + d.y() * d.y();
-  const double c = ox * ox + oy * oy - solid.radius * solid.radius;
-  if (a == 0) {
-    if (c > 0) return false;
-  } else {
-    const double half_b = ox * d.x() + oy * d.y();
-    const double discriminant = half_b * half_b - a * c;
-    if (discriminant < 0) return false;
-    const double root = std::sqrt(discriminant);
-    const double t1 = (-half_b - root) / a, t2 = (-half_b + root) / a;
-    interval.enter = t1;
-    interval.exit = t2;
-    interval.enter_face = Face::Round;
-  }
-  return clipSlab(o.z(), d.z(), solid.z_min, solid.z_max, Face::Cap, interval);
-}
 
 Eigen::Vector3d entryNormal(const Solid& solid, const Eigen::Vector3d& point, const Eigen::Vector3d& d,
                             Face face) {

@@ -49,7 +49,8 @@ struct LineInterval {
 };
 
 // Intersects the line o + t d (d need not be unit length) with a solid.
-bool intersectLine(const Solid& solid, const Eigen::Vector3d& o, const Eigen::Vector3d& d, LineInterval& interval);
+inline bool intersectLine(const Solid& solid, const Eigen::Vector3d& o, const Eigen::Vector3d& d,
+                          LineInterval& interval);
 // Outward unit normal where a line with direction d enters a solid through
 // `face` at `point`.
 Eigen::Vector3d entryNormal(const Solid& solid, const Eigen::Vector3d& point, const Eigen::Vector3d& d, Face face);
@@ -137,7 +138,55 @@ bool segmentBlocked(const SceneGeometry& scene, const Eigen::Vector3d& a, const 
 int segmentHitsObject(const SceneGeometry& scene, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                       int ignore_object = -1);
 
-// ---- template implementations ----
+// ---- inline and template implementations ----
+
+namespace detail {
+// Narrows [enter, exit] to where lo <= origin + t * dir <= hi.
+inline bool clipSlab(double origin, double dir, double lo, double hi, Face face, LineInterval& interval) {
+  if (dir == 0) return origin >= lo && origin <= hi;
+  const double inv = 1.0 / dir;
+  double t1 = (lo - origin) * inv, t2 = (hi - origin) * inv;
+  if (t1 > t2) std::swap(t1, t2);
+  if (t1 > interval.enter) {
+    interval.enter = t1;
+    interval.enter_face = face;
+  }
+  if (t2 < interval.exit) interval.exit = t2;
+  return interval.enter <= interval.exit;
+}
+}  // namespace detail
+
+inline bool intersectLine(const Solid& solid, const Eigen::Vector3d& o, const Eigen::Vector3d& d,
+                          LineInterval& interval) {
+  interval.enter = -std::numeric_limits<double>::infinity();
+  interval.exit = std::numeric_limits<double>::infinity();
+  interval.enter_face = Face::Inside;
+  const double ox = o.x() - solid.x, oy = o.y() - solid.y;
+  if (solid.shape == Solid::Shape::Box) {
+    // In the box's own frame (rotated by -yaw).
+    const double c = solid.cos_yaw, s = solid.sin_yaw;
+    const double lox = c * ox + s * oy, loy = -s * ox + c * oy;
+    const double ldx = c * d.x() + s * d.y(), ldy = -s * d.x() + c * d.y();
+    return detail::clipSlab(o.z(), d.z(), solid.z_min, solid.z_max, Face::Cap, interval) &&
+           detail::clipSlab(lox, ldx, -solid.half_x, solid.half_x, Face::BoxX, interval) &&
+           detail::clipSlab(loy, ldy, -solid.half_y, solid.half_y, Face::BoxY, interval);
+  }
+  // Cylinder: inside the infinite vertical cylinder, then between the caps.
+  const double a = d.x() * d.x() + d.y() * d.y();
+  const double c = ox * ox + oy * oy - solid.radius * solid.radius;
+  if (a == 0) {
+    if (c > 0) return false;
+  } else {
+    const double half_b = ox * d.x() + oy * d.y();
+    const double discriminant = half_b * half_b - a * c;
+    if (discriminant < 0) return false;
+    const double root = std::sqrt(discriminant);
+    interval.enter = (-half_b - root) / a;
+    interval.exit = (-half_b + root) / a;
+    interval.enter_face = Face::Round;
+  }
+  return detail::clipSlab(o.z(), d.z(), solid.z_min, solid.z_max, Face::Cap, interval);
+}
 
 template <typename VisitCell>
 void SceneGeometry::traverseCells(const Eigen::Vector3d& o, const Eigen::Vector3d& d, double t_min,

@@ -1,0 +1,151 @@
+// beft-bench-camera (./beft bench camera): frames per second of the RGBD ray
+// caster for 160x120 and 640x480 images over random scenes of 10 to 1000
+// objects, for each render method, with brute force as the baseline.
+#include <time.h>
+
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "camera_messages.hpp"
+#include "ray_caster.hpp"
+#include "scene_geometry.hpp"
+
+using namespace beft::camera;
+
+namespace {
+
+struct BenchScene {
+  SceneGeometry geometry;
+  std::vector<Camera> cameras;  // poses cycled through, all clear of objects
+};
+
+// Walls, crates and persons scattered over a width x height yard.
+BenchScene randomScene(int objects, double width, double height, int image_width, int image_height,
+                       uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> x(0, width), y(0, height), angle(0, 360), unit(0, 1);
+  BenchScene scene;
+  scene.geometry.setObjectCount(objects);
+  for (int i = 0; i < objects; ++i) {
+    const double kind = unit(random);
+    if (kind < 0.3) {
+      scene.geometry.addBox(i, x(random), y(random), 0, angle(random), 1 + 4 * unit(random), 0.2, 2 + unit(random),
+                            0x808080);
+    } else if (kind < 0.6) {
+      scene.geometry.addBox(i, x(random), y(random), 0, angle(random), 0.5 + 1.5 * unit(random),
+                            0.5 + 1.5 * unit(random), 0.5 + 1.5 * unit(random), 0x8a6a3a);
+    } else {
+      scene.geometry.addCylinder(i, x(random), y(random), 0, 0.25 + 0.15 * unit(random), 1.7 + 0.2 * unit(random),
+                                 0xd04040);
+    }
+  }
+  scene.geometry.buildIndex();
+  std::vector<int> near;
+  while (scene.cameras.size() < 16) {
+    const double cx = x(random), cy = y(random);
+    near.clear();
+    scene.geometry.solidsNear(cx, cy, 0.5, near);
+    bool clear = true;
+    for (int s : near) clear = clear && footprintDistance(scene.geometry.solids()[s], cx, cy) > 0.4;
+    if (!clear) continue;
+    Camera camera;
+    camera.pose = {cx, cy, 1.6, angle(random), -15 + 30 * unit(random)};
+    camera.intrinsics = {90, image_width, image_height, 20};
+    scene.cameras.push_back(camera);
+  }
+  return scene;
+}
+
+// CPU time of this thread [s]: the figure does not depend on what else the
+// machine runs.
+double threadSeconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return now.tv_sec + 1e-9 * now.tv_nsec;
+}
+
+// Frames per CPU second rendering for about `seconds` (at least min_frames).
+double framesPerSecond(const BenchScene& scene, RenderMethod method, double seconds, int min_frames,
+                       bool encode) {
+  RayCaster caster;
+  RenderedFrame frame;
+  CameraMessages messages;
+  std::vector<std::string> ids(scene.geometry.objectCount(), "object");
+  caster.render(scene.geometry, scene.cameras[0], frame, method);  // warm up buffers
+  const double start = threadSeconds();
+  int frames = 0;
+  double elapsed = 0;
+  while (frames < min_frames || elapsed < seconds) {
+    caster.render(scene.geometry, scene.cameras[frames % scene.cameras.size()], frame, method);
+    if (encode) encodeCameraMessages(frame, 0, frames, ids, messages);
+    ++frames;
+    elapsed = threadSeconds() - start;
+  }
+  return frames / elapsed;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<int> object_counts{10, 30, 100, 1000};
+  double seconds = 0.5;
+  double width = 60, height = 40;
+  uint64_t seed = 1;
+  bool skip_brute_force = false;
+  CLI::App app(
+      "Benchmarks the RGBD camera's ray caster: frames per second on one core for 160x120 and 640x480 images "
+      "over random scenes (walls, crates, persons in a yard), for each render method: projection (used by the "
+      "world), grid traversal, and brute force (every object for every ray) as the baseline; the last column "
+      "is projection over brute force. A last table times a whole world frame: render plus the three "
+      "CAMERA_* messages.",
+      "beft-bench-camera");
+  app.add_option("--objects", object_counts, "object counts to test")->capture_default_str()->delimiter(',');
+  app.add_option("--seconds", seconds, "CPU time per measurement [s]")->capture_default_str()->check(
+      CLI::PositiveNumber);
+  app.add_option("--world", width, "yard width [m] (height is 2/3 of it)")->capture_default_str()->check(
+      CLI::PositiveNumber);
+  app.add_option("--seed", seed, "random scene seed")->capture_default_str();
+  app.add_flag("--no-brute-force", skip_brute_force, "skip the slow baseline");
+  CLI11_PARSE(app, argc, argv);
+  height = width * 2.0 / 3.0;
+  for (int count : object_counts) {
+    if (count < 0) {
+      std::fprintf(stderr, "beft-bench-camera: --objects must be >= 0\n");
+      return 2;
+    }
+  }
+
+  std::printf("RGBD camera ray caster, frames per second of CPU time on one core; yard %.0f x %.0f m, range 20 m, fov 90 deg, 16 poses cycled\n",
+              width, height);
+  std::printf("%8s %9s %12s %12s %12s %10s\n", "objects", "image", "projection", "grid", "brute-force",
+              "speed-up");
+  const int sizes[2][2] = {{160, 120}, {640, 480}};
+  for (int count : object_counts) {
+    for (const auto& size : sizes) {
+      const BenchScene scene = randomScene(count, width, height, size[0], size[1], seed);
+      const double projection = framesPerSecond(scene, RenderMethod::Projection, seconds, 3, false);
+      const double grid = framesPerSecond(scene, RenderMethod::GridTraversal, seconds, 3, false);
+      char resolution[32];
+      std::snprintf(resolution, sizeof(resolution), "%dx%d", size[0], size[1]);
+      if (skip_brute_force) {
+        std::printf("%8d %9s %10.1f/s %10.1f/s %12s %10s\n", count, resolution, projection, grid, "-", "-");
+      } else {
+        const double brute = framesPerSecond(scene, RenderMethod::BruteForce, seconds, 1, false);
+        std::printf("%8d %9s %10.1f/s %10.1f/s %10.2f/s %9.1fx\n", count, resolution, projection, grid, brute,
+                    projection / brute);
+      }
+      std::fflush(stdout);
+    }
+  }
+  std::printf("\nWhole camera frame as the world publishes it (projection render + 3 messages), 160x120:\n");
+  for (int count : object_counts) {
+    const BenchScene scene = randomScene(count, width, height, 160, 120, seed);
+    std::printf("%8d objects: %10.1f frames/s\n", count,
+                framesPerSecond(scene, RenderMethod::Projection, seconds, 3, true));
+  }
+  return 0;
+}

@@ -1,0 +1,113 @@
+#include "world_expert.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <beft/robot_command_t.hpp>
+
+#include "channels.hpp"
+#include "load_scenario.hpp"
+#include "log.hpp"
+
+namespace beft::world {
+
+std::string WorldExpert::description() const {
+  return "The simulated world: loads a scenario, owns simulated time (tick k at t = k * dt) and, each time it "
+         "is fired, applies the latest robot command, moves objects along their paths, applies due events, "
+         "then publishes ground truth, robot state and the RGBD camera frame of that tick.";
+}
+
+std::vector<beft::expert::ChannelSpec> WorldExpert::reads() const {
+  return {{channels::kRobotCommand, "beft.robot_command_t"}};
+}
+
+std::vector<beft::expert::ChannelSpec> WorldExpert::writes() const {
+  return {{channels::kGroundTruth, "beft.scene_objects_t"},
+          {channels::kRobotState, "beft.robot_state_t"},
+          {channels::kCameraColor, "beft.camera_frame_t"},
+          {channels::kCameraDepth, "beft.camera_frame_t"},
+          {channels::kCameraInstance, "beft.camera_frame_t"}};
+}
+
+std::vector<std::vector<std::string>> WorldExpert::parameterHelp() const {
+  return {{"depth_noise", "0",
+           "depth noise: standard deviation depth_noise * depth^2 [m], seeded by --seed and the tick"}};
+}
+
+void WorldExpert::onStartUp(const beft::expert::Parameters& parameters) {
+  if (scenario_path.empty()) throw std::invalid_argument("--scenario FILE is required");
+  WorldOptions options;
+  options.depth_noise = parameters.getDouble("depth_noise", 0.0);
+  if (!(options.depth_noise >= 0) || !std::isfinite(options.depth_noise)) {
+    throw std::invalid_argument("depth_noise must be finite and >= 0");
+  }
+  try {
+    scenario_ = std::make_unique<scenario::Scenario>(scenario::loadScenario(scenario_path));
+  } catch (const scenario::ScenarioError& e) {
+    throw std::invalid_argument(e.what());
+  }
+  options.seed = seed.value_or(scenario_->seed);
+  const scenario::Camera& camera = scenario_->robot.camera;
+  simulation_ = std::make_unique<WorldSimulation>(*scenario_, options);
+  if (static_cast<int64_t>(camera.width) * camera.height * 3 > 60000) {
+    log::warn("camera ", camera.width, "x", camera.height,
+              ": colour frames exceed 64 KB and travel fragmented on LCM (a lost fragment loses the frame)");
+  }
+  log::info("scenario '", scenario_->name, "' (", scenario_->objects.size(), " objects, dt ", scenario_->dt,
+            " s, seed ", options.seed, ")");
+  logNotes();
+}
+
+bool WorldExpert::onMessage(const std::string& channel, const void* data, int size) {
+  if (channel != channels::kRobotCommand || !simulation_) return false;
+  beft::robot_command_t command;
+  if (!beft::expert::decodeMessage(data, size, command)) return false;
+  const CommandCheck check = simulation_->submitCommand(command);
+  if (!check.command) {
+    ++refused_commands_;
+    if (refused_commands_ <= 20 || refused_commands_ % 1000 == 0) {
+      log::warn("ignored ROBOT_CMD: ", check.refusal, " (", refused_commands_, " refused so far)");
+    }
+  } else if (!check.adjustments.empty() && check.adjustments != last_adjustment_logged_) {
+    log::info("ROBOT_CMD adjusted: ", check.adjustments);
+  }
+  if (check.command) last_adjustment_logged_ = check.adjustments;
+  return true;
+}
+
+void WorldExpert::logNotes() {
+  for (const std::string& note : simulation_->notes()) log::info(note);
+}
+
+void WorldExpert::publishState(beft::expert::Output& out) {
+  out.publish(channels::kGroundTruth, simulation_->groundTruth());
+  out.publish(channels::kRobotState, simulation_->robotState());
+  simulation_->cameraMessages(camera_messages_);
+  out.publish(channels::kCameraColor, camera_messages_.color);
+  out.publish(channels::kCameraDepth, camera_messages_.depth);
+  out.publish(channels::kCameraInstance, camera_messages_.instance);
+  published_any_ = true;
+}
+
+beft::expert::Outcome WorldExpert::fire(const beft::expert::Firing& firing, beft::expert::Output& out) {
+  if (!simulation_) return beft::expert::Outcome::failure("no scenario loaded");
+  const int64_t current = simulation_->tick();
+  if (firing.tick < current) {
+    return beft::expert::Outcome::failure("tick " + std::to_string(firing.tick) + " is already past (world at tick " +
+                                          std::to_string(current) + ")");
+  }
+  if (firing.tick == current && published_any_) {
+    log::info("fired again for tick ", current, ": publishing the same state again");
+  } else if (firing.tick - current > 1) {
+    log::warn("fired for tick ", firing.tick, " at tick ", current, ": stepping through ", firing.tick - current,
+              " ticks with the command in force");
+  }
+  while (simulation_->tick() < firing.tick) {
+    simulation_->step();
+    logNotes();
+  }
+  publishState(out);
+  return beft::expert::Outcome::success();
+}
+
+}  // namespace beft::world

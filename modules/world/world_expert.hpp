@@ -1,0 +1,51 @@
+// The world as an expert: the arbiter fires it once per tick; each firing
+// advances the simulation to the firing's tick and publishes the state there.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "expert.hpp"
+#include "world_simulation.hpp"
+
+namespace beft::world {
+
+class WorldExpert : public beft::expert::Expert {
+ public:
+  // Set from the command line (--scenario, --seed) before onStartUp.
+  std::string scenario_path;
+  std::optional<uint64_t> seed;  // empty: the scenario's seed
+
+  std::string name() const override { return "world"; }
+  std::string description() const override;
+  std::vector<beft::expert::ChannelSpec> reads() const override;
+  std::vector<beft::expert::ChannelSpec> writes() const override;
+  std::vector<std::vector<std::string>> parameterHelp() const override;
+
+  // Loads the scenario (std::invalid_argument with FILE:LINE on a bad file).
+  void onStartUp(const beft::expert::Parameters& parameters) override;
+  bool onMessage(const std::string& channel, const void* data, int size) override;
+  // Tick 0 publishes the initial state; tick k > current steps up to k (one
+  // step per tick, each with the command in force). A tick already passed
+  // is refused (the world cannot go back).
+  beft::expert::Outcome fire(const beft::expert::Firing& firing, beft::expert::Output& out) override;
+
+  // For tests and the free-running mode.
+  WorldSimulation* simulation() { return simulation_.get(); }
+  // Publishes the current tick's messages.
+  void publishState(beft::expert::Output& out);
+
+ private:
+  void logNotes();
+
+  std::unique_ptr<scenario::Scenario> scenario_;
+  std::unique_ptr<WorldSimulation> simulation_;
+  camera::CameraMessages camera_messages_;
+  bool published_any_ = false;
+  std::string last_adjustment_logged_;
+  int64_t refused_commands_ = 0;
+};
+
+}  // namespace beft::world
