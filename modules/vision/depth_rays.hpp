@@ -11,8 +11,10 @@
 
 namespace beft::vision {
 
-// Rays in row-major pixel order; t = depth in metres (0: no return). Throws
+// The frame's rays; t = depth in metres (0: no return). Throws
 // std::invalid_argument on a frame that is not DEPTH_MM16 or has a wrong size.
-std::vector<DepthRay> depthRays(const camera_frame_t& depth);
+DepthImage depthRays(const camera_frame_t& depth);
+// The same into an existing image (reuses its memory).
+void depthRays(const camera_frame_t& depth, DepthImage& image);
 
 }  // namespace beft::vision

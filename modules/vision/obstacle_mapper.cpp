@@ -1,8 +1,10 @@
 #include "obstacle_mapper.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "obstacle_map_codec.hpp"  // beft_obstacle_map
 
@@ -52,14 +54,18 @@ int ObstacleMapper::countCells(uint8_t value) const {
   return count;
 }
 
-void ObstacleMapper::integrate(const Eigen::Vector3d& origin, const std::vector<DepthRay>& rays,
-                               int free_space_stride) {
+void ObstacleMapper::integrate(const Eigen::Vector3d& origin, const DepthImage& image) {
+  if (image.width < 0 || image.height < 0 ||
+      image.rays.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height))
+    throw std::invalid_argument("depth image of " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                " holds " + std::to_string(image.rays.size()) + " rays");
   ++frame_;
-  if (free_space_stride < 1) free_space_stride = 1;
-  // Obstacle returns first, so that free space of this frame never clears them.
+  auto hasReturn = [](const DepthRay& ray) { return ray.t > 0 && std::isfinite(ray.t); };
+
+  // Obstacle returns first, so that no ray of this frame clears them.
   std::vector<std::size_t> obstacle_cells;
-  for (const auto& ray : rays) {
-    if (!(ray.t > 0) || !std::isfinite(ray.t)) continue;
+  for (const auto& ray : image.rays) {
+    if (!hasReturn(ray)) continue;
     const Eigen::Vector3d hit = origin + ray.t * ray.direction;
     if (hit.z() <= config_.obstacle_min_height) continue;
     int column = 0, row = 0;
@@ -68,68 +74,118 @@ void ObstacleMapper::integrate(const Eigen::Vector3d& origin, const std::vector<
     hit_in_frame_[index] = frame_;
     obstacle_cells.push_back(index);
   }
-  for (std::size_t i = 0; i < rays.size(); i += static_cast<std::size_t>(free_space_stride)) {
-    const auto& ray = rays[i];
-    if (!(ray.t > 0) || !std::isfinite(ray.t)) continue;
-    traverseFreeSpace(origin, ray.direction, ray.t);
+  // Per image column: seen cells along its farthest-reaching ray; then the
+  // floor stretches of its floor returns, nearest first, each from where the
+  // nearer one ended (the rays of a column share a horizontal direction when
+  // the head is level, and the lowest ray over a cell is the one ending just
+  // beyond it). Returns closer than a cell to the last one used add nothing.
+  const double cell_diagonal = config_.resolution * M_SQRT2;
+  std::vector<ColumnRay>& column_rays = column_rays_;
+  for (int u = 0; u < image.width; ++u) {
+    column_rays.clear();
+    const DepthRay* farthest = nullptr;
+    double farthest_reach = 0;
+    for (int v = 0; v < image.height; ++v) {
+      const DepthRay& ray = image.rays[static_cast<std::size_t>(v) * image.width + u];
+      if (!hasReturn(ray)) continue;
+      const double horizontal = std::sqrt(ray.direction.x() * ray.direction.x() + ray.direction.y() * ray.direction.y());
+      const double reach = ray.t * horizontal;
+      if (reach > farthest_reach) {
+        farthest_reach = reach;
+        farthest = &ray;
+      }
+      if (origin.z() + ray.t * ray.direction.z() <= config_.obstacle_min_height)
+        column_rays.push_back({reach, horizontal, &ray});
+    }
+    if (farthest != nullptr) markSeen(origin, *farthest);
+    std::sort(column_rays.begin(), column_rays.end(),
+              [](const ColumnRay& a, const ColumnRay& b) { return a.reach < b.reach; });
+    double covered = -1;  // horizontal distance up to which a nearer ray ran low
+    for (const ColumnRay& c : column_rays) {
+      if (covered >= 0 && c.reach < covered + config_.resolution) continue;
+      const double t_from = covered > 0 && c.horizontal > 0 ? std::max(0.0, (covered - cell_diagonal) / c.horizontal) : 0.0;
+      clearBelowThreshold(origin, *c.ray, t_from);
+      covered = c.reach;
+    }
   }
-  for (std::size_t index : obstacle_cells) cells_[index] = kOccupied;
+  for (std::size_t index : obstacle_cells) set(index, kOccupied);
 }
 
-// Walks the cells under the ray's horizontal projection from the camera to
-// just before the return (Amanatides-Woo grid traversal), with the ray's
-// height where it enters and leaves each cell.
-void ObstacleMapper::traverseFreeSpace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
-                                       double t_return) {
-  const double range = t_return;  // ray parameter of the return
+template <typename Visit>
+void ObstacleMapper::traverse(const Eigen::Vector3d& o, const Eigen::Vector3d& d, double t_begin, double t_end,
+                              Visit&& visit) const {
+  const Eigen::Vector3d start = o + t_begin * d;
   int column = 0, row = 0;
-  if (!cellOf(origin.x(), origin.y(), column, row)) return;
-  const Eigen::Vector3d hit = origin + range * direction;
-  int hit_column = -1, hit_row = -1;
-  cellOf(hit.x(), hit.y(), hit_column, hit_row);
+  if (!cellOf(start.x(), start.y(), column, row)) return;
+  const Eigen::Vector3d end = o + t_end * d;
+  int end_column = -1, end_row = -1;
+  cellOf(end.x(), end.y(), end_column, end_row);
 
   const double r = config_.resolution;
   const double inf = std::numeric_limits<double>::infinity();
-  const int step_x = direction.x() > 0 ? 1 : -1;
-  const int step_y = direction.y() > 0 ? 1 : -1;
-  const double next_x = (column + (step_x > 0 ? 1 : 0)) * r;
-  const double next_y = (row + (step_y > 0 ? 1 : 0)) * r;
-  double s_max_x = std::abs(direction.x()) > 1e-12 ? (next_x - origin.x()) / direction.x() : inf;
-  double s_max_y = std::abs(direction.y()) > 1e-12 ? (next_y - origin.y()) / direction.y() : inf;
-  const double s_delta_x = std::abs(direction.x()) > 1e-12 ? r / std::abs(direction.x()) : inf;
-  const double s_delta_y = std::abs(direction.y()) > 1e-12 ? r / std::abs(direction.y()) : inf;
+  const int step_x = d.x() > 0 ? 1 : -1;
+  const int step_y = d.y() > 0 ? 1 : -1;
+  const bool moves_x = std::abs(d.x()) > 1e-12, moves_y = std::abs(d.y()) > 1e-12;
+  double t_next_x = moves_x ? ((column + (step_x > 0 ? 1 : 0)) * r - o.x()) / d.x() : inf;
+  double t_next_y = moves_y ? ((row + (step_y > 0 ? 1 : 0)) * r - o.y()) / d.y() : inf;
+  const double t_delta_x = moves_x ? r / std::abs(d.x()) : inf;
+  const double t_delta_y = moves_y ? r / std::abs(d.y()) : inf;
 
-  double s_enter = 0;
-  while (true) {
-    if (column == hit_column && row == hit_row) {
-      // The cell of a ground return: seen, but only part of it.
-      if (hit.z() <= config_.obstacle_min_height) {
-        auto& c = cells_[static_cast<std::size_t>(row) * width_ + column];
-        if (c == kUnknown) c = kFree;
-      }
-      return;
-    }
-    const double s_exit = std::min({s_max_x, s_max_y, range});
-    const std::size_t index = static_cast<std::size_t>(row) * width_ + column;
-    auto& c = cells_[index];
-    if (c == kUnknown) {
-      c = kFree;
-    } else if (c == kOccupied && hit_in_frame_[index] != frame_) {
-      const double highest = std::max(origin.z() + s_enter * direction.z(), origin.z() + s_exit * direction.z());
-      if (highest < config_.obstacle_min_height) c = kFree;
-    }
-    if (s_exit >= range) return;
-    if (s_max_x < s_max_y) {
+  double t_enter = t_begin;
+  while (!(column == end_column && row == end_row)) {
+    const double t_exit = std::min({t_next_x, t_next_y, t_end});
+    visit(static_cast<std::size_t>(row) * width_ + column, t_enter, t_exit);
+    if (t_exit >= t_end) return;
+    if (t_next_x < t_next_y) {
       column += step_x;
-      s_enter = s_max_x;
-      s_max_x += s_delta_x;
+      t_enter = t_next_x;
+      t_next_x += t_delta_x;
     } else {
       row += step_y;
-      s_enter = s_max_y;
-      s_max_y += s_delta_y;
+      t_enter = t_next_y;
+      t_next_y += t_delta_y;
     }
     if (column < 0 || row < 0 || column >= width_ || row >= height_) return;
   }
+}
+
+// UNKNOWN -> FREE along the ray up to its return; the cell of a floor return
+// is seen too.
+void ObstacleMapper::markSeen(const Eigen::Vector3d& origin, const DepthRay& ray) {
+  traverse(origin, ray.direction, 0.0, ray.t, [&](std::size_t index, double, double) {
+    if (cells_[index] == kUnknown) set(index, kFree);
+  });
+  const Eigen::Vector3d hit = origin + ray.t * ray.direction;
+  int column = 0, row = 0;
+  if (hit.z() <= config_.obstacle_min_height && cellOf(hit.x(), hit.y(), column, row)) {
+    const std::size_t index = static_cast<std::size_t>(row) * width_ + column;
+    if (cells_[index] == kUnknown) set(index, kFree);
+  }
+}
+
+// Where the ray runs below the obstacle height it proves the floor empty:
+// clears obstacles of earlier frames there (and marks the cells seen).
+void ObstacleMapper::clearBelowThreshold(const Eigen::Vector3d& origin, const DepthRay& ray, double t_from) {
+  const double threshold = config_.obstacle_min_height;
+  double t_below = t_from;  // from where on the ray stays below the threshold
+  if (origin.z() >= threshold) {
+    if (!(ray.direction.z() < 0)) return;
+    t_below = std::max(t_from, (threshold - origin.z()) / ray.direction.z());
+    if (t_below >= ray.t) return;
+  }
+  // The first cell is entered part way: the ray's height where it truly
+  // entered it is unknown here, so it only counts as seen.
+  bool first_cell = true;
+  traverse(origin, ray.direction, t_below, ray.t, [&](std::size_t index, double t_enter, double t_exit) {
+    const uint8_t c = cells_[index];
+    if (c == kUnknown) {
+      set(index, kFree);
+    } else if (c == kOccupied && !first_cell && hit_in_frame_[index] != frame_) {
+      const double highest = origin.z() + std::max(t_enter * ray.direction.z(), t_exit * ray.direction.z());
+      if (highest < threshold) set(index, kFree);
+    }
+    first_cell = false;
+  });
 }
 
 obstacle_map_t ObstacleMapper::toMessage(int64_t utime, int64_t tick) const {
@@ -139,9 +195,9 @@ obstacle_map_t ObstacleMapper::toMessage(int64_t utime, int64_t tick) const {
   grid.resolution = config_.resolution;
   grid.cells = cells_;
   // RLE keeps a mostly uniform 60000-cell map at a few kB; raw bounds the worst case.
-  const bool rle_smaller = planners::encodeRle(cells_).size() < cells_.size();
-  return planners::makeObstacleMap(grid, rle_smaller ? obstacle_map_t::ENCODING_RLE : obstacle_map_t::ENCODING_RAW,
-                                   utime, tick);
+  obstacle_map_t map = planners::makeObstacleMap(grid, obstacle_map_t::ENCODING_RLE, utime, tick);
+  if (map.data.size() >= cells_.size()) map = planners::makeObstacleMap(grid, obstacle_map_t::ENCODING_RAW, utime, tick);
+  return map;
 }
 
 }  // namespace beft::vision

@@ -1,18 +1,23 @@
 // The obstacle map M_O (paper section 3.1): footprints of every obstacle the
 // camera has seen so far, accumulated over the run from depth images.
 //
-// Per frame, each depth pixel is a ray from the camera with the range of its
-// return (none within the sensor range: no evidence at all):
+// Per frame, each depth pixel is a ray from the camera with the ray parameter
+// of its return (none within the sensor range: no evidence at all):
 //  - a return higher than obstacle_min_height above the ground is a point of
 //    an obstacle: its cell becomes OCCUPIED;
-//  - the cells the ray crossed before its return become FREE if they were
-//    UNKNOWN (the ray saw through them);
+//  - cells a ray crossed before its return were seen: UNKNOWN becomes FREE.
+//    Traced along the farthest-reaching ray of each image column, which
+//    crosses every cell the column's other rays cross when the head is level
+//    (the rays of a column share one horizontal direction then; with the head
+//    tilted they fan out slightly and a few cells between them stay UNKNOWN);
 //  - an OCCUPIED cell is cleared to FREE only when a ray crossed it entirely
-//    below obstacle_min_height: whatever stood there is gone. This is how a
-//    person who walked away stops blocking the map once the floor where they
-//    stood is seen again, while a ray passing high over a low obstacle (or a
-//    view of a wall from another side) never erases it. Cells hit in the same
-//    frame are never cleared by that frame.
+//    below obstacle_min_height (the last stretch of a ray to the floor): what
+//    stood there is gone. Per column, each cell is checked against the lowest
+//    floor ray over it (the one whose return is just beyond it); the camera is
+//    assumed above obstacle_min_height. So a person who walked away stops blocking the map
+//    once the floor where they stood is seen again, while a ray passing high
+//    over a low obstacle, or a view of a wall from another side, never erases
+//    it. Cells hit in the same frame are never cleared by that frame.
 #pragma once
 
 #include <cstdint>
@@ -31,6 +36,12 @@ struct DepthRay {
   double t = 0;
 };
 
+// The rays of one depth image, row-major: ray (u, v) is rays[v * width + u].
+struct DepthImage {
+  int width = 0, height = 0;
+  std::vector<DepthRay> rays;
+};
+
 struct ObstacleMapConfig {
   double resolution = 0.1;           // cell edge [m]
   double obstacle_min_height = 0.15; // returns above this are obstacles [m]
@@ -41,9 +52,9 @@ class ObstacleMapper {
   // A grid covering x in [0, world_width], y in [0, world_height].
   ObstacleMapper(double world_width, double world_height, const ObstacleMapConfig& config);
 
-  // Adds one frame seen from camera position origin. free_space_stride: use
-  // every n-th ray for free space (all rays always mark obstacles).
-  void integrate(const Eigen::Vector3d& origin, const std::vector<DepthRay>& rays, int free_space_stride = 1);
+  // Adds one frame seen from camera position origin. Throws
+  // std::invalid_argument if the image's size does not match its rays.
+  void integrate(const Eigen::Vector3d& origin, const DepthImage& image);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -54,13 +65,30 @@ class ObstacleMapper {
   uint8_t cellAt(double x, double y) const;
   int countCells(uint8_t value) const;
   const std::vector<uint8_t>& cells() const { return cells_; }
+  // Grows whenever a cell changes value: an unchanged version means an
+  // unchanged map.
+  uint64_t version() const { return version_; }
 
   // The whole map as a message (RLE, or raw when that is smaller).
   obstacle_map_t toMessage(int64_t utime, int64_t tick) const;
 
  private:
   bool cellOf(double x, double y, int& column, int& row) const;
-  void traverseFreeSpace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double t_return);
+  // Walks the cells under o + t d for t in [t_begin, t_end) (Amanatides-Woo);
+  // visit(index, t_enter, t_exit) for each, then ends at the cell of t_end
+  // (not visited).
+  template <typename Visit>
+  void traverse(const Eigen::Vector3d& o, const Eigen::Vector3d& d, double t_begin, double t_end,
+                Visit&& visit) const;
+  void set(std::size_t index, uint8_t value) {
+    if (cells_[index] != value) {
+      cells_[index] = value;
+      ++version_;
+    }
+  }
+  void markSeen(const Eigen::Vector3d& origin, const DepthRay& ray);
+  // From ray parameter t_from on (earlier cells were covered by a lower ray).
+  void clearBelowThreshold(const Eigen::Vector3d& origin, const DepthRay& ray, double t_from);
 
   ObstacleMapConfig config_;
   int width_ = 0;
@@ -68,6 +96,13 @@ class ObstacleMapper {
   std::vector<uint8_t> cells_;
   std::vector<uint32_t> hit_in_frame_;  // frame number of the last obstacle return per cell
   uint32_t frame_ = 0;
+  uint64_t version_ = 0;
+  struct ColumnRay {
+    double reach;       // horizontal distance to the return [m]
+    double horizontal;  // horizontal length of the direction
+    const DepthRay* ray;
+  };
+  std::vector<ColumnRay> column_rays_;  // scratch, kept between frames
 };
 
 }  // namespace beft::vision

@@ -37,17 +37,14 @@ std::vector<expert::ChannelSpec> VisionExpert::writes() const {
 
 std::vector<std::vector<std::string>> VisionExpert::parameterHelp() const {
   return {{"resolution", "0.1", "obstacle map cell edge [m]"},
-          {"obstacle_min_height", "0.15", "depth returns above this height are obstacles [m]"},
-          {"free_space_stride", "2", "trace free space along every n-th depth pixel (obstacles use all)"}};
+          {"obstacle_min_height", "0.15", "depth returns above this height are obstacles [m]"}};
 }
 
 void VisionExpert::onStartUp(const expert::Parameters& parameters) {
   map_config_.resolution = parameters.getDouble("resolution", map_config_.resolution);
   map_config_.obstacle_min_height = parameters.getDouble("obstacle_min_height", map_config_.obstacle_min_height);
-  free_space_stride_ = static_cast<int>(parameters.getInt("free_space_stride", free_space_stride_));
   if (!(map_config_.resolution > 0)) throw std::invalid_argument("resolution must be > 0");
   if (!(map_config_.obstacle_min_height >= 0)) throw std::invalid_argument("obstacle_min_height must be >= 0");
-  if (free_space_stride_ < 1) throw std::invalid_argument("free_space_stride must be >= 1");
 }
 
 bool VisionExpert::onMessage(const std::string& channel, const void* data, int size) {
@@ -75,7 +72,14 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     const std::vector<int> visible = countVisiblePixels(*instance, *scene);
     out.publish(channels::kVision, estimateVisualOcclusion(*scene, visible, expected));
     updateMap(*scene, *depth, firing.tick);
-    out.publish(channels::kObstacleMap, mapper_->toMessage(scene->utime, firing.tick));
+    // Re-encoded only when a cell changed (a robot standing still sees no change).
+    if (map_message_version_ == 0 || mapper_->version() != map_message_version_) {
+      map_message_ = mapper_->toMessage(scene->utime, firing.tick);
+      map_message_version_ = mapper_->version();
+    }
+    map_message_.utime = scene->utime;
+    map_message_.tick = firing.tick;
+    out.publish(channels::kObstacleMap, map_message_);
   } catch (const std::exception& e) {
     return expert::Outcome::failure("tick " + std::to_string(firing.tick) + ": " + e.what());
   }
@@ -89,10 +93,12 @@ void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t&
     mapped_world_width_ = scene.world_width;
     mapped_world_height_ = scene.world_height;
     last_mapped_tick_ = -1;
+    map_message_version_ = 0;
   }
   if (tick == last_mapped_tick_) return;  // a re-sent FIRE: this frame is in the map already
   const Eigen::Vector3d origin(depth.cam_x, depth.cam_y, depth.cam_z);
-  mapper_->integrate(origin, depthRays(depth), free_space_stride_);
+  depthRays(depth, depth_image_);
+  mapper_->integrate(origin, depth_image_);
   last_mapped_tick_ = tick;
 }
 

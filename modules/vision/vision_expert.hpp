@@ -31,10 +31,12 @@ class VisionExpert : public expert::Expert {
   void updateMap(const scene_objects_t& scene, const camera_frame_t& depth, int64_t tick);
 
   ObstacleMapConfig map_config_;
-  int free_space_stride_ = 2;
   std::unique_ptr<ObstacleMapper> mapper_;
   double mapped_world_width_ = 0, mapped_world_height_ = 0;
   int64_t last_mapped_tick_ = -1;
+  DepthImage depth_image_;             // reused between frames
+  obstacle_map_t map_message_;         // the map as last encoded
+  uint64_t map_message_version_ = 0;   // mapper version it encodes (0: none yet)
   camera::RayCaster ray_caster_;
   expert::TickChannel<scene_objects_t> scene_;
   expert::TickChannel<camera_frame_t> depth_{4};

@@ -3,10 +3,14 @@
 
 #include <cmath>
 
+#include "camera_messages.hpp"
 #include "camera_model.hpp"
 #include "depth_rays.hpp"
 #include "obstacle_map_codec.hpp"
 #include "obstacle_mapper.hpp"
+#include "ray_caster.hpp"
+#include "scene_builders.hpp"
+#include "scene_geometry.hpp"
 
 using namespace beft;
 
@@ -51,6 +55,11 @@ camera_frame_t wallDepthImage(double wall_x) {
   return f;
 }
 
+// Hand-made rays as a one-row image: each ray is its own image column.
+vision::DepthImage oneRow(const std::vector<vision::DepthRay>& rays) {
+  return {static_cast<int>(rays.size()), 1, rays};
+}
+
 }  // namespace
 
 TEST(ObstacleMapper, WallAtKnownDistanceMarksItsCellsAndTheFreeSpaceBeforeIt) {
@@ -89,7 +98,7 @@ TEST(ObstacleMapper, ASecondViewNeverErasesTheWall) {
     const Eigen::Vector3d target(12.05, y, 0.0);
     over_the_top.push_back({target - origin, 1.0});
   }
-  map.integrate(origin, over_the_top);
+  map.integrate(origin, oneRow(over_the_top));
   EXPECT_EQ(map.countCells(kOccupied), occupied);
 }
 
@@ -99,29 +108,61 @@ TEST(ObstacleMapper, AnObstacleThatLeftIsClearedOnlyWhenItsFloorIsSeen) {
   auto rayTo = [&](const Eigen::Vector3d& point) { return vision::DepthRay{point - origin, 1.0}; };
 
   // A person at x = 5.05 is seen: cell (50, 50) becomes occupied.
-  map.integrate(origin, {rayTo({5.05, 5.05, 1.0})});
+  map.integrate(origin, oneRow({rayTo({5.05, 5.05, 1.0})}));
   ASSERT_EQ(map.cell(50, 50), kOccupied);
 
   // Same frame evidence never clears: an obstacle return and a low ray through its cell.
-  map.integrate(origin, {rayTo({5.05, 5.05, 1.0}), rayTo({5.25, 5.05, 0.0})});
+  map.integrate(origin, oneRow({rayTo({5.05, 5.05, 1.0}), rayTo({5.25, 5.05, 0.0})}));
   EXPECT_EQ(map.cell(50, 50), kOccupied);
 
   // The person walked away; a ray to the ground just behind crosses the cell
   // above 0.15 m: no proof the cell is empty at floor level.
-  map.integrate(origin, {rayTo({5.55, 5.05, 0.0})});
+  map.integrate(origin, oneRow({rayTo({5.55, 5.05, 0.0})}));
   EXPECT_EQ(map.cell(50, 50), kOccupied);
 
   // A ray to the ground at x = 5.25 crosses cell 50 below 0.15 m: cleared.
-  map.integrate(origin, {rayTo({5.25, 5.05, 0.0})});
+  map.integrate(origin, oneRow({rayTo({5.25, 5.05, 0.0})}));
   EXPECT_EQ(map.cell(50, 50), kFree);
   EXPECT_EQ(map.cell(52, 50), kFree);  // the ground return's own cell is seen too
+}
+
+TEST(ObstacleMapper, APersonWhoWalkedAwayLeavesNoTraceButTheWallStays) {
+  // Rendered frames: the camera at (2, 5) looks along +x at a person 4 m
+  // ahead and a wall 8 m ahead; then the person steps 3 m aside.
+  camera::Camera cam;
+  cam.pose = {2, 5, 1.6, 0, 0};
+  auto depthFrame = [&](double person_y) {
+    const auto s = test::scene({test::cylinderObject("walker", "person", 6, person_y, 0.3, 1.8),
+                                test::boxObject("wall", "wall", 10, 5, 90, 8, 0.2, 2.5)},
+                               0, 20, 10);
+    camera::CameraMessages messages;
+    camera::encodeCameraMessages(camera::renderFrame(camera::SceneGeometry::fromMessage(s), cam), 0, 0,
+                                 {"walker", "wall"}, messages);
+    return messages.depth;
+  };
+  auto occupiedNear = [](const vision::ObstacleMapper& map, double x, double y, double half) {
+    int count = 0;
+    for (double cx = x - half; cx <= x + half; cx += 0.1)
+      for (double cy = y - half; cy <= y + half; cy += 0.1) count += map.cellAt(cx, cy) == kOccupied;
+    return count;
+  };
+  vision::ObstacleMapper map(20, 10, {});
+  map.integrate({2, 5, 1.6}, vision::depthRays(depthFrame(5)));
+  EXPECT_GT(occupiedNear(map, 6, 5, 0.4), 0);
+  const int wall_before = occupiedNear(map, 9.9, 5, 2.5);
+  EXPECT_GT(wall_before, 20);
+
+  map.integrate({2, 5, 1.6}, vision::depthRays(depthFrame(8)));
+  EXPECT_EQ(occupiedNear(map, 6, 5, 0.4), 0);  // the floor where it stood is seen again
+  EXPECT_GT(occupiedNear(map, 6, 8, 0.4), 0);  // where it is now
+  EXPECT_GE(occupiedNear(map, 9.9, 5, 2.5), wall_before);
 }
 
 TEST(ObstacleMapper, LowReturnsAndNoReturnsAreNotObstacles) {
   vision::ObstacleMapper map(10, 10, {});
   const Eigen::Vector3d origin(2.05, 5.05, 1.6);
-  map.integrate(origin, {{Eigen::Vector3d(5.05, 5.05, 0.1) - origin, 1.0},  // 0.1 m: below the threshold
-                         {Eigen::Vector3d(1, 0, 0), 0.0}});                  // no return
+  map.integrate(origin, oneRow({{Eigen::Vector3d(5.05, 5.05, 0.1) - origin, 1.0},  // 0.1 m: below the threshold
+                                {Eigen::Vector3d(1, 0, 0), 0.0}}));                 // no return
   EXPECT_EQ(map.countCells(kOccupied), 0);
   EXPECT_EQ(map.cell(70, 50), kUnknown);  // the no-return ray marks nothing
   EXPECT_EQ(map.cell(40, 50), kFree);
@@ -142,7 +183,9 @@ TEST(ObstacleMapper, MessageOfAThirtyByTwentyWorldDecodesAndStaysUnder64KB) {
   EXPECT_DOUBLE_EQ(decoded.resolution, 0.1);
 }
 
-TEST(ObstacleMapper, RefusesABadGrid) {
+TEST(ObstacleMapper, RefusesABadGridOrImage) {
+  vision::ObstacleMapper map(10, 10, {});
+  EXPECT_THROW(map.integrate({1, 1, 1.6}, vision::DepthImage{3, 2, {}}), std::invalid_argument);
   EXPECT_THROW(vision::ObstacleMapper(0, 10, {}), std::invalid_argument);
   vision::ObstacleMapConfig config;
   config.resolution = -1;
