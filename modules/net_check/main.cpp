@@ -34,18 +34,18 @@ void printSummary(const Net& net, const std::string& path) {
   size_t silent = 0;
   for (const auto& t : net.transitions) silent += t.silent() ? 1 : 0;
   const auto experts = net.experts();
-  std::printf("net '%s' (%s): %zu places, %zu transitions (%zu experts, %zu silent)\n",
+  std::printf("net '%s' (%s): %zu places, %zu transitions: %zu fire an expert, %zu silent\n",
               net.id.c_str(), path.c_str(), net.places.size(), net.transitions.size(),
               net.transitions.size() - silent, silent);
   std::printf("tick transition: %s\n", net.transitions[net.tick_transition].id.c_str());
-  std::printf("experts:");
+  std::string list;
   for (const auto& name : experts) {
     std::string level;
     for (const auto& t : net.transitions)
       if (t.expert == name && !t.level.empty()) level = t.level;
-    std::printf(" %s%s", name.c_str(), level.empty() ? "" : ("(" + level + ")").c_str());
+    list += (list.empty() ? "" : ", ") + name + (level.empty() ? "" : " (" + level + ")");
   }
-  std::printf("\n");
+  std::printf("experts (%zu): %s\n", experts.size(), list.c_str());
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // in-test LCM responder standing in for the experts.
 #include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -49,16 +50,22 @@ class Child {
  public:
   explicit Child(const std::vector<std::string>& argv)
       : out_path_(tempPath("out.txt")), err_path_(tempPath("err.txt")) {
+    // Everything the child needs is prepared before fork(): the parent may
+    // have LCM threads, so the child only calls async-signal-safe functions.
+    std::vector<char*> args;
+    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    const int out = open(out_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = open(err_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     pid_ = fork();
     if (pid_ == 0) {
-      std::freopen(out_path_.c_str(), "w", stdout);
-      std::freopen(err_path_.c_str(), "w", stderr);
-      std::vector<char*> args;
-      for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-      args.push_back(nullptr);
+      dup2(out, STDOUT_FILENO);
+      dup2(err, STDERR_FILENO);
       execv(args[0], args.data());
       _exit(127);
     }
+    close(out);
+    close(err);
   }
   ~Child() {
     if (pid_ > 0 && !exited_) {
@@ -115,7 +122,7 @@ bool contains(const std::string& text, const std::string& fragment) {
 TEST(NetCheckProcess, DefaultNetIsSafeAndLive) {
   const Finished run = runToEnd({BEFT_NET_CHECK_BIN, kNets + "default.pnml"});
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
-  EXPECT_TRUE(contains(run.out, "10 experts, 2 silent")) << run.out;
+  EXPECT_TRUE(contains(run.out, "10 fire an expert, 2 silent")) << run.out;
   EXPECT_TRUE(contains(run.out, "reachable markings: 46")) << run.out;
   EXPECT_TRUE(contains(run.out, "1-safe: yes")) << run.out;
   EXPECT_TRUE(contains(run.out, "dead transitions: none")) << run.out;
