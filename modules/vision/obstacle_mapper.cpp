@@ -188,6 +188,17 @@ void ObstacleMapper::clearBelowThreshold(const Eigen::Vector3d& origin, const De
   });
 }
 
+void ObstacleMapper::restoreCells(const std::vector<uint8_t>& cells) {
+  if (cells.size() != cells_.size())
+    throw std::invalid_argument("cannot restore " + std::to_string(cells.size()) + " cells into a map of " +
+                                std::to_string(cells_.size()));
+  for (uint8_t c : cells)
+    if (c != kUnknown && c != kFree && c != kOccupied)
+      throw std::invalid_argument("cannot restore a cell of value " + std::to_string(c));
+  cells_ = cells;
+  ++version_;
+}
+
 obstacle_map_t ObstacleMapper::toMessage(int64_t utime, int64_t tick) const {
   planners::ObstacleCells grid;  // origin (0, 0): the world's corner
   grid.width = width_;

@@ -69,6 +69,10 @@ class ObstacleMapper {
   // unchanged map.
   uint64_t version() const { return version_; }
 
+  // Replaces every cell, e.g. with the map a previous run of the expert
+  // published. Throws std::invalid_argument on a wrong count or value.
+  void restoreCells(const std::vector<uint8_t>& cells);
+
   // The whole map as a message (RLE, or raw when that is smaller).
   obstacle_map_t toMessage(int64_t utime, int64_t tick) const;
 

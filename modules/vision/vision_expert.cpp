@@ -1,11 +1,13 @@
 #include "vision_expert.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "camera_model.hpp"
 #include "channels.hpp"
 #include "depth_rays.hpp"
 #include "log.hpp"
+#include "obstacle_map_codec.hpp"
 #include "scene_geometry.hpp"
 #include "visual_occlusion.hpp"
 
@@ -21,14 +23,16 @@ std::string VisionExpert::description() const {
          "person who walked away stops blocking the map). The map covers the world of "
          "GT_OBJECTS at --param resolution and accumulates over the run. Reads GT_OBJECTS, "
          "CAMERA_DEPTH and CAMERA_INSTANCE of the fired tick, writes VISION and OBSTACLE_MAP "
-         "(RLE). To run it alone: start beft-world and feed FIRE tokens for 'vision' (or run "
+         "(RLE). When (re)started during a run it resumes from the last OBSTACLE_MAP on the "
+         "blackboard. To run it alone: start beft-world and feed FIRE tokens for 'vision' (or run "
          "the arbiter), and watch VISION with lcm-spy.";
 }
 
 std::vector<expert::ChannelSpec> VisionExpert::reads() const {
   return {{channels::kGroundTruth, "beft.scene_objects_t"},
           {channels::kCameraDepth, "beft.camera_frame_t"},
-          {channels::kCameraInstance, "beft.camera_frame_t"}};
+          {channels::kCameraInstance, "beft.camera_frame_t"},
+          {channels::kObstacleMap, "beft.obstacle_map_t"}};  // to resume after a restart
 }
 
 std::vector<expert::ChannelSpec> VisionExpert::writes() const {
@@ -51,6 +55,13 @@ bool VisionExpert::onMessage(const std::string& channel, const void* data, int s
   if (channel == channels::kGroundTruth) return scene_.store(data, size);
   if (channel == channels::kCameraDepth) return depth_.store(data, size);
   if (channel == channels::kCameraInstance) return instance_.store(data, size);
+  if (channel == channels::kObstacleMap) {
+    if (mapper_) return true;  // our own map heard back
+    obstacle_map_t map{};
+    if (!expert::decodeMessage(data, size, map)) return false;
+    resume_map_ = std::move(map);
+    return true;
+  }
   return false;
 }
 
@@ -86,10 +97,29 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
   return expert::Outcome::success();
 }
 
+// Starts from the map a previous run published, if it covers the same grid.
+void VisionExpert::resumeMap() {
+  if (!resume_map_) return;
+  const obstacle_map_t map = std::move(*resume_map_);
+  resume_map_.reset();
+  if (map.width != mapper_->width() || map.height != mapper_->height() ||
+      std::abs(map.resolution - mapper_->resolution()) > 1e-9 || map.origin_x != 0 || map.origin_y != 0) {
+    log::warn("obstacle map of tick ", map.tick, " on the blackboard is for another grid: starting empty");
+    return;
+  }
+  try {
+    mapper_->restoreCells(planners::decodeObstacleMap(map).cells);
+    log::info("resumed the obstacle map of tick ", map.tick, " from the blackboard");
+  } catch (const std::exception& e) {
+    log::warn("obstacle map of tick ", map.tick, " on the blackboard is unusable (", e.what(), "): starting empty");
+  }
+}
+
 void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t& depth, int64_t tick) {
   if (!mapper_ || scene.world_width != mapped_world_width_ || scene.world_height != mapped_world_height_) {
     if (mapper_) log::warn("world size changed: obstacle map restarted");
     mapper_ = std::make_unique<ObstacleMapper>(scene.world_width, scene.world_height, map_config_);
+    resumeMap();
     mapped_world_width_ = scene.world_width;
     mapped_world_height_ = scene.world_height;
     last_mapped_tick_ = -1;

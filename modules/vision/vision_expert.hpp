@@ -1,11 +1,16 @@
 // The vision expert as a process (low level): stores GT_OBJECTS and the
 // depth and instance images, and on FIRE for tick k publishes VISION (O_v of
-// every object with a visual) and OBSTACLE_MAP (M_O, accumulated).
+// every object with a visual) and OBSTACLE_MAP (M_O, accumulated). It also
+// reads OBSTACLE_MAP: a restarted vision expert resumes from the last map on
+// the blackboard instead of forgetting every obstacle seen so far (its own
+// maps, heard back while it runs, are ignored).
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include <beft/camera_frame_t.hpp>
+#include <beft/obstacle_map_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
 #include "expert.hpp"
@@ -29,11 +34,13 @@ class VisionExpert : public expert::Expert {
 
  private:
   void updateMap(const scene_objects_t& scene, const camera_frame_t& depth, int64_t tick);
+  void resumeMap();
 
   ObstacleMapConfig map_config_;
   std::unique_ptr<ObstacleMapper> mapper_;
   double mapped_world_width_ = 0, mapped_world_height_ = 0;
   int64_t last_mapped_tick_ = -1;
+  std::optional<obstacle_map_t> resume_map_;  // a map published before this process started
   DepthImage depth_image_;             // reused between frames
   obstacle_map_t map_message_;         // the map as last encoded
   uint64_t map_message_version_ = 0;   // mapper version it encodes (0: none yet)

@@ -1,0 +1,129 @@
+// The vision expert class (without LCM): fires on the inputs of its tick and
+// resumes the obstacle map a previous run left on the blackboard.
+#include <gtest/gtest.h>
+
+#include <beft/obstacle_map_t.hpp>
+#include <beft/visual_percepts_t.hpp>
+
+#include "camera_messages.hpp"
+#include "channels.hpp"
+#include "obstacle_map_codec.hpp"
+#include "ray_caster.hpp"
+#include "scene_builders.hpp"
+#include "scene_geometry.hpp"
+#include "vision_expert.hpp"
+
+using namespace beft;
+
+namespace {
+
+struct Collected : expert::Output {
+  std::map<std::string, std::vector<uint8_t>> latest;
+  void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
+    latest[channel] = bytes;
+  }
+  template <typename Message>
+  Message get(const std::string& channel) const {
+    Message m{};
+    const auto& bytes = latest.at(channel);
+    EXPECT_TRUE(expert::decodeMessage(bytes.data(), static_cast<int>(bytes.size()), m));
+    return m;
+  }
+};
+
+template <typename Message>
+bool feed(expert::Expert& e, const std::string& channel, const Message& m) {
+  std::vector<uint8_t> bytes(m.getEncodedSize());
+  m.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  return e.onMessage(channel, bytes.data(), static_cast<int>(bytes.size()));
+}
+
+// One tick of the world: a person 4 m in front of the camera at (2, 5).
+void feedTick(expert::Expert& e, int64_t tick) {
+  const auto s = test::scene({test::cylinderObject("victim", "person", 6, 5, 0.3, 1.8)}, tick, 20, 10);
+  camera::Camera cam;
+  cam.pose = {2, 5, 1.6, 0, 0};
+  camera::CameraMessages frames;
+  camera::encodeCameraMessages(camera::renderFrame(camera::SceneGeometry::fromMessage(s), cam), s.utime, tick,
+                               {"victim"}, frames);
+  ASSERT_TRUE(feed(e, channels::kGroundTruth, s));
+  ASSERT_TRUE(feed(e, channels::kCameraDepth, frames.depth));
+  ASSERT_TRUE(feed(e, channels::kCameraInstance, frames.instance));
+}
+
+expert::Firing firingFor(int64_t tick, int64_t id) {
+  expert::Firing f;
+  f.expert = "vision";
+  f.tick = tick;
+  f.utime = tick * 100000;
+  f.firing_id = id;
+  return f;
+}
+
+}  // namespace
+
+TEST(VisionExpert, FiresOnlyWithTheInputsOfItsTick) {
+  vision::VisionExpert vision;
+  vision.onStartUp({});
+  feedTick(vision, 0);
+  EXPECT_TRUE(vision.inputsReady(firingFor(0, 1)));
+  EXPECT_FALSE(vision.inputsReady(firingFor(1, 2)));
+  Collected out;
+  EXPECT_FALSE(vision.fire(firingFor(1, 2), out).ok);
+  EXPECT_TRUE(out.latest.empty());
+  ASSERT_TRUE(vision.fire(firingFor(0, 1), out).ok);
+  const auto percepts = out.get<visual_percepts_t>(channels::kVision);
+  ASSERT_EQ(percepts.num_percepts, 1);
+  EXPECT_DOUBLE_EQ(percepts.percepts[0].occlusion, 0.0);
+  const auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  EXPECT_EQ(map.width, 200);
+  EXPECT_EQ(map.height, 100);
+}
+
+TEST(VisionExpert, ResumesTheMapOfAPreviousRunAndIgnoresItsOwnEcho) {
+  // A map from before a restart: an obstacle seen earlier at (15, 2), out of view now.
+  planners::ObstacleCells before;
+  before.width = 200;
+  before.height = 100;
+  before.resolution = 0.1;
+  before.cells.assign(200 * 100, obstacle_map_t::CELL_UNKNOWN);
+  before.cells[20 * 200 + 150] = obstacle_map_t::CELL_OCCUPIED;
+  const auto previous = planners::makeObstacleMap(before, obstacle_map_t::ENCODING_RLE, 0, 41);
+
+  vision::VisionExpert vision;
+  vision.onStartUp({});
+  ASSERT_TRUE(feed(vision, channels::kObstacleMap, previous));
+  feedTick(vision, 42);
+  Collected out;
+  ASSERT_TRUE(vision.fire(firingFor(42, 1), out).ok);
+  auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  EXPECT_EQ(map.at(150, 20), obstacle_map_t::CELL_OCCUPIED);  // remembered
+  int person_cells = 0;  // its near side, x = 5.7
+  for (int row = 47; row <= 53; ++row) person_cells += map.at(57, row) == obstacle_map_t::CELL_OCCUPIED;
+  EXPECT_GT(person_cells, 2);  // the person seen now
+
+  // Once running, a map heard on the channel (its own) changes nothing.
+  before.cells.assign(200 * 100, obstacle_map_t::CELL_OCCUPIED);
+  ASSERT_TRUE(feed(vision, channels::kObstacleMap, planners::makeObstacleMap(before, obstacle_map_t::ENCODING_RLE)));
+  feedTick(vision, 43);
+  ASSERT_TRUE(vision.fire(firingFor(43, 2), out).ok);
+  map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  EXPECT_EQ(map.at(10, 90), obstacle_map_t::CELL_UNKNOWN);
+}
+
+TEST(VisionExpert, AMapForAnotherGridIsNotResumed) {
+  planners::ObstacleCells other;
+  other.width = 50;
+  other.height = 50;
+  other.resolution = 0.2;
+  other.cells.assign(50 * 50, obstacle_map_t::CELL_OCCUPIED);
+  vision::VisionExpert vision;
+  vision.onStartUp({});
+  ASSERT_TRUE(feed(vision, channels::kObstacleMap, planners::makeObstacleMap(other, obstacle_map_t::ENCODING_RLE)));
+  feedTick(vision, 0);
+  Collected out;
+  ASSERT_TRUE(vision.fire(firingFor(0, 1), out).ok);
+  const auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  EXPECT_EQ(map.width, 200);
+  EXPECT_EQ(map.at(10, 90), obstacle_map_t::CELL_UNKNOWN);
+}
