@@ -31,7 +31,10 @@ const Rgb kGround{118, 112, 100};
 const Rgb kHaze{196, 206, 218};
 const Rgb kSkyZenith{112, 152, 212};
 const Eigen::Vector3d kLight = Eigen::Vector3d(0.35, 0.55, 0.76).normalized();
-constexpr float kAmbient = 0.5f;     // share of light on faces turned away from the light
+// Light on a surface: ambient, plus sun (fixed direction kLight), plus a
+// little from the camera, so faces turned away from the sun still show
+// their shape.
+constexpr float kAmbient = 0.45f, kSun = 0.35f, kHeadlight = 0.25f;
 constexpr float kFogAtRange = 0.4f;  // haze mixed in at the range limit (quadratic in distance)
 
 }  // namespace
@@ -276,7 +279,9 @@ void RayCaster::shade(const SceneGeometry& scene, RenderedFrame& frame) const {
       if (s >= 0) {
         const Solid& solid = scene.solids()[s];
         const Eigen::Vector3d normal = entryNormal(solid, Eigen::Vector3d(x, y, o.z() + t * d.z()), d, nearest_face_[p]);
-        light = kAmbient + (1 - kAmbient) * static_cast<float>(std::max(0.0, normal.dot(kLight)));
+        const double facing = -normal.dot(d) * inverse_length_[p];
+        light = kAmbient + kSun * static_cast<float>(std::max(0.0, normal.dot(kLight))) +
+                kHeadlight * static_cast<float>(std::max(0.0, facing));
         colour = colours[s];
         frame.object[p] = solid.object_index;
       } else {

@@ -102,6 +102,13 @@ beft::expert::Outcome WorldExpert::fire(const beft::expert::Firing& firing, beft
     log::warn("fired for tick ", firing.tick, " at tick ", current, ": stepping through ", firing.tick - current,
               " ticks with the command in force");
   }
+  const int64_t own_utime = std::llround(firing.tick * simulation_->scenario().dt * 1e6);
+  if (firing.utime != own_utime && !warned_time_mismatch_) {
+    warned_time_mismatch_ = true;
+    log::warn("FIRE for tick ", firing.tick, " says t = ", firing.utime * 1e-6, " s but the scenario's dt ",
+              simulation_->scenario().dt, " s makes it ", own_utime * 1e-6,
+              " s; publishing scenario time (is the arbiter's --dt the scenario's?)");
+  }
   while (simulation_->tick() < firing.tick) {
     simulation_->step();
     logNotes();

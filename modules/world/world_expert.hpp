@@ -46,6 +46,7 @@ class WorldExpert : public beft::expert::Expert {
   bool published_any_ = false;
   std::string last_adjustment_logged_;
   int64_t refused_commands_ = 0;
+  bool warned_time_mismatch_ = false;
 };
 
 }  // namespace beft::world
