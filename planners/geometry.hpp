@@ -15,7 +15,7 @@ struct Point2 {
 inline Point2 operator+(Point2 a, Point2 b) { return {a.x + b.x, a.y + b.y}; }
 inline Point2 operator-(Point2 a, Point2 b) { return {a.x - b.x, a.y - b.y}; }
 inline Point2 operator*(double s, Point2 a) { return {s * a.x, s * a.y}; }
-inline double norm(Point2 a) { return std::hypot(a.x, a.y); }
+inline double norm(Point2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 inline double distance(Point2 a, Point2 b) { return norm(a - b); }
 
 inline Point2 cellCentre(int x, int y) { return {x + 0.5, y + 0.5}; }

@@ -88,31 +88,52 @@ OctileSearchResult octileAStar(const GridMap& grid, GridCell start, GridCell goa
 }
 
 std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal) {
+  return octileDistanceField(grid, goal, goal, kInfinity, kInfinity);
+}
+
+std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal, GridCell start, double slack,
+                                        double margin) {
   const int w = grid.width();
   const size_t n = static_cast<size_t>(w) * grid.height();
   std::vector<double> dist(n, kInfinity);
   if (grid.blocked(goal.x, goal.y)) return dist;
-  using Entry = std::pair<double, int32_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  // Dial's algorithm: buckets one cell wide. Every step costs at least 1, so
+  // expanding bucket k only fills later buckets and the labels in bucket k
+  // are final when it is expanded. A label lies within sqrt(2) of its
+  // parent's, so a ring of 4 buckets suffices.
+  constexpr int kRing = 4;
+  std::vector<std::vector<int32_t>> ring(kRing);
+  std::vector<uint8_t> done(n, 0);
   const int32_t goal_index = static_cast<int32_t>(grid.index(goal.x, goal.y));
   dist[goal_index] = 0;
-  open.push({0.0, goal_index});
-  while (!open.empty()) {
-    const auto [d, index] = open.top();
-    open.pop();
-    if (d > dist[index]) continue;
-    const int x = index % w;
-    const int y = index / w;
-    for (const Move& m : kMoves) {
-      // Moves are symmetric, so distances to the goal equal distances from it.
-      if (!moveAllowed(grid, x, y, m)) continue;
-      const int32_t next = static_cast<int32_t>(grid.index(x + m.dx, y + m.dy));
-      const double cost = d + m.cost;
-      if (cost < dist[next]) {
-        dist[next] = cost;
-        open.push({cost, next});
+  ring[0].push_back(goal_index);
+  size_t queued = 1;
+  const int32_t start_index = grid.inside(start.x, start.y) ? static_cast<int32_t>(grid.index(start.x, start.y)) : -1;
+  double limit = kInfinity;
+  for (int64_t k = 0; queued > 0 && k <= limit; ++k) {
+    std::vector<int32_t>& bucket = ring[k % kRing];
+    for (size_t i = 0; i < bucket.size(); ++i) {
+      const int32_t index = bucket[i];
+      // Skip cells finished already or since moved to an earlier bucket.
+      if (done[index] || static_cast<int64_t>(dist[index]) != k) continue;
+      done[index] = 1;
+      if (index == start_index) limit = slack * dist[index] + margin;
+      const int x = index % w;
+      const int y = index / w;
+      for (const Move& m : kMoves) {
+        // Moves are symmetric, so distances to the goal equal distances from it.
+        if (!moveAllowed(grid, x, y, m)) continue;
+        const int32_t next = static_cast<int32_t>(grid.index(x + m.dx, y + m.dy));
+        const double cost = dist[index] + m.cost;
+        if (cost < dist[next]) {
+          dist[next] = cost;
+          ring[static_cast<int64_t>(cost) % kRing].push_back(next);
+          ++queued;
+        }
       }
     }
+    queued -= bucket.size();
+    bucket.clear();
   }
   return dist;
 }

@@ -34,6 +34,12 @@ OctileSearchResult octileAStar(const GridMap& grid, GridCell start, GridCell goa
 // cells. Row-major, width * height values.
 std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal);
 
+// The same, but only as far as needed around `start`: once the start cell is
+// reached at distance D, the wavefront stops at slack * D + margin; farther
+// cells stay +infinity. Unreachable start: the whole field.
+std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal, GridCell start, double slack,
+                                        double margin);
+
 // Octile distance on an empty grid: the A* heuristic.
 double octileHeuristic(GridCell a, GridCell b);
 

@@ -4,6 +4,7 @@
 
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/PathSimplifier.h>
 #include <ompl/geometric/planners/informedtrees/ABITstar.h>
@@ -75,6 +76,16 @@ OmplPlanner::OmplPlanner(std::string ompl_name) : ompl_name_(std::move(ompl_name
 void OmplPlanner::setupMap() {
   si_ = makeSpaceInformation(map_);
   planner_ = allocateOmplPlanner(ompl_name_, si_);
+}
+
+bool OmplPlanner::isAnytime() const {
+  if (planner_) return planner_->getSpecs().optimizingPaths;
+  // Not set up yet: ask a planner made on a throwaway space.
+  auto space = std::make_shared<ompl::base::RealVectorStateSpace>(2);
+  space->setBounds(0, 1);
+  return allocateOmplPlanner(ompl_name_, std::make_shared<ompl::base::SpaceInformation>(space))
+      ->getSpecs()
+      .optimizingPaths;
 }
 
 void OmplPlanner::clear() {

@@ -35,6 +35,7 @@ class OmplPlanner : public Planner {
   explicit OmplPlanner(std::string ompl_name);
   std::string name() const override { return "ompl:" + ompl_name_; }
   void clear() override;
+  bool isAnytime() const override;
 
  protected:
   void setupMap() override;

@@ -47,6 +47,40 @@ Path shortcutPath(const PlanningMap& map, const Path& input) {
   return out;
 }
 
+Path tightenPath(const PlanningMap& map, const Path& input, int passes) {
+  Path path = shortcutPath(map, input);
+  for (int pass = 0; pass < passes && path.size() > 2; ++pass) {
+    const double before = pathLength(path);
+    Path out{path.front()};
+    for (size_t i = 1; i + 1 < path.size(); ++i) {
+      const Point2 a = out.back();
+      const Point2 v = path[i];
+      const Point2 b = path[i + 1];
+      if (map.segmentFree(a, b)) continue;  // v is not needed
+      // The widest cut of the corner at v: points at fraction t of the way
+      // from v back to a and on to b. Cuts shorter than 1e-3 cells are not worth it.
+      double good = 0, bad = 1;
+      for (int k = 0; k < 12; ++k) {
+        const double t = 0.5 * (good + bad);
+        if (map.segmentFree(v + t * (a - v), v + t * (b - v))) good = t; else bad = t;
+      }
+      const Point2 p1 = v + good * (a - v);
+      const Point2 p2 = v + good * (b - v);
+      if (good * std::min(distance(a, v), distance(v, b)) < 1e-3 || !map.segmentFree(a, p1) ||
+          !map.segmentFree(p2, b)) {
+        out.push_back(v);
+        continue;
+      }
+      out.push_back(p1);
+      out.push_back(p2);
+    }
+    out.push_back(path.back());
+    path = shortcutPath(map, out);
+    if (before - pathLength(path) < 1e-6) break;
+  }
+  return path;
+}
+
 double totalTurning(const Path& input) {
   const Path path = removeDuplicatePoints(input);
   double turning = 0;

@@ -18,6 +18,12 @@ bool pathFree(const PlanningMap& map, const Path& path);
 // longer than the input (triangle inequality) and free when the input is.
 Path shortcutPath(const PlanningMap& map, const Path& path);
 
+// Pulls a free path taut against the inflated map: drops a waypoint when its
+// neighbours see each other, otherwise cuts its corner by the widest free cut
+// (binary search along both segments), for `passes` sweeps; then shortcuts.
+// Never longer than the input and free when the input is.
+Path tightenPath(const PlanningMap& map, const Path& path, int passes = 6);
+
 // Drops repeated points (closer than 1e-9 cells).
 Path removeDuplicatePoints(const Path& path);
 

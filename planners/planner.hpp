@@ -1,7 +1,7 @@
 // The one interface every planner implements: set up on a map, solve a query
 // before a deadline, clear, report statistics. Start and goal checks, timing,
-// the collision check of the answer and the shortcut to sparse waypoints are
-// done here, identically for every planner.
+// the collision check of the answer and its shortening to sparse, taut
+// waypoints (tightenPath) are done here, identically for every planner.
 #pragma once
 
 #include "geometry.hpp"
@@ -57,12 +57,15 @@ class Planner {
   PlanResult solve(Point2 start, Point2 goal, const Deadline& deadline);
   // Forgets everything learned from earlier queries (trees, roadmaps).
   virtual void clear() {}
+  // True for planners that keep improving their path until the deadline
+  // (asymptotically optimal ones): their planning time is the budget.
+  virtual bool isAnytime() const { return false; }
   // Seeds the planner's random choices (randomised planners only).
   virtual void setSeed(uint64_t /*seed*/) {}
   // Figures of the last setup and solve: e.g. "setup_ms", "expanded".
   const Statistics& statistics() const { return stats_; }
 
-  // Whether solve() shortcuts the planner's path to sparse waypoints (default on).
+  // Whether solve() pulls the planner's path taut into sparse waypoints (default on).
   void setShortcut(bool enabled) { shortcut_ = enabled; }
 
   const PlanningMap& map() const { return *map_; }

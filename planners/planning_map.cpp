@@ -40,12 +40,28 @@ bool PlanningMap::segmentFree(Point2 a, Point2 b) const {
   if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) {
     return false;
   }
+  const int row_first = firstCell(std::min(a.y, b.y));
+  const int row_last = lastCell(std::max(a.y, b.y));
+  const int col_min = firstCell(std::min(a.x, b.x));
+  const int col_max = lastCell(std::max(a.x, b.x));
+  // Short segments (particle steps): when every cell of the bounding box is
+  // free, so is every cell the segment touches.
+  if (row_last - row_first <= 1 && col_max - col_min <= 1) {
+    bool all_free = true;
+    for (int row = row_first; row <= row_last && all_free; ++row) {
+      for (int col = col_min; col <= col_max; ++col) {
+        if (inflated_.blocked(col, row)) {
+          all_free = false;
+          break;
+        }
+      }
+    }
+    if (all_free) return true;
+  }
   // Scan the rows the segment touches; in each row, the segment's x-extent
   // within that row's band gives the columns it touches.
   const double dy = b.y - a.y;
   const double dx = b.x - a.x;
-  const int row_first = firstCell(std::min(a.y, b.y));
-  const int row_last = lastCell(std::max(a.y, b.y));
   for (int row = row_first; row <= row_last; ++row) {
     double t0 = 0;
     double t1 = 1;

@@ -6,7 +6,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <random>
 #include <stdexcept>
 
 namespace beft::planners {
@@ -20,6 +19,22 @@ uint64_t splitMix64(uint64_t x) {
   x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
   return x ^ (x >> 31);
 }
+
+// A small, fast generator (SplitMix64 stream): the same numbers on every
+// platform, unlike the standard distributions.
+class ParticleRandom {
+ public:
+  explicit ParticleRandom(uint64_t seed) : state_(seed) {}
+  // Uniform on [-sqrt(3), sqrt(3)): zero mean, unit variance.
+  double unitVariance() {
+    state_ += 0x9e3779b97f4a7c15ULL;
+    const double u = static_cast<double>(splitMix64(state_) >> 11) * 0x1.0p-53;
+    return (2.0 * u - 1.0) * 1.7320508075688772;
+  }
+
+ private:
+  uint64_t state_;
+};
 
 double parseNumber(const std::string& name, const std::string& value) {
   size_t used = 0;
@@ -143,15 +158,21 @@ double PotentialFieldPlanner::wavefrontAt(Point2 p) const {
   return target_distance_.at<float>(y, x);
 }
 
+bool PotentialFieldPlanner::canMove(Point2 from, Point2 to) const {
+  if (!map_->segmentFree(from, to)) return false;
+  // The geodesic wavefront covers only the region around the start.
+  return params_.target != TargetPotential::Geodesic || std::isfinite(wavefrontAt(to));
+}
+
 Point2 PotentialFieldPlanner::tryMove(Point2 p, Point2 move) const {
   const Point2 full = p + move;
-  if (map_->segmentFree(p, full)) return full;
+  if (canMove(p, full)) return full;
   // Slide along the obstacle: keep the larger free component of the move.
   const Point2 along_x{p.x + move.x, p.y};
   const Point2 along_y{p.x, p.y + move.y};
   const bool x_first = std::abs(move.x) >= std::abs(move.y);
   for (const Point2& q : x_first ? std::array<Point2, 2>{along_x, along_y} : std::array<Point2, 2>{along_y, along_x}) {
-    if (distance(p, q) > 1e-6 && map_->segmentFree(p, q)) return q;
+    if (distance(p, q) > 1e-6 && canMove(p, q)) return q;
   }
   return p;
 }
@@ -189,13 +210,15 @@ bool PotentialFieldPlanner::stepDownWavefront(Point2& p, Path& trace) const {
 PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index, Point2 start, Point2 goal,
                                                                       const Deadline& deadline) const {
   ParticleRun run;
+  run.trace.reserve(1024);
   run.trace.push_back(start);
-  std::mt19937_64 rng(splitMix64(seed_ * 0x100000001b3ULL + static_cast<uint64_t>(index)));
-  std::normal_distribution<double> gaussian(0.0, 1.0);
+  ParticleRandom rng(splitMix64(seed_ * 0x100000001b3ULL + static_cast<uint64_t>(index)));
   // r_t: stationary unit-variance components, so E|r|^2 = 2; scaled to unit RMS below.
   const double keep = std::exp(-1.0 / params_.noise_correlation);
   const double renew = std::sqrt(1.0 - keep * keep);
-  Point2 random_drift{gaussian(rng), gaussian(rng)};
+  Point2 random_drift{rng.unitVariance(), rng.unitVariance()};
+  double noise = params_.noise / std::sqrt(2.0);
+  const double noise_fade = std::exp(-params_.step / params_.noise_decay);  // per step
   const bool geodesic = params_.target == TargetPotential::Geodesic;
   const double force_scale = params_.sigma * std::sqrt(2 * kPi);
   const double max_travel = params_.max_travel * (map_->width() + map_->height());
@@ -222,10 +245,10 @@ PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index,
       toward_norm = std::max(norm(toward), 1e-12);
     }
     const Point2 repulsion = force_scale * obstacle_force_.at(p);
-    const double noise = params_.noise * std::exp(-step * params_.step / params_.noise_decay) / std::sqrt(2.0);
-    random_drift = keep * random_drift + renew * Point2{gaussian(rng), gaussian(rng)};
+    random_drift = keep * random_drift + renew * Point2{rng.unitVariance(), rng.unitVariance()};
     Point2 direction = (params_.target_weight / toward_norm) * toward + params_.obstacle_weight * repulsion +
                        noise * random_drift;
+    noise *= noise_fade;
     const double magnitude = norm(direction);
     if (magnitude > 1) direction = (1 / magnitude) * direction;
 
@@ -264,7 +287,8 @@ Path PotentialFieldPlanner::solvePath(Point2 start, Point2 goal, const Deadline&
   const auto field_begin = Deadline::Clock::now();
   const GridCell goal_cell{static_cast<int>(std::floor(goal.x)), static_cast<int>(std::floor(goal.y))};
   if (params_.target == TargetPotential::Geodesic) {
-    target_distance_ = geodesicTargetDistance(map_->inflated(), goal_cell);
+    const GridCell start_cell{static_cast<int>(std::floor(start.x)), static_cast<int>(std::floor(start.y))};
+    target_distance_ = geodesicTargetDistance(map_->inflated(), goal_cell, start_cell);
     if (!std::isfinite(wavefrontAt(start))) {
       why_not = name() + ": goal unreachable from start";
       return {};

@@ -23,7 +23,9 @@
 //    obstacle facing the start traps every particle once the noise has
 //    decayed); a particle that stops making headway fails.
 //  - Geodesic: the octile wavefront to the target around obstacles, which
-//    has no local minima. A particle that has not lowered its wavefront value
+//    has no local minima. The wavefront spreads from the target to 1.5 times
+//    the start's distance plus 20 cells, and particles stay inside it. A
+//    particle that has not lowered its wavefront value
 //    for `stall_steps` steps, or cannot move, steps to the lowest neighbouring
 //    cell, so every particle reaches a reachable goal.
 #pragma once
@@ -48,7 +50,7 @@ struct PotentialFieldParams {
   double noise = 2.0;                // initial random component (RMS), relative to target_weight
   double noise_decay = 100.0;        // the random component falls by 1/e in noise_decay / step steps [cells]
   double noise_correlation = 100.0;  // correlation time of the random component [steps]
-  double step = 0.5;                 // particle step [cells]
+  double step = 1.0;                 // particle step [cells]
   double goal_tolerance = 1.5;       // distance at which a particle heads straight for the goal [cells]
   double straightness_weight = 2.0;  // cost of turning in the winner choice [cells/rad]
   int stall_steps = 40;              // steps without headway that stop (or, geodesic, redirect) a particle
@@ -92,6 +94,7 @@ class PotentialFieldPlanner : public Planner {
   bool stepDownWavefront(Point2& p, Path& trace) const;
   double wavefrontAt(Point2 p) const;
   Point2 tryMove(Point2 p, Point2 move) const;
+  bool canMove(Point2 from, Point2 to) const;
 
   PotentialFieldParams params_;
   uint64_t seed_ = 1;

@@ -68,8 +68,8 @@ cv::Mat euclideanTargetDistance(int width, int height, GridCell goal) {
   return distance;
 }
 
-cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal) {
-  const std::vector<double> octile = octileDistanceField(grid, goal);
+cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal, GridCell start) {
+  const std::vector<double> octile = octileDistanceField(grid, goal, start, 1.5, 20.0);
   double max_value = 0;
   for (double d : octile) {
     if (std::isfinite(d)) max_value = std::max(max_value, d);

@@ -39,8 +39,8 @@ cv::Mat euclideanTargetDistance(int width, int height, GridCell goal);
 
 // M_D, geodesic variant: the octile distance to the goal through free cells
 // (a wavefront, no local minima), normalised to [0, 1]; +infinity on blocked
-// and unreachable cells.
-cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal);
+// and unreachable cells, and beyond 1.5 times the start's distance + 20 cells.
+cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal, GridCell start);
 
 // -grad of a field with infinite cells (the geodesic M_D): central
 // differences where both neighbours are finite, one-sided where one is,

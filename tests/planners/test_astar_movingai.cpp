@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <random>
 
 #include <unistd.h>
 
@@ -82,6 +83,32 @@ TEST(MovingAi, AStarPlannerReportsTheOptimumAndAFreeSparsePath) {
     EXPECT_LE(r.length(), q.optimal_length + 1e-9);  // shortcutting never lengthens
     EXPECT_EQ(test::findCollision(map->inflated(), r.path), "");
   }
+}
+
+TEST(OctileSearch, DistanceFieldEqualsAStarCosts) {
+  std::mt19937 rng(5);
+  GridMap grid(60, 45);
+  for (int i = 0; i < 700; ++i) grid.setBlocked(rng() % 60, rng() % 45);
+  const GridCell goal{30, 20};
+  grid.setBlocked(goal.x, goal.y, false);
+  const auto field = octileDistanceField(grid, goal);
+  int reachable = 0;
+  for (int y = 0; y < 45; y += 2) {
+    for (int x = 0; x < 60; x += 3) {
+      if (grid.blocked(x, y)) {
+        EXPECT_TRUE(std::isinf(field[grid.index(x, y)]));
+        continue;
+      }
+      const auto path = octileAStar(grid, {x, y}, goal);
+      if (!path.found) {
+        EXPECT_TRUE(std::isinf(field[grid.index(x, y)]));
+        continue;
+      }
+      ++reachable;
+      EXPECT_NEAR(field[grid.index(x, y)], path.cost, 1e-9) << x << "," << y;
+    }
+  }
+  EXPECT_GT(reachable, 250);
 }
 
 class MovingAiFiles : public ::testing::Test {

@@ -40,7 +40,7 @@ TEST(PotentialFields, TargetDistancesAreNormalisedAndGeodesicGoesAround) {
   double hi = 0;
   cv::minMaxLoc(euclidean, nullptr, &hi);
   EXPECT_DOUBLE_EQ(hi, 1.0);
-  const cv::Mat geodesic = geodesicTargetDistance(grid, goal);
+  const cv::Mat geodesic = geodesicTargetDistance(grid, goal, {5, 5});
   EXPECT_TRUE(std::isinf(geodesic.at<float>(10, 15)));  // a wall cell
   // Across the wall from the goal the geodesic distance is far larger.
   EXPECT_GT(geodesic.at<float>(5, 5) / geodesic.at<float>(5, 24), 10.0f);
