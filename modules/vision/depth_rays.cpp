@@ -29,6 +29,7 @@ void depthRays(const camera_frame_t& depth, DepthImage& image) {
   for (int u = 0; u < depth.width; ++u) column_step[u] = camera::pixelRay(frame, u, 0) - corner;
   image.width = depth.width;
   image.height = depth.height;
+  image.level = depth.cam_pitch == 0.0;  // the camera model has no roll
   image.rays.resize(pixels);
   for (int v = 0; v < depth.height; ++v) {
     const Eigen::Vector3d row_start = camera::pixelRay(frame, 0, v);

@@ -62,51 +62,54 @@ void ObstacleMapper::integrate(const Eigen::Vector3d& origin, const DepthImage& 
   ++frame_;
   auto hasReturn = [](const DepthRay& ray) { return ray.t > 0 && std::isfinite(ray.t); };
 
-  // Obstacle returns first, so that no ray of this frame clears them.
-  std::vector<std::size_t> obstacle_cells;
-  for (const auto& ray : image.rays) {
-    if (!hasReturn(ray)) continue;
-    const Eigen::Vector3d hit = origin + ray.t * ray.direction;
-    if (hit.z() <= config_.obstacle_min_height) continue;
-    int column = 0, row = 0;
-    if (!cellOf(hit.x(), hit.y(), column, row)) continue;
-    const std::size_t index = static_cast<std::size_t>(row) * width_ + column;
-    hit_in_frame_[index] = frame_;
-    obstacle_cells.push_back(index);
+  // One pass over the rays, bottom row first: obstacle returns (marked
+  // last, so that no ray of this frame clears them), and per image column its
+  // farthest-reaching ray and its floor returns (at most obstacle_min_height
+  // high), nearly in order of reach.
+  std::vector<std::size_t>& obstacle_cells = obstacle_cells_;
+  obstacle_cells.clear();
+  columns_.resize(static_cast<std::size_t>(image.width));
+  for (auto& column : columns_) {
+    column.farthest = nullptr;
+    column.farthest_reach = 0;
+    column.floor_rays.clear();
   }
-  // Per image column: seen cells along its farthest-reaching ray; then the
-  // floor stretches of its floor returns, nearest first, each from where the
-  // nearer one ended (the rays of a column share a horizontal direction when
-  // the head is level, and the lowest ray over a cell is the one ending just
-  // beyond it). Returns closer than a cell to the last one used add nothing.
-  const double cell_diagonal = config_.resolution * M_SQRT2;
-  std::vector<ColumnRay>& column_rays = column_rays_;
-  for (int u = 0; u < image.width; ++u) {
-    column_rays.clear();
-    const DepthRay* farthest = nullptr;
-    double farthest_reach = 0;
-    for (int v = 0; v < image.height; ++v) {
-      const DepthRay& ray = image.rays[static_cast<std::size_t>(v) * image.width + u];
+  for (int v = image.height - 1; v >= 0; --v) {
+    const DepthRay* row = &image.rays[static_cast<std::size_t>(v) * image.width];
+    for (int u = 0; u < image.width; ++u) {
+      const DepthRay& ray = row[u];
       if (!hasReturn(ray)) continue;
+      const double hit_x = origin.x() + ray.t * ray.direction.x();
+      const double hit_y = origin.y() + ray.t * ray.direction.y();
+      const double hit_z = origin.z() + ray.t * ray.direction.z();
       const double horizontal = std::sqrt(ray.direction.x() * ray.direction.x() + ray.direction.y() * ray.direction.y());
+      ColumnScan& column = columns_[u];
       const double reach = ray.t * horizontal;
-      if (reach > farthest_reach) {
-        farthest_reach = reach;
-        farthest = &ray;
+      if (reach > column.farthest_reach) {
+        column.farthest_reach = reach;
+        column.farthest = &ray;
       }
-      if (origin.z() + ray.t * ray.direction.z() <= config_.obstacle_min_height)
-        column_rays.push_back({reach, horizontal, &ray});
+      if (hit_z <= config_.obstacle_min_height) {
+        column.floor_rays.push_back({reach, horizontal, &ray});
+        continue;
+      }
+      int cell_column = 0, cell_row = 0;
+      if (!cellOf(hit_x, hit_y, cell_column, cell_row)) continue;
+      const std::size_t index = static_cast<std::size_t>(cell_row) * width_ + cell_column;
+      hit_in_frame_[index] = frame_;
+      obstacle_cells.push_back(index);
     }
-    if (farthest != nullptr) markSeen(origin, *farthest);
-    std::sort(column_rays.begin(), column_rays.end(),
-              [](const ColumnRay& a, const ColumnRay& b) { return a.reach < b.reach; });
-    double covered = -1;  // horizontal distance up to which a nearer ray ran low
-    for (const ColumnRay& c : column_rays) {
-      if (covered >= 0 && c.reach < covered + config_.resolution) continue;
-      const double t_from = covered > 0 && c.horizontal > 0 ? std::max(0.0, (covered - cell_diagonal) / c.horizontal) : 0.0;
-      clearBelowThreshold(origin, *c.ray, t_from);
-      covered = c.reach;
-    }
+  }
+  for (auto& column : columns_) {
+    if (column.farthest == nullptr) continue;
+    // Insertion sort: the bottom rows reach nearest, so this is nearly in order already.
+    auto& rays = column.floor_rays;
+    for (std::size_t i = 1; i < rays.size(); ++i)
+      for (std::size_t k = i; k > 0 && rays[k].reach < rays[k - 1].reach; --k) std::swap(rays[k], rays[k - 1]);
+    if (image.level)
+      walkLevelColumn(origin, *column.farthest, column.farthest_reach, column.floor_rays);
+    else
+      traceColumnRays(origin, *column.farthest, column.floor_rays);
   }
   for (std::size_t index : obstacle_cells) set(index, kOccupied);
 }
@@ -149,12 +152,62 @@ void ObstacleMapper::traverse(const Eigen::Vector3d& o, const Eigen::Vector3d& d
   }
 }
 
+// A level camera: every ray of the column runs in one vertical plane, so a
+// single walk along the column's horizontal direction marks the seen cells,
+// and each cell is checked against the lowest floor ray over it: the one
+// whose return is nearest beyond the cell (it descends, so it is highest
+// where it enters the cell).
+void ObstacleMapper::walkLevelColumn(const Eigen::Vector3d& origin, const DepthRay& farthest, double reach,
+                                     const std::vector<ColumnRay>& floor_rays) {
+  const double horizontal = std::sqrt(farthest.direction.x() * farthest.direction.x() +
+                                      farthest.direction.y() * farthest.direction.y());
+  if (!(horizontal > 0)) return;
+  const Eigen::Vector3d along(farthest.direction.x() / horizontal, farthest.direction.y() / horizontal, 0.0);
+  const double threshold = config_.obstacle_min_height;
+  std::size_t lowest = 0;  // first floor ray reaching beyond the current cell
+  traverse(origin, along, 0.0, reach, [&](std::size_t index, double s_enter, double s_exit) {
+    const uint8_t c = cells_[index];
+    if (c == kUnknown) {
+      set(index, kFree);
+    } else if (c == kOccupied && hit_in_frame_[index] != frame_) {
+      while (lowest < floor_rays.size() && floor_rays[lowest].reach <= s_exit) ++lowest;
+      if (lowest < floor_rays.size()) {
+        const ColumnRay& r = floor_rays[lowest];
+        const double height = origin.z() + s_enter * r.ray->direction.z() / r.horizontal;
+        if (height < threshold) set(index, kFree);
+      }
+    }
+  });
+  markReturnCellSeen(origin, farthest);
+}
+
+// A tilted camera: the rays of a column fan out horizontally. Seen cells
+// along the farthest ray; then each floor ray's stretch below the obstacle
+// height, nearest first, from where the nearer one ended. Returns closer than
+// a cell to the last one used add nothing.
+void ObstacleMapper::traceColumnRays(const Eigen::Vector3d& origin, const DepthRay& farthest,
+                                     const std::vector<ColumnRay>& floor_rays) {
+  markSeen(origin, farthest);
+  const double cell_diagonal = config_.resolution * M_SQRT2;
+  double covered = -1;  // horizontal distance up to which a nearer ray ran low
+  for (const ColumnRay& c : floor_rays) {
+    if (covered >= 0 && c.reach < covered + config_.resolution) continue;
+    const double t_from = covered > 0 && c.horizontal > 0 ? std::max(0.0, (covered - cell_diagonal) / c.horizontal) : 0.0;
+    clearBelowThreshold(origin, *c.ray, t_from);
+    covered = c.reach;
+  }
+}
+
 // UNKNOWN -> FREE along the ray up to its return; the cell of a floor return
 // is seen too.
 void ObstacleMapper::markSeen(const Eigen::Vector3d& origin, const DepthRay& ray) {
   traverse(origin, ray.direction, 0.0, ray.t, [&](std::size_t index, double, double) {
     if (cells_[index] == kUnknown) set(index, kFree);
   });
+  markReturnCellSeen(origin, ray);
+}
+
+void ObstacleMapper::markReturnCellSeen(const Eigen::Vector3d& origin, const DepthRay& ray) {
   const Eigen::Vector3d hit = origin + ray.t * ray.direction;
   int column = 0, row = 0;
   if (hit.z() <= config_.obstacle_min_height && cellOf(hit.x(), hit.y(), column, row)) {

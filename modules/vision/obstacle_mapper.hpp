@@ -7,14 +7,15 @@
 //    an obstacle: its cell becomes OCCUPIED;
 //  - cells a ray crossed before its return were seen: UNKNOWN becomes FREE.
 //    Traced along the farthest-reaching ray of each image column, which
-//    crosses every cell the column's other rays cross when the head is level
+//    crosses every cell the column's other rays cross when the camera is level
 //    (the rays of a column share one horizontal direction then; with the head
 //    tilted they fan out slightly and a few cells between them stay UNKNOWN);
 //  - an OCCUPIED cell is cleared to FREE only when a ray crossed it entirely
 //    below obstacle_min_height (the last stretch of a ray to the floor): what
-//    stood there is gone. Per column, each cell is checked against the lowest
-//    floor ray over it (the one whose return is just beyond it); the camera is
-//    assumed above obstacle_min_height. So a person who walked away stops blocking the map
+//    stood there is gone. Each cell is checked against the lowest floor ray of
+//    the column over it (the one whose return is nearest beyond it): for a
+//    level camera in one walk along the column, for a tilted one ray by ray.
+//    The camera is assumed above obstacle_min_height. So a person who walked away stops blocking the map
 //    once the floor where they stood is seen again, while a ray passing high
 //    over a low obstacle, or a view of a wall from another side, never erases
 //    it. Cells hit in the same frame are never cleared by that frame.
@@ -40,6 +41,9 @@ struct DepthRay {
 struct DepthImage {
   int width = 0, height = 0;
   std::vector<DepthRay> rays;
+  // Taken with a level camera (no pitch, no roll): the rays of an image
+  // column share one horizontal direction.
+  bool level = false;
 };
 
 struct ObstacleMapConfig {
@@ -90,7 +94,17 @@ class ObstacleMapper {
       ++version_;
     }
   }
+  struct ColumnRay {
+    double reach;       // horizontal distance to the return [m]
+    double horizontal;  // horizontal length of the direction
+    const DepthRay* ray;
+  };
+  void walkLevelColumn(const Eigen::Vector3d& origin, const DepthRay& farthest, double reach,
+                       const std::vector<ColumnRay>& floor_rays);
+  void traceColumnRays(const Eigen::Vector3d& origin, const DepthRay& farthest,
+                       const std::vector<ColumnRay>& floor_rays);
   void markSeen(const Eigen::Vector3d& origin, const DepthRay& ray);
+  void markReturnCellSeen(const Eigen::Vector3d& origin, const DepthRay& ray);
   // From ray parameter t_from on (earlier cells were covered by a lower ray).
   void clearBelowThreshold(const Eigen::Vector3d& origin, const DepthRay& ray, double t_from);
 
@@ -101,12 +115,14 @@ class ObstacleMapper {
   std::vector<uint32_t> hit_in_frame_;  // frame number of the last obstacle return per cell
   uint32_t frame_ = 0;
   uint64_t version_ = 0;
-  struct ColumnRay {
-    double reach;       // horizontal distance to the return [m]
-    double horizontal;  // horizontal length of the direction
-    const DepthRay* ray;
+  // Scratch, kept between frames.
+  struct ColumnScan {
+    const DepthRay* farthest = nullptr;
+    double farthest_reach = 0;
+    std::vector<ColumnRay> floor_rays;
   };
-  std::vector<ColumnRay> column_rays_;  // scratch, kept between frames
+  std::vector<ColumnScan> columns_;
+  std::vector<std::size_t> obstacle_cells_;  // scratch, kept between frames
 };
 
 }  // namespace beft::vision

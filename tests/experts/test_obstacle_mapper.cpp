@@ -20,12 +20,13 @@ constexpr uint8_t kUnknown = obstacle_map_t::CELL_UNKNOWN;
 constexpr uint8_t kFree = obstacle_map_t::CELL_FREE;
 constexpr uint8_t kOccupied = obstacle_map_t::CELL_OCCUPIED;
 
-// A depth image from a camera at (2, 5, 1.6) looking along +x at a wall whose
-// face is the plane x = wall_x (2.5 m tall, across the whole world), over
-// flat ground; computed from the camera model's pixel rays.
-camera_frame_t wallDepthImage(double wall_x) {
+// A depth image from a camera at (2, 5, 1.6) looking along +x (tilted by
+// pitch_deg) at a wall whose face is the plane x = wall_x (2.5 m tall, across
+// the whole world), over flat ground; computed from the camera model's pixel
+// rays.
+camera_frame_t wallDepthImage(double wall_x, double pitch_deg = 0) {
   camera::Camera cam;
-  cam.pose = {2, 5, 1.6, 0, 0};
+  cam.pose = {2, 5, 1.6, 0, pitch_deg};
   cam.intrinsics = {60, 160, 120, 20};  // 3.6 cm per pixel at the wall: every 10 cm cell is hit
   camera_frame_t f{};
   f.encoding = camera_frame_t::ENCODING_DEPTH_MM16;
@@ -41,7 +42,7 @@ camera_frame_t wallDepthImage(double wall_x) {
   for (int v = 0; v < f.height; ++v) {
     for (int u = 0; u < f.width; ++u) {
       const Eigen::Vector3d d = camera::pixelRay(cam, u, v);  // forward component 1: t is the z-depth
-      const double t_wall = (wall_x - cam.pose.x) / d.x();
+      const double t_wall = (wall_x - cam.pose.x) / d.x();  // along the ray: z-depth
       const double z_wall = cam.pose.z + t_wall * d.z();
       double depth = 0;
       if (z_wall >= 0 && z_wall <= 2.5) depth = t_wall;
@@ -84,6 +85,25 @@ TEST(ObstacleMapper, WallAtKnownDistanceMarksItsCellsAndTheFreeSpaceBeforeIt) {
   EXPECT_EQ(map.cell(72, 50), kUnknown);  // behind the wall
   EXPECT_EQ(map.cell(10, 50), kUnknown);  // behind the camera
   EXPECT_EQ(map.cellAt(7.05, 5.0), kOccupied);
+}
+
+TEST(ObstacleMapper, ATiltedCameraMapsTheSameWall) {
+  // Looking 10 deg down: the rays of an image column fan out horizontally,
+  // so the mapper traces them one by one.
+  vision::ObstacleMapper map(30, 10, {});
+  const camera_frame_t depth = wallDepthImage(7.05, -10);
+  const vision::DepthImage image = vision::depthRays(depth);
+  EXPECT_FALSE(image.level);
+  EXPECT_TRUE(vision::depthRays(wallDepthImage(7.05)).level);
+  map.integrate({depth.cam_x, depth.cam_y, depth.cam_z}, image);
+  for (int row = 25; row <= 75; ++row) EXPECT_EQ(map.cell(70, row), kOccupied) << "row " << row;
+  int occupied_outside = 0;
+  for (int row = 0; row < map.height(); ++row)
+    for (int column = 0; column < map.width(); ++column)
+      if (column != 70 && map.cell(column, row) == kOccupied) ++occupied_outside;
+  EXPECT_EQ(occupied_outside, 0);
+  for (int column = 30; column <= 69; ++column) EXPECT_EQ(map.cell(column, 50), kFree) << "column " << column;
+  EXPECT_EQ(map.cell(72, 50), kUnknown);
 }
 
 TEST(ObstacleMapper, ASecondViewNeverErasesTheWall) {
