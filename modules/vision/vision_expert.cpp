@@ -69,6 +69,26 @@ bool VisionExpert::inputsReady(const expert::Firing& firing) const {
   return scene_.has(firing.tick) && depth_.has(firing.tick) && instance_.has(firing.tick);
 }
 
+// Two frames show the same view: same camera pose and intrinsics, same pixels.
+bool VisionExpert::sameView(const camera_frame_t& a, const camera_frame_t& b) {
+  return a.encoding == b.encoding && a.width == b.width && a.height == b.height && a.fov == b.fov &&
+         a.range == b.range && a.cam_x == b.cam_x && a.cam_y == b.cam_y && a.cam_z == b.cam_z &&
+         a.cam_yaw == b.cam_yaw && a.cam_pitch == b.cam_pitch && a.data == b.data;
+}
+
+// Two scenes hold the same solids: same objects with the same shapes and poses.
+bool VisionExpert::sameSolids(const scene_objects_t& a, const scene_objects_t& b) {
+  if (a.objects.size() != b.objects.size()) return false;
+  for (std::size_t i = 0; i < a.objects.size(); ++i) {
+    const auto& p = a.objects[i];
+    const auto& q = b.objects[i];
+    if (p.id != q.id || p.shape != q.shape || p.x != q.x || p.y != q.y || p.z != q.z || p.yaw != q.yaw ||
+        p.size_x != q.size_x || p.size_y != q.size_y || p.size_z != q.size_z || p.radius != q.radius)
+      return false;
+  }
+  return true;
+}
+
 expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output& out) {
   const auto* scene = scene_.ofTick(firing.tick);
   const auto* depth = depth_.ofTick(firing.tick);
@@ -78,10 +98,15 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
         std::string("no ") + (scene == nullptr ? "GT_OBJECTS" : depth == nullptr ? "CAMERA_DEPTH" : "CAMERA_INSTANCE") +
         " for tick " + std::to_string(firing.tick));
   try {
-    const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
-    const std::vector<int> expected = ray_caster_.expectedPixelsPerObject(solids, camera::cameraOfFrame(*instance));
+    // Expected pixels only change with the camera or the objects' shapes and poses.
+    if (!sameView(*instance, last_instance_) || !sameSolids(*scene, last_scene_)) {
+      const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
+      expected_ = ray_caster_.expectedPixelsPerObject(solids, camera::cameraOfFrame(*instance));
+      last_instance_ = *instance;
+      last_scene_ = *scene;
+    }
     const std::vector<int> visible = countVisiblePixels(*instance, *scene);
-    out.publish(channels::kVision, estimateVisualOcclusion(*scene, visible, expected));
+    out.publish(channels::kVision, estimateVisualOcclusion(*scene, visible, expected_));
     updateMap(*scene, *depth, firing.tick);
     // Re-encoded only when a cell changed (a robot standing still sees no change).
     if (map_message_version_ == 0 || mapper_->version() != map_message_version_) {
@@ -123,13 +148,18 @@ void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t&
     mapped_world_width_ = scene.world_width;
     mapped_world_height_ = scene.world_height;
     last_mapped_tick_ = -1;
+    last_depth_ = camera_frame_t{};
     map_message_version_ = 0;
   }
   if (tick == last_mapped_tick_) return;  // a re-sent FIRE: this frame is in the map already
+  last_mapped_tick_ = tick;
+  // The same image from the same pose adds nothing (integrating is
+  // idempotent): a robot standing in a still scene costs no mapping.
+  if (sameView(depth, last_depth_)) return;
   const Eigen::Vector3d origin(depth.cam_x, depth.cam_y, depth.cam_z);
   depthRays(depth, depth_image_);
   mapper_->integrate(origin, depth_image_);
-  last_mapped_tick_ = tick;
+  last_depth_ = depth;
 }
 
 }  // namespace beft::vision

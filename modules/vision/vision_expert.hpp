@@ -35,6 +35,8 @@ class VisionExpert : public expert::Expert {
  private:
   void updateMap(const scene_objects_t& scene, const camera_frame_t& depth, int64_t tick);
   void resumeMap();
+  static bool sameView(const camera_frame_t& a, const camera_frame_t& b);
+  static bool sameSolids(const scene_objects_t& a, const scene_objects_t& b);
 
   ObstacleMapConfig map_config_;
   std::unique_ptr<ObstacleMapper> mapper_;
@@ -42,9 +44,13 @@ class VisionExpert : public expert::Expert {
   int64_t last_mapped_tick_ = -1;
   std::optional<obstacle_map_t> resume_map_;  // a map published before this process started
   DepthImage depth_image_;             // reused between frames
+  camera_frame_t last_depth_{};        // the depth frame last added to the map
   obstacle_map_t map_message_;         // the map as last encoded
   uint64_t map_message_version_ = 0;   // mapper version it encodes (0: none yet)
   camera::RayCaster ray_caster_;
+  std::vector<int> expected_;          // expected pixels per object for the view below
+  camera_frame_t last_instance_{};
+  scene_objects_t last_scene_{};
   expert::TickChannel<scene_objects_t> scene_;
   expert::TickChannel<camera_frame_t> depth_{4};
   expert::TickChannel<camera_frame_t> instance_{4};
