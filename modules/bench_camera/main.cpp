@@ -70,7 +70,7 @@ double threadSeconds() {
 
 // Frames per CPU second rendering for about `seconds` (at least min_frames).
 double framesPerSecond(const BenchScene& scene, RenderMethod method, double seconds, int min_frames,
-                       bool encode) {
+                       bool encode, int fixed_frames) {
   RayCaster caster;
   RenderedFrame frame;
   CameraMessages messages;
@@ -79,7 +79,7 @@ double framesPerSecond(const BenchScene& scene, RenderMethod method, double seco
   const double start = threadSeconds();
   int frames = 0;
   double elapsed = 0;
-  while (frames < min_frames || elapsed < seconds) {
+  while (fixed_frames > 0 ? frames < fixed_frames : (frames < min_frames || elapsed < seconds)) {
     caster.render(scene.geometry, scene.cameras[frames % scene.cameras.size()], frame, method);
     if (encode) encodeCameraMessages(frame, 0, frames, ids, messages);
     ++frames;
@@ -96,6 +96,7 @@ int main(int argc, char** argv) {
   double width = 60, height = 40;
   uint64_t seed = 1;
   bool skip_brute_force = false;
+  int fixed_frames = 0;
   CLI::App app(
       "Benchmarks the RGBD camera's ray caster: frames per second on one core for 160x120 and 640x480 images "
       "over random scenes (walls, crates, persons in a yard), for each render method: projection (used by the "
@@ -110,6 +111,8 @@ int main(int argc, char** argv) {
       CLI::PositiveNumber);
   app.add_option("--seed", seed, "random scene seed")->capture_default_str();
   app.add_flag("--no-brute-force", skip_brute_force, "skip the slow baseline");
+  app.add_option("--frames", fixed_frames, "render exactly this many frames per measurement instead (for profilers)")
+      ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
   height = width * 2.0 / 3.0;
   for (int count : object_counts) {
@@ -127,14 +130,14 @@ int main(int argc, char** argv) {
   for (int count : object_counts) {
     for (const auto& size : sizes) {
       const BenchScene scene = randomScene(count, width, height, size[0], size[1], seed);
-      const double projection = framesPerSecond(scene, RenderMethod::Projection, seconds, 3, false);
-      const double grid = framesPerSecond(scene, RenderMethod::GridTraversal, seconds, 3, false);
+      const double projection = framesPerSecond(scene, RenderMethod::Projection, seconds, 3, false, fixed_frames);
+      const double grid = framesPerSecond(scene, RenderMethod::GridTraversal, seconds, 3, false, fixed_frames);
       char resolution[32];
       std::snprintf(resolution, sizeof(resolution), "%dx%d", size[0], size[1]);
       if (skip_brute_force) {
         std::printf("%8d %9s %10.1f/s %10.1f/s %12s %10s\n", count, resolution, projection, grid, "-", "-");
       } else {
-        const double brute = framesPerSecond(scene, RenderMethod::BruteForce, seconds, 1, false);
+        const double brute = framesPerSecond(scene, RenderMethod::BruteForce, seconds, 1, false, fixed_frames);
         std::printf("%8d %9s %10.1f/s %10.1f/s %10.2f/s %9.1fx\n", count, resolution, projection, grid, brute,
                     projection / brute);
       }
@@ -145,7 +148,7 @@ int main(int argc, char** argv) {
   for (int count : object_counts) {
     const BenchScene scene = randomScene(count, width, height, 160, 120, seed);
     std::printf("%8d objects: %10.1f frames/s\n", count,
-                framesPerSecond(scene, RenderMethod::Projection, seconds, 3, true));
+                framesPerSecond(scene, RenderMethod::Projection, seconds, 3, true, fixed_frames));
   }
   return 0;
 }

@@ -18,14 +18,6 @@ Rgb unpack(uint32_t rgb) {
           static_cast<float>(rgb & 0xFF)};
 }
 
-Rgb mix(const Rgb& a, const Rgb& b, float weight_b) {
-  return {a.r + (b.r - a.r) * weight_b, a.g + (b.g - a.g) * weight_b, a.b + (b.b - a.b) * weight_b};
-}
-
-inline uint8_t toByte(float value) {
-  return static_cast<uint8_t>(std::clamp(value + 0.5f, 0.0f, 255.0f));
-}
-
 // Fixed look of the rendered world.
 const Rgb kGround{118, 112, 100};
 const Rgb kHaze{196, 206, 218};
@@ -95,35 +87,43 @@ void RayCaster::prepareRays(const Camera& camera) {
     frustum_normals_[i] = corners[i].cross(corners[(i + 1) % 4]).normalized();
   }
 
+  // Locals and raw pointers: stores to the arrays cannot alias them, so the
+  // compiler keeps them in registers.
   const double range = camera.intrinsics.range;
   const double oz = f.origin.z();
+  const double left_x = f.left.x(), left_y = f.left.y();
+  const double* column_a = column_a_.data();
+  const double* inverse_length = inverse_length_.data();
+  double* ray_x = ray_x_.data();
+  double* ray_y = ray_y_.data();
+  double* ray_z = ray_z_.data();
+  double* t_limits = t_limit_.data();
+  double* nearest_t = nearest_t_.data();
+  uint8_t* hits_ground = hits_ground_.data();
+  int32_t* nearest_solid = nearest_solid_.data();
   for (int v = 0; v < height_; ++v) {
     // Same summation order as imagePointRay: (forward + b up) + a left.
     const double b = row_b_[v];
     const double row_x = f.forward.x() + b * f.up.x(), row_y = f.forward.y() + b * f.up.y(),
                  row_z = f.forward.z() + b * f.up.z();
+    // Without roll the camera's left axis is horizontal (left.z == 0), so a
+    // whole row shares its rays' z component and its ground distance.
+    const double dz = row_z;
+    const double t_ground = (dz < 0 && oz > 0) ? -oz / dz : SceneGeometry::kInfinity;
     const size_t row = static_cast<size_t>(v) * width_;
     for (int u = 0; u < width_; ++u) {
       const size_t p = row + u;
-      const double a = column_a_[u];
-      const double dz = row_z + a * f.left.z();
-      ray_x_[p] = row_x + a * f.left.x();
-      ray_y_[p] = row_y + a * f.left.y();
-      ray_z_[p] = dz;
-      const double t_range = range * inverse_length_[p];
-      double t_limit = t_range;
-      bool ground = false;
-      if (dz < 0 && oz > 0) {
-        const double t_ground = -oz / dz;
-        if (t_ground <= t_range) {
-          t_limit = t_ground;
-          ground = true;
-        }
-      }
-      t_limit_[p] = t_limit;
-      hits_ground_[p] = ground;
-      nearest_t_[p] = t_limit;
-      nearest_solid_[p] = -1;
+      const double a = column_a[u];
+      ray_x[p] = row_x + a * left_x;
+      ray_y[p] = row_y + a * left_y;
+      ray_z[p] = dz;
+      const double t_range = range * inverse_length[p];
+      const bool ground = t_ground <= t_range;
+      const double t_limit = ground ? t_ground : t_range;
+      t_limits[p] = t_limit;
+      hits_ground[p] = ground;
+      nearest_t[p] = t_limit;
+      nearest_solid[p] = -1;
     }
   }
 }
@@ -261,50 +261,71 @@ void RayCaster::shade(const SceneGeometry& scene, RenderedFrame& frame) const {
   frame.object.resize(pixels);
   frame.rgb.resize(3 * pixels);
   const Eigen::Vector3d& o = camera_frame_.origin;
-  const double inv_range = 1.0 / camera_.intrinsics.range;
+  const float inv_range = static_cast<float>(1.0 / camera_.intrinsics.range);
   // The solid colours once, not per pixel.
   std::vector<Rgb> colours;
   colours.reserve(scene.solids().size());
   for (const Solid& solid : scene.solids()) colours.push_back(unpack(solid.color_rgb));
 
+  // Locals and raw pointers: the byte stores below may alias anything, so
+  // without them every member would be reloaded per pixel.
+  const double ox = o.x(), oy = o.y();
+  const int32_t* nearest_solid = nearest_solid_.data();
+  const uint8_t* hits_ground = hits_ground_.data();
+  const double* ray_x = ray_x_.data();
+  const double* ray_y = ray_y_.data();
+  const double* ray_z = ray_z_.data();
+  const double* inverse_length = inverse_length_.data();
+  const double* nearest_t = nearest_t_.data();
+  const Face* nearest_face = nearest_face_.data();
+  const Solid* solids = scene.solids().data();
+  const Rgb* solid_colours = colours.data();
+  float* depth = frame.depth.data();
+  int32_t* object = frame.object.data();
   uint8_t* rgb = frame.rgb.data();
-  for (size_t p = 0; p < pixels; ++p, rgb += 3) {
-    const Eigen::Vector3d d(ray_x_[p], ray_y_[p], ray_z_[p]);
-    Rgb colour;
-    const int s = nearest_solid_[p];
-    if (s >= 0 || hits_ground_[p]) {
-      const double t = nearest_t_[p];
-      const double x = o.x() + t * d.x(), y = o.y() + t * d.y();
-      float light;
-      if (s >= 0) {
-        const Solid& solid = scene.solids()[s];
-        const Eigen::Vector3d normal = entryNormal(solid, Eigen::Vector3d(x, y, o.z() + t * d.z()), d, nearest_face_[p]);
-        const double facing = -normal.dot(d) * inverse_length_[p];
-        light = kAmbient + kSun * static_cast<float>(std::max(0.0, normal.dot(kLight))) +
-                kHeadlight * static_cast<float>(std::max(0.0, facing));
-        colour = colours[s];
-        frame.object[p] = solid.object_index;
-      } else {
-        // A faint 1 m checker, so motion over the ground shows.
-        const long cell_x = static_cast<long>(x) - (x < 0), cell_y = static_cast<long>(y) - (y < 0);
-        light = ((cell_x + cell_y) & 1) ? 0.92f : 1.0f;
-        colour = kGround;
-        frame.object[p] = -1;
-      }
-      const float fraction_of_range = static_cast<float>(t * inverse_length_[p] * inv_range);
-      colour = mix({colour.r * light, colour.g * light, colour.b * light}, kHaze,
-                   kFogAtRange * fraction_of_range * fraction_of_range);
-      frame.depth[p] = static_cast<float>(t);
-    } else {
+  const auto store = [rgb](size_t p, float r, float g, float b) {
+    // Never negative; at most slightly above 255 where lights add up.
+    rgb[3 * p] = static_cast<uint8_t>(std::min(r, 255.0f) + 0.5f);
+    rgb[3 * p + 1] = static_cast<uint8_t>(std::min(g, 255.0f) + 0.5f);
+    rgb[3 * p + 2] = static_cast<uint8_t>(std::min(b, 255.0f) + 0.5f);
+  };
+  for (size_t p = 0; p < pixels; ++p) {
+    const int s = nearest_solid[p];
+    if (s < 0 && !hits_ground[p]) {
       // Sky: haze at and below the horizon, bluer towards the zenith.
-      const float elevation = std::clamp(static_cast<float>(d.z() * inverse_length_[p]), 0.0f, 1.0f);
-      colour = mix(kHaze, kSkyZenith, elevation * (2.0f - elevation));
-      frame.depth[p] = 0;
-      frame.object[p] = -1;
+      const float elevation = std::clamp(static_cast<float>(ray_z[p] * inverse_length[p]), 0.0f, 1.0f);
+      const float w = elevation * (2.0f - elevation);
+      store(p, kHaze.r + (kSkyZenith.r - kHaze.r) * w, kHaze.g + (kSkyZenith.g - kHaze.g) * w,
+            kHaze.b + (kSkyZenith.b - kHaze.b) * w);
+      depth[p] = 0;
+      object[p] = -1;
+      continue;
     }
-    rgb[0] = toByte(colour.r);
-    rgb[1] = toByte(colour.g);
-    rgb[2] = toByte(colour.b);
+    const double t = nearest_t[p];
+    const float fraction_of_range = static_cast<float>(t * inverse_length[p]) * inv_range;
+    const float fog = kFogAtRange * fraction_of_range * fraction_of_range;
+    float light;
+    Rgb colour;
+    if (s >= 0) {
+      const Solid& solid = solids[s];
+      const Eigen::Vector3d d(ray_x[p], ray_y[p], ray_z[p]);
+      const Eigen::Vector3d normal = entryNormal(solid, o + t * d, d, nearest_face[p]);
+      const double facing = -normal.dot(d) * inverse_length[p];
+      light = kAmbient + kSun * static_cast<float>(std::max(0.0, normal.dot(kLight))) +
+              kHeadlight * static_cast<float>(std::max(0.0, facing));
+      colour = solid_colours[s];
+      object[p] = solid.object_index;
+    } else {
+      // Ground with a faint 1 m checker, so motion over it shows.
+      const double x = ox + t * ray_x[p], y = oy + t * ray_y[p];
+      const long cell_x = static_cast<long>(x) - (x < 0), cell_y = static_cast<long>(y) - (y < 0);
+      light = ((cell_x + cell_y) & 1) ? 0.92f : 1.0f;
+      colour = kGround;
+      object[p] = -1;
+    }
+    const float keep = light * (1.0f - fog);
+    store(p, colour.r * keep + kHaze.r * fog, colour.g * keep + kHaze.g * fog, colour.b * keep + kHaze.b * fog);
+    depth[p] = static_cast<float>(t);
   }
 }
 
