@@ -122,11 +122,17 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
   return expert::Outcome::success();
 }
 
-// Starts from the map a previous run published, if it covers the same grid.
-void VisionExpert::resumeMap() {
+// Starts from the map this expert published before a restart, if it covers
+// the same grid. A map of a later tick than the first one fired belongs to an
+// earlier run (the blackboard outlived it), not to this one.
+void VisionExpert::resumeMap(int64_t first_tick) {
   if (!resume_map_) return;
   const obstacle_map_t map = std::move(*resume_map_);
   resume_map_.reset();
+  if (map.tick >= first_tick) {
+    log::info("obstacle map of tick ", map.tick, " on the blackboard is from another run: starting empty");
+    return;
+  }
   if (map.width != mapper_->width() || map.height != mapper_->height() ||
       std::abs(map.resolution - mapper_->resolution()) > 1e-9 || map.origin_x != 0 || map.origin_y != 0) {
     log::warn("obstacle map of tick ", map.tick, " on the blackboard is for another grid: starting empty");
@@ -144,7 +150,7 @@ void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t&
   if (!mapper_ || scene.world_width != mapped_world_width_ || scene.world_height != mapped_world_height_) {
     if (mapper_) log::warn("world size changed: obstacle map restarted");
     mapper_ = std::make_unique<ObstacleMapper>(scene.world_width, scene.world_height, map_config_);
-    resumeMap();
+    resumeMap(tick);
     mapped_world_width_ = scene.world_width;
     mapped_world_height_ = scene.world_height;
     last_mapped_tick_ = -1;

@@ -34,7 +34,7 @@ class VisionExpert : public expert::Expert {
 
  private:
   void updateMap(const scene_objects_t& scene, const camera_frame_t& depth, int64_t tick);
-  void resumeMap();
+  void resumeMap(int64_t first_tick);
   static bool sameView(const camera_frame_t& a, const camera_frame_t& b);
   static bool sameSolids(const scene_objects_t& a, const scene_objects_t& b);
 

@@ -111,6 +111,24 @@ TEST(VisionExpert, ResumesTheMapOfAPreviousRunAndIgnoresItsOwnEcho) {
   EXPECT_EQ(map.at(10, 90), obstacle_map_t::CELL_UNKNOWN);
 }
 
+TEST(VisionExpert, AMapFromAnEarlierRunIsNotResumed) {
+  // The blackboard still holds the last map of a run that reached tick 900;
+  // this run starts at tick 0.
+  planners::ObstacleCells stale;
+  stale.width = 200;
+  stale.height = 100;
+  stale.resolution = 0.1;
+  stale.cells.assign(200 * 100, obstacle_map_t::CELL_OCCUPIED);
+  vision::VisionExpert vision;
+  vision.onStartUp({});
+  ASSERT_TRUE(feed(vision, channels::kObstacleMap, planners::makeObstacleMap(stale, obstacle_map_t::ENCODING_RLE, 0, 900)));
+  feedTick(vision, 0);
+  Collected out;
+  ASSERT_TRUE(vision.fire(firingFor(0, 1), out).ok);
+  const auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  EXPECT_EQ(map.at(10, 90), obstacle_map_t::CELL_UNKNOWN);
+}
+
 TEST(VisionExpert, AMapForAnotherGridIsNotResumed) {
   planners::ObstacleCells other;
   other.width = 50;
@@ -119,10 +137,10 @@ TEST(VisionExpert, AMapForAnotherGridIsNotResumed) {
   other.cells.assign(50 * 50, obstacle_map_t::CELL_OCCUPIED);
   vision::VisionExpert vision;
   vision.onStartUp({});
-  ASSERT_TRUE(feed(vision, channels::kObstacleMap, planners::makeObstacleMap(other, obstacle_map_t::ENCODING_RLE)));
-  feedTick(vision, 0);
+  ASSERT_TRUE(feed(vision, channels::kObstacleMap, planners::makeObstacleMap(other, obstacle_map_t::ENCODING_RLE, 0, 4)));
+  feedTick(vision, 5);
   Collected out;
-  ASSERT_TRUE(vision.fire(firingFor(0, 1), out).ok);
+  ASSERT_TRUE(vision.fire(firingFor(5, 1), out).ok);
   const auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
   EXPECT_EQ(map.width, 200);
   EXPECT_EQ(map.at(10, 90), obstacle_map_t::CELL_UNKNOWN);
