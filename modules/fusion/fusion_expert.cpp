@@ -15,7 +15,8 @@ std::string FusionExpert::description() const {
          "seen (v_P >= seen_threshold), heard, seen_as / heard_as, verified (seen as what it was "
          "heard as) or falsified (seen as something else). Reads GT_OBJECTS, VISION, "
          "LABELS_VISUAL, AUDIO and LABELS_ACOUSTIC of the fired tick (a missing modality is "
-         "skipped with a warning), writes HYPOTHESES. To run it alone: feed those channels (e.g. "
+         "skipped with a warning), writes HYPOTHESES. When (re)started during a run it resumes from "
+         "the last HYPOTHESES on the blackboard. To run it alone: feed those channels (e.g. "
          "lcm-logplayer of a recorded run) and FIRE tokens for 'fusion', or use --replay LOG.";
 }
 
@@ -24,7 +25,8 @@ std::vector<expert::ChannelSpec> FusionExpert::reads() const {
           {channels::kVision, "beft.visual_percepts_t"},
           {channels::kLabelsVisual, "beft.labels_t"},
           {channels::kAudio, "beft.acoustic_percepts_t"},
-          {channels::kLabelsAcoustic, "beft.labels_t"}};
+          {channels::kLabelsAcoustic, "beft.labels_t"},
+          {channels::kHypotheses, "beft.hypotheses_t"}};  // to resume after a restart
 }
 
 std::vector<expert::ChannelSpec> FusionExpert::writes() const {
@@ -49,6 +51,13 @@ bool FusionExpert::onMessage(const std::string& channel, const void* data, int s
   if (channel == channels::kLabelsVisual) return visual_labels_.store(data, size);
   if (channel == channels::kAudio) return audio_.store(data, size);
   if (channel == channels::kLabelsAcoustic) return acoustic_labels_.store(data, size);
+  if (channel == channels::kHypotheses) {
+    if (last_fused_tick_ >= 0) return true;  // our own hypotheses heard back
+    hypotheses_t previous{};
+    if (!expert::decodeMessage(data, size, previous)) return false;
+    resume_ = std::move(previous);
+    return true;
+  }
   return false;
 }
 
@@ -73,6 +82,15 @@ expert::Outcome FusionExpert::fire(const expert::Firing& firing, expert::Output&
   if (evidence.acoustic_labels == nullptr) missing += " LABELS_ACOUSTIC";
   if (!missing.empty()) log::warn("tick ", k, ": fusing without", missing);
 
+  // After a restart: the hypotheses published earlier in this run (a later
+  // tick than this one means an earlier run, the blackboard outlived it).
+  if (last_fused_tick_ < 0 && resume_) {
+    if (resume_->tick < k) {
+      fusion_.restore(*resume_);
+      log::info("resumed ", fusion_.size(), " hypotheses of tick ", resume_->tick, " from the blackboard");
+    }
+    resume_.reset();
+  }
   // A tick is folded in once, even if its FIRE is re-run after a lost DONE.
   if (k != last_fused_tick_) {
     fusion_.update(evidence);

@@ -1,9 +1,14 @@
 // The fusion expert as a process (high level): stores the scene, the
 // percepts and the labels of both modalities, and on FIRE for tick k folds
-// them into the hypotheses and publishes HYPOTHESES.
+// them into the hypotheses and publishes HYPOTHESES. It also reads
+// HYPOTHESES: a restarted fusion expert resumes from the hypotheses last
+// published in the same run (its own, heard back while it runs, are ignored).
 #pragma once
 
+#include <optional>
+
 #include <beft/acoustic_percepts_t.hpp>
+#include <beft/hypotheses_t.hpp>
 #include <beft/labels_t.hpp>
 #include <beft/scene_objects_t.hpp>
 #include <beft/visual_percepts_t.hpp>
@@ -29,6 +34,7 @@ class FusionExpert : public expert::Expert {
  private:
   HypothesisFusion fusion_;
   int64_t last_fused_tick_ = -1;
+  std::optional<hypotheses_t> resume_;  // published before this process started
   expert::TickChannel<scene_objects_t> scene_;
   expert::TickChannel<visual_percepts_t> vision_;
   expert::TickChannel<labels_t> visual_labels_;

@@ -110,9 +110,28 @@ void HypothesisFusion::update(const TickEvidence& evidence) {
   }
 
   for (auto& h : hypotheses_) {
-    if (h.settled_utime >= 0 || !h.seen || !h.heard || !h.visual || !h.acoustic) continue;
-    h.settled_utime = utime;  // verified or falsified from now on
+    if (h.settled_utime >= 0 || !h.seen || !h.heard) continue;
+    const bool seen_as_known = h.visual || !h.restored_seen_as.empty();  // seen implies a clear enough view
+    const bool heard_as_known = h.acoustic || !h.restored_heard_as.empty();
+    if (seen_as_known && heard_as_known) h.settled_utime = utime;  // verified or falsified from now on
   }
+}
+
+void HypothesisFusion::restore(const hypotheses_t& previous) {
+  if (!hypotheses_.empty()) return;
+  for (const auto& p : previous.hypotheses) {
+    Hypothesis& h = hypothesisFor(p.object_id);
+    h.seen = p.seen;
+    h.heard = p.heard;
+    h.first_seen_utime = p.first_seen_utime;
+    h.first_heard_utime = p.first_heard_utime;
+    h.settled_utime = p.settled_utime;
+    (p.seen ? h.visual_position : h.acoustic_position) = Position{p.x, p.y, p.z};
+    h.restored = Evidence{p.confidence, p.categories, p.fused};
+    h.restored_seen_as = p.seen_as;
+    h.restored_heard_as = p.heard_as;
+  }
+  if (categories_.empty() && !previous.hypotheses.empty()) categories_ = previous.hypotheses.front().categories;
 }
 
 hypothesis_t HypothesisFusion::toMessage(const Hypothesis& h, const std::vector<std::string>& categories) const {
@@ -125,21 +144,26 @@ hypothesis_t HypothesisFusion::toMessage(const Hypothesis& h, const std::vector<
   out.y = position.y;
   out.z = position.z;
 
-  const double visual_weight = h.visual ? h.visual->perceptibility : 0.0;
-  const double acoustic_weight = h.acoustic ? h.acoustic->perceptibility : 0.0;
-  const double total = visual_weight + acoustic_weight;
+  // The evidence fused: each modality's memory; after a restart the fused
+  // confidences published before stand in (once) for a modality that has
+  // perceived the object but has no new evidence since.
+  std::vector<const Evidence*> sources;
+  if (h.visual) sources.push_back(&*h.visual);
+  if (h.acoustic) sources.push_back(&*h.acoustic);
+  if (h.restored && ((h.seen && !h.visual) || (h.heard && !h.acoustic) || sources.empty()))
+    sources.push_back(&*h.restored);
+  double total = 0;
+  for (const Evidence* e : sources) total += e->perceptibility;
   out.categories = categories;
   for (const auto& category : categories) {
-    const double visual = h.visual ? confidenceOf(h.visual->categories, h.visual->confidence, category) : 0.0;
-    const double acoustic =
-        h.acoustic ? confidenceOf(h.acoustic->categories, h.acoustic->confidence, category) : 0.0;
-    double fused = 0;
-    if (total > 0) {
-      fused = (visual_weight * visual + acoustic_weight * acoustic) / total;
-    } else {  // perceived only at zero perceptibility: plain average
-      const int sources = (h.visual ? 1 : 0) + (h.acoustic ? 1 : 0);
-      fused = sources > 0 ? (visual + acoustic) / sources : 0.5;
+    double weighted = 0, plain = 0;
+    for (const Evidence* e : sources) {
+      const double confidence = confidenceOf(e->categories, e->confidence, category);
+      weighted += e->perceptibility * confidence;
+      plain += confidence;
     }
+    // Perceived only at zero perceptibility: the plain average.
+    const double fused = total > 0 ? weighted / total : sources.empty() ? 0.5 : plain / sources.size();
     out.fused.push_back(fused);
   }
   out.num_categories = static_cast<int32_t>(out.categories.size());
@@ -149,8 +173,14 @@ hypothesis_t HypothesisFusion::toMessage(const Hypothesis& h, const std::vector<
 
   out.seen = h.seen;
   out.heard = h.heard;
-  out.seen_as = h.seen && h.visual ? bestCategory(h.visual->categories, h.visual->confidence) : "";
-  out.heard_as = h.heard && h.acoustic ? bestCategory(h.acoustic->categories, h.acoustic->confidence) : "";
+  // After a restart, new visual evidence decides only once it is clear enough to count as seen.
+  const bool new_visual_decides =
+      h.visual && (h.restored_seen_as.empty() || h.visual->perceptibility >= config_.seen_threshold);
+  out.seen_as = !h.seen                ? ""
+                : new_visual_decides   ? bestCategory(h.visual->categories, h.visual->confidence)
+                                       : h.restored_seen_as;
+  out.heard_as =
+      !h.heard ? "" : h.acoustic ? bestCategory(h.acoustic->categories, h.acoustic->confidence) : h.restored_heard_as;
   const bool both = !out.seen_as.empty() && !out.heard_as.empty();
   out.verified = both && out.seen_as == out.heard_as;
   out.falsified = both && out.seen_as != out.heard_as;

@@ -20,6 +20,11 @@
 //  - position: where vision last saw it (its ground-truth position at the
 //    last tick with visible pixels: vision localises what it sees), else the
 //    latest acoustic estimate p_hat.
+//  - restore(): after a restart, the hypotheses last published come back
+//    with their flags, times and position; their published fused
+//    confidences (weighted by their best value) stand in for a modality with
+//    no new evidence since, and seen_as / heard_as stay as published until
+//    that modality perceives the object again.
 #pragma once
 
 #include <cstdint>
@@ -55,6 +60,9 @@ class HypothesisFusion {
 
   // Folds in the evidence of one tick (stamped with the scene's utime).
   void update(const TickEvidence& evidence);
+  // Starts from hypotheses published earlier (before a restart); only when
+  // no hypothesis exists yet.
+  void restore(const hypotheses_t& previous);
   // Every hypothesis so far, in order of first perception (ties: scenario order).
   hypotheses_t hypotheses(int64_t utime, int64_t tick) const;
   std::size_t size() const { return hypotheses_.size(); }
@@ -71,6 +79,8 @@ class HypothesisFusion {
   struct Hypothesis {
     std::string object_id;
     std::optional<Evidence> visual, acoustic;  // best evidence so far
+    std::optional<Evidence> restored;          // fused confidences published before a restart
+    std::string restored_seen_as, restored_heard_as;
     std::optional<Position> visual_position, acoustic_position;
     bool seen = false, heard = false;
     int64_t first_seen_utime = -1, first_heard_utime = -1, settled_utime = -1;

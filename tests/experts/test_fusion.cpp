@@ -209,3 +209,60 @@ TEST(Fusion, FusesWhatArrivedWhenAModalityIsMissing) {
   EXPECT_DOUBLE_EQ(out.hypotheses[0].x, 8.5);
   EXPECT_THROW(fusion.update(fusion::TickEvidence{}), std::invalid_argument);
 }
+
+TEST(Fusion, RestoredHypothesesKeepTheirVerdictsUntilNewEvidence) {
+  const std::vector<scene_object_t> objects = {
+      test::sounding(test::boxObject("radio", "siren", 12, 6, 0, 0.4, 0.3, 0.3), "playing", "person"),
+      test::sounding(test::cylinderObject("victim", "person", 3, 3, 0.3, 1.8), "yelling")};
+  fusion::HypothesisFusion before;
+  before.update(Tick(objects, 0).seen("radio", "siren", 0, 0.0).heard("radio", "person", 0.6, 12, 6).evidence());
+  before.update(Tick(objects, 1).seen("radio", "siren", 80, 0.9).evidence());
+  before.update(Tick(objects, 2).heard("victim", "person", 0.4, 3.2, 2.9).evidence());
+  const hypotheses_t published = before.hypotheses(200000, 2);
+  ASSERT_EQ(published.num_hypotheses, 2);
+
+  // A restarted fusion with nothing new: the same hypotheses.
+  fusion::HypothesisFusion after;
+  after.restore(published);
+  after.update(Tick(objects, 3).evidence());
+  const hypotheses_t resumed = after.hypotheses(300000, 3);
+  ASSERT_EQ(resumed.num_hypotheses, 2);
+  for (int i = 0; i < 2; ++i) {
+    const auto& p = published.hypotheses[i];
+    const auto& r = resumed.hypotheses[i];
+    EXPECT_EQ(r.object_id, p.object_id);
+    EXPECT_EQ(r.seen, p.seen);
+    EXPECT_EQ(r.heard, p.heard);
+    EXPECT_EQ(r.seen_as, p.seen_as);
+    EXPECT_EQ(r.heard_as, p.heard_as);
+    EXPECT_EQ(r.verified, p.verified);
+    EXPECT_EQ(r.falsified, p.falsified);
+    EXPECT_EQ(r.settled_utime, p.settled_utime);
+    EXPECT_EQ(r.first_heard_utime, p.first_heard_utime);
+    EXPECT_DOUBLE_EQ(r.x, p.x);
+    EXPECT_DOUBLE_EQ(r.y, p.y);
+    EXPECT_EQ(r.fused, p.fused);
+    EXPECT_EQ(r.best_category, p.best_category);
+  }
+  EXPECT_TRUE(find(resumed, "radio")->falsified);
+
+  // New acoustic evidence: the radio stays falsified; its published fused
+  // confidences stand in for the visual side it has not seen again.
+  after.update(Tick(objects, 4).heard("radio", "person", 0.5, 12, 6).evidence());
+  const hypothesis_t* radio = find(after.hypotheses(400000, 4), "radio");
+  ASSERT_NE(radio, nullptr);
+  EXPECT_TRUE(radio->falsified);
+  EXPECT_EQ(radio->seen_as, "siren");
+  EXPECT_EQ(radio->heard_as, "person");
+  const auto* previous = find(published, "radio");
+  const auto acoustic = model::labelConfidences(kCategories, "person", 0.5);
+  EXPECT_NEAR(fusedOf(*radio, "siren"),
+              (0.5 * acoustic[2] + previous->confidence * fusedOf(*previous, "siren")) / (0.5 + previous->confidence),
+              1e-12);
+
+  // Restoring into a fusion that already holds hypotheses changes nothing.
+  hypotheses_t other = published;
+  other.hypotheses[0].object_id = "ghost";
+  after.restore(other);
+  EXPECT_EQ(find(after.hypotheses(400000, 4), "ghost"), nullptr);
+}
