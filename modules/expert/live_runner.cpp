@@ -79,6 +79,7 @@ class Runner {
       if (pending_ && !pending_fired_) timeout_ms = std::min(timeout_ms, 5);
       timeout_ms = std::max(0, std::min(timeout_ms, 100));
       if (lcm_.handleTimeout(timeout_ms) < 0) {
+        if (g_stop_requested) break;  // the signal interrupted the wait
         log::error("LCM receive failed; stopping");
         return 1;
       }
