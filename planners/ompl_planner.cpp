@@ -20,6 +20,7 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include <functional>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -99,7 +100,10 @@ Path OmplPlanner::solvePath(Point2 start, Point2 goal, const Deadline& deadline,
   setState(goal_state.get(), goal);
   auto problem = std::make_shared<ob::ProblemDefinition>(si_);
   problem->setStartAndGoalStates(start_state, goal_state, 1e-6);
-  problem->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si_));
+  auto objective = std::make_shared<ob::PathLengthOptimizationObjective>(si_);
+  // Any path satisfies an infinite threshold: optimising planners stop at their first.
+  if (stop_at_first_) objective->setCostThreshold(ob::Cost(std::numeric_limits<double>::infinity()));
+  problem->setOptimizationObjective(objective);
 
   planner_->clear();
   planner_->setProblemDefinition(problem);

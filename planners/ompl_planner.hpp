@@ -36,6 +36,9 @@ class OmplPlanner : public Planner {
   std::string name() const override { return "ompl:" + ompl_name_; }
   void clear() override;
   bool isAnytime() const override;
+  // Makes asymptotically optimal planners return their first solution
+  // instead of improving it until the deadline.
+  void setStopAtFirstSolution(bool stop) { stop_at_first_ = stop; }
 
  protected:
   void setupMap() override;
@@ -45,6 +48,7 @@ class OmplPlanner : public Planner {
   std::string ompl_name_;
   ompl::base::SpaceInformationPtr si_;
   ompl::base::PlannerPtr planner_;
+  bool stop_at_first_ = false;
 };
 
 }  // namespace beft::planners

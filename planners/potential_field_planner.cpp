@@ -266,7 +266,8 @@ PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index,
       } else if (!moved || ++steps_without_headway >= params_.stall_steps) {
         if (!stepDownWavefront(p, run.trace)) {
           if (wavefrontAt(p) == 0 && map_->segmentFree(p, goal)) continue;  // in the goal cell
-          return run;  // wavefront undefined here: give up
+          run.stalled = true;  // wavefront undefined here: give up
+          return run;
         }
         ++run.discrete_steps;
         best_wavefront = wavefrontAt(p);
@@ -274,7 +275,10 @@ PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index,
       }
     } else if (++steps_without_headway >= params_.stall_steps) {
       // The paper's field: no headway over the window means a local minimum.
-      if (distance(p, window_start) < 0.1 * params_.step * params_.stall_steps) return run;
+      if (distance(p, window_start) < 0.1 * params_.step * params_.stall_steps) {
+        run.stalled = true;
+        return run;
+      }
       window_start = p;
       steps_without_headway = 0;
     }
@@ -301,6 +305,7 @@ Path PotentialFieldPlanner::solvePath(Point2 start, Point2 goal, const Deadline&
   stats_["field_ms"] = std::chrono::duration<double, std::milli>(Deadline::Clock::now() - field_begin).count();
 
   int arrived = 0;
+  int stalled = 0;
   int discrete_steps = 0;
   bool aborted = false;
   double best_cost = std::numeric_limits<double>::infinity();
@@ -308,6 +313,7 @@ Path PotentialFieldPlanner::solvePath(Point2 start, Point2 goal, const Deadline&
   for (int i = 0; i < params_.particles; ++i) {
     ParticleRun run = runParticle(i, start, goal, deadline);
     discrete_steps += run.discrete_steps;
+    stalled += run.stalled ? 1 : 0;
     if (run.arrived) {
       ++arrived;
       const double cost = particleCost(run.trace, params_.straightness_weight);
@@ -324,11 +330,13 @@ Path PotentialFieldPlanner::solvePath(Point2 start, Point2 goal, const Deadline&
   }
   stats_["particles"] = static_cast<double>(traces_.size());
   stats_["arrived"] = arrived;
+  stats_["stalled"] = stalled;
   stats_["discrete_steps"] = discrete_steps;
   if (best.empty()) {
     why_not = aborted ? name() + ": deadline passed before any particle arrived"
-                      : name() + ": no particle reached the goal (" + std::to_string(traces_.size()) +
-                            " trapped or out of steps)";
+                      : name() + ": no particle reached the goal (" + std::to_string(stalled) +
+                            " trapped in local minima, " + std::to_string(traces_.size() - stalled) +
+                            " out of steps)";
   }
   return best;
 }

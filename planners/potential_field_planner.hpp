@@ -88,6 +88,7 @@ class PotentialFieldPlanner : public Planner {
     Path trace;
     bool arrived = false;
     bool aborted = false;  // the deadline passed
+    bool stalled = false;  // stopped making headway (a local minimum)
     int discrete_steps = 0;
   };
   ParticleRun runParticle(int index, Point2 start, Point2 goal, const Deadline& deadline) const;

@@ -312,17 +312,24 @@ int main(int argc, char** argv) {
   if (const auto* p = summary_of("pf")) {
     std::printf("  pf (the paper's planner) success rate: %.1f%% (%d of %d runs); median length ratio %.3f\n",
                 100.0 * p->success_rate, p->successes, p->runs, p->ratio_median);
-    std::map<std::string, std::pair<int, int>> by_map;  // failures, runs
+    struct Failures {
+      int failed = 0, runs = 0;
+      std::string example;
+    };
+    std::map<std::string, Failures> by_map;
     for (const auto& r : runs) {
       if (r.planner != "pf") continue;
-      auto& entry = by_map[r.dataset + " " + r.map];
-      ++entry.second;
-      if (!r.success) ++entry.first;
+      Failures& entry = by_map[r.dataset + " " + r.map];
+      ++entry.runs;
+      if (r.success) continue;
+      ++entry.failed;
+      if (entry.example.empty()) entry.example = r.query + ": " + r.message;
     }
-    for (const auto& [name, counts] : by_map) {
-      if (counts.first > 0) std::printf("    fails on %-28s %d of %d runs\n", name.c_str(), counts.first, counts.second);
+    for (const auto& [name, f] : by_map) {
+      if (f.failed > 0) {
+        std::printf("    fails on %-24s %d of %d runs, e.g. %s\n", name.c_str(), f.failed, f.runs, f.example.c_str());
+      }
     }
-    std::printf("    (failures are particles trapped in local minima of the combined field, or the deadline)\n");
   }
 
   // OMPL's benchmark tooling on a few problems.

@@ -1,0 +1,88 @@
+// Statistical tests in the style of OMPL's planner tests: many seeds per
+// planner, then assertions on the success rate and the mean path length
+// relative to the octile optimum.
+#include "octile_search.hpp"
+#include "planner_factory.hpp"
+#include "planner_test_support.hpp"
+#include "synthetic_maps.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+namespace beft::planners {
+namespace {
+
+struct Tally {
+  int runs = 0;
+  int successes = 0;
+  double ratio_sum = 0;
+  double successRate() const { return runs ? static_cast<double>(successes) / runs : 0.0; }
+  double meanRatio() const { return successes ? ratio_sum / successes : INFINITY; }
+};
+
+GridCell cellOf(Point2 p) { return {static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y))}; }
+
+Tally run(const std::string& planner_name, const SyntheticCase& c, size_t query, int runs, double budget,
+          std::vector<std::pair<std::string, std::string>> params = {}) {
+  auto map = std::make_shared<PlanningMap>(c.map, 0.0);
+  const auto [start, goal] = c.queries[query];
+  const double optimum = octileAStar(map->inflated(), cellOf(start), cellOf(goal)).cost;
+  Tally tally;
+  for (int seed = 1; seed <= runs; ++seed) {
+    PlannerConfig config;
+    config.seed = static_cast<uint64_t>(seed);
+    config.pf_params = params;
+    auto planner = makePlanner(planner_name, config);
+    planner->setup(map);
+    const PlanResult r = planner->solve(start, goal, Deadline::after(budget));
+    ++tally.runs;
+    if (!r.success) continue;
+    EXPECT_EQ(test::findCollision(map->inflated(), r.path), "") << planner_name << " seed " << seed;
+    ++tally.successes;
+    tally.ratio_sum += r.length() / optimum;
+  }
+  ::testing::Test::RecordProperty(planner_name + "_" + c.name + "_success_rate", std::to_string(tally.successRate()));
+  ::testing::Test::RecordProperty(planner_name + "_" + c.name + "_mean_ratio", std::to_string(tally.meanRatio()));
+  return tally;
+}
+
+TEST(PlannerStatistics, GeodesicPotentialFieldSolvesEveryTrapNearOptimally) {
+  for (const SyntheticCase& c : {uTrapCase(), narrowGapCase(), combCase()}) {
+    SCOPED_TRACE(c.name);
+    const Tally t = run("pf-geodesic", c, 0, 20, 5.0);
+    EXPECT_EQ(t.successRate(), 1.0);
+    EXPECT_LE(t.meanRatio(), 1.03);
+  }
+}
+
+TEST(PlannerStatistics, PaperPotentialFieldGoesAroundTheWall) {
+  const Tally t = run("pf", simpleWallCase(), 0, 30, 5.0);
+  EXPECT_GE(t.successRate(), 0.9);
+  EXPECT_LE(t.meanRatio(), 1.10);
+}
+
+TEST(PlannerStatistics, PaperPotentialFieldIsTrappedByTheUMoreOftenWithWeakNoise) {
+  // With a weak random component the paper's particles rarely leave the U;
+  // the geodesic target never needs the noise.
+  const Tally weak = run("pf", uTrapCase(), 0, 20, 5.0, {{"noise", "0.2"}, {"noise_decay", "20"}});
+  const Tally geodesic = run("pf-geodesic", uTrapCase(), 0, 20, 5.0, {{"noise", "0.2"}, {"noise_decay", "20"}});
+  EXPECT_LE(weak.successRate(), 0.5);
+  EXPECT_EQ(geodesic.successRate(), 1.0);
+}
+
+TEST(PlannerStatistics, RrtConnectWithSimplificationThroughTheNarrowGap) {
+  const Tally t = run("ompl:RRTConnect", narrowGapCase(), 0, 30, 5.0);
+  EXPECT_GE(t.successRate(), 0.95);
+  EXPECT_LE(t.meanRatio(), 1.10);
+}
+
+TEST(PlannerStatistics, RrtStarImprovesToNearTheOptimum) {
+  const Tally t = run("ompl:RRTstar", combCase(), 0, 8, 0.2);
+  EXPECT_GE(t.successRate(), 0.85);
+  EXPECT_LE(t.meanRatio(), 1.05);
+}
+
+}  // namespace
+}  // namespace beft::planners
