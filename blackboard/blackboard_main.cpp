@@ -48,6 +48,15 @@ class BlackboardProcess {
  public:
   explicit BlackboardProcess(lcm::LCM& lcm, BlackboardService& service) : lcm_(lcm), service_(service) {}
 
+  // For LCM's subscribeFunction (see main for why not the member-pointer subscribe).
+  static void onAnyMessageOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, BlackboardProcess* self) {
+    self->onAnyMessage(buffer, channel);
+  }
+  static void onQueryOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, const beft::bb_query_t* query,
+                        BlackboardProcess* self) {
+    self->onQuery(buffer, channel, query);
+  }
+
   void onAnyMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
     try {
       const auto verdict = service_.onMessage(channel, buffer->data, static_cast<int>(buffer->data_size));
@@ -130,7 +139,7 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   app.add_option("--exclude", exclude,
-                 "channels not stored: a regular expression matched against the whole name (repeatable; "
+                 "channels not stored: a POSIX extended regular expression matched against the whole name (repeatable; "
                  "replaces the default list). BB_QUERY and BB_SNAPSHOT_* are never stored.")
       ->capture_default_str();
   app.add_option("--status-period", status_period, "seconds between status lines, 0 for none")
@@ -169,11 +178,16 @@ int main(int argc, char** argv) {
   }
 
   BlackboardProcess process(lcm, *service);
-  lcm::Subscription* everything = lcm.subscribe(".*", &BlackboardProcess::onAnyMessage, &process);
+  // subscribeFunction rather than subscribe(channel, &Class::method, object):
+  // GCC 12's UndefinedBehaviorSanitizer miscompiles the member-pointer call
+  // inside LCM's header (the handler gets a null this), so sanitizer builds
+  // would crash on the first message.
+  lcm::Subscription* everything = lcm.subscribeFunction(".*", &BlackboardProcess::onAnyMessageOf, &process);
   // The default 30 would drop messages when a tick's burst (camera frames,
   // percepts of every expert) arrives while a large snapshot is being sent.
   everything->setQueueCapacity(queue_capacity);
-  lcm::Subscription* queries = lcm.subscribe(beft::channels::kBlackboardQuery, &BlackboardProcess::onQuery, &process);
+  lcm::Subscription* queries =
+      lcm.subscribeFunction(beft::channels::kBlackboardQuery, &BlackboardProcess::onQueryOf, &process);
   queries->setQueueCapacity(100);
 
   std::signal(SIGINT, onSignal);

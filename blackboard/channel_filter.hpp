@@ -2,8 +2,10 @@
 // an exclusion pattern (the arbiter's control plane and its own service).
 #pragma once
 
+#include <regex.h>
+
 #include <map>
-#include <regex>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,8 +13,9 @@ namespace beft::blackboard {
 
 class ChannelFilter {
  public:
-  // ECMAScript regular expressions, each matched against the whole channel
-  // name. Throws std::invalid_argument naming a pattern that does not compile.
+  // POSIX extended regular expressions, each matched against the whole
+  // channel name ("BB_.*", "CAMERA_(COLOR|DEPTH)"). Throws
+  // std::invalid_argument naming a pattern that does not compile.
   explicit ChannelFilter(const std::vector<std::string>& exclude_patterns);
 
   // FIRE, DONE, HEARTBEAT, MARKING and BB_.* (queries and snapshots).
@@ -24,8 +27,13 @@ class ChannelFilter {
   const std::vector<std::string>& patterns() const { return patterns_; }
 
  private:
+  struct RegexDeleter {
+    void operator()(regex_t* regex) const;
+  };
+  using Regex = std::unique_ptr<regex_t, RegexDeleter>;
+
   std::vector<std::string> patterns_;
-  std::vector<std::regex> regexes_;
+  std::vector<Regex> regexes_;
   std::map<std::string, bool> verdicts_;
 };
 

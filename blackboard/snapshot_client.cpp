@@ -29,8 +29,12 @@ int64_t newQueryId() {
 class SnapshotWaiter {
  public:
   explicit SnapshotWaiter(int64_t query_id) : query_id_(query_id) {}
-  void onSnapshot(const lcm::ReceiveBuffer*, const std::string&, const beft::bb_snapshot_t* snapshot) {
-    if (!answer_ && snapshot->query_id == query_id_) answer_ = *snapshot;
+  // A plain function for LCM's subscribeFunction: GCC 12's
+  // UndefinedBehaviorSanitizer miscompiles the member-pointer call of LCM's
+  // subscribe(channel, &Class::method, object).
+  static void onSnapshot(const lcm::ReceiveBuffer*, const std::string&, const beft::bb_snapshot_t* snapshot,
+                         SnapshotWaiter* self) {
+    if (!self->answer_ && snapshot->query_id == self->query_id_) self->answer_ = *snapshot;
   }
   std::optional<beft::bb_snapshot_t>& answer() { return answer_; }
 
@@ -54,7 +58,7 @@ std::optional<beft::bb_snapshot_t> requestSnapshot(lcm::LCM& lcm, const std::str
 
   SnapshotWaiter waiter(query.query_id);
   lcm::Subscription* subscription =
-      lcm.subscribe(snapshotChannel(requester), &SnapshotWaiter::onSnapshot, &waiter);
+      lcm.subscribeFunction(snapshotChannel(requester), &SnapshotWaiter::onSnapshot, &waiter);
   // One answer is expected; a few more only if re-sent queries cross it.
   subscription->setQueueCapacity(4);
 

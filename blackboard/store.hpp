@@ -25,7 +25,7 @@ class Store {
 
   struct Limits {
     std::size_t history = 50;                      // messages kept per channel
-    std::size_t max_channel_bytes = 64u << 20;     // bytes kept per channel; the latest is always kept
+    std::size_t max_channel_bytes = 16u << 20;     // bytes kept per channel (about 17 VGA RGB frames); the latest is always kept
   };
 
   explicit Store(Limits limits);

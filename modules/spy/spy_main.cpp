@@ -36,6 +36,13 @@ class Spy {
   Spy(Clock::time_point start, double window_s, std::set<std::string> decoded, int max_lines)
       : start_(start), table_(0.0, window_s), decoded_(std::move(decoded)), max_lines_(max_lines) {}
 
+  // For LCM's subscribeFunction: GCC 12's UndefinedBehaviorSanitizer
+  // miscompiles the member-pointer call of LCM's subscribe(channel,
+  // &Class::method, object), so sanitizer builds would crash.
+  static void onMessageOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, Spy* self) {
+    self->onMessage(buffer, channel);
+  }
+
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
     if (beft::blackboard::isLcmInternalChannel(channel)) return;
     try {
@@ -130,7 +137,7 @@ int main(int argc, char** argv) {
   }
   const auto start = Clock::now();
   Spy spy(start, window_s, std::set<std::string>(decoded_channels.begin(), decoded_channels.end()), max_lines);
-  lcm::Subscription* subscription = lcm.subscribe(match, &Spy::onMessage, &spy);
+  lcm::Subscription* subscription = lcm.subscribeFunction(match, &Spy::onMessageOf, &spy);
   if (!subscription) {
     std::fprintf(stderr, "beft spy: cannot subscribe to '%s'\n", match.c_str());
     return 1;

@@ -275,3 +275,35 @@ TEST(MessageDecoder, NumbersReadBackExactly) {
   EXPECT_EQ(formatNumber(-2), "-2");
   EXPECT_EQ(std::stod(formatNumber(1.0 / 3.0)), 1.0 / 3.0);
 }
+
+TEST(MessageDecoder, CorruptedMessagesNeverCrashOrThrow) {
+  // Random byte flips and truncations of real messages: the text must say
+  // something, whatever the damage (run under BEFT_SANITIZE to check memory).
+  beft::hypotheses_t hypotheses{};
+  beft::hypothesis_t hypothesis{};
+  hypothesis.object_id = "a";
+  hypothesis.categories = {"person", "car"};
+  hypothesis.fused = {0.5, 0.5};
+  hypothesis.num_categories = 2;
+  hypotheses.hypotheses = {hypothesis, hypothesis};
+  hypotheses.num_hypotheses = 2;
+  const std::vector<std::vector<uint8_t>> originals = {encode(hypotheses), encode(sampleRobotState())};
+  uint64_t state = 12345;
+  auto next = [&state]() {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<uint32_t>(state >> 33);
+  };
+  for (int round = 0; round < 3000; ++round) {
+    auto bytes = originals[round % originals.size()];
+    const int flips = 1 + static_cast<int>(next() % 4);
+    for (int i = 0; i < flips; ++i) {
+      // Keep the fingerprint most of the time so the decoder goes deep.
+      const std::size_t at = 8 + next() % (bytes.size() - 8);
+      bytes[at] = static_cast<uint8_t>(next());
+    }
+    if (next() % 3 == 0) bytes.resize(next() % bytes.size());
+    const std::string text = describe("HYPOTHESES", bytes, 50);
+    EXPECT_FALSE(text.empty());
+    EXPECT_LE(std::count(text.begin(), text.end(), '\n'), 50);
+  }
+}

@@ -184,15 +184,19 @@ TEST(ChannelFilter, DefaultExcludesTheControlPlaneAndTheService) {
 }
 
 TEST(ChannelFilter, CustomPatternsMatchWholeNames) {
-  ChannelFilter filter({"CAMERA_.*"});
+  ChannelFilter filter({"CAMERA_.*", "LABELS_VISUAL|AUDIO"});
   EXPECT_FALSE(filter.accepts("CAMERA_DEPTH"));
+  EXPECT_FALSE(filter.accepts("AUDIO"));
+  EXPECT_FALSE(filter.accepts("LABELS_VISUAL"));
+  EXPECT_TRUE(filter.accepts("LABELS_VISUAL_2"));  // the alternation is anchored as a whole
+  EXPECT_TRUE(filter.accepts("MY_AUDIO"));
   EXPECT_TRUE(filter.accepts("MY_CAMERA_DEPTH"));
   EXPECT_TRUE(filter.accepts("FIRE"));  // not in this list
 }
 
 TEST(ChannelFilter, BadPatternIsReportedByName) {
   try {
-    ChannelFilter filter({"OK", "BROKEN[("});
+    ChannelFilter filter({"OK", "BROKEN[("});  // unterminated bracket
     FAIL() << "a broken pattern was accepted";
   } catch (const std::invalid_argument& error) {
     EXPECT_NE(std::string(error.what()).find("BROKEN[("), std::string::npos);
