@@ -144,7 +144,14 @@ Executor::TickOutput Executor::tick(TaskStack& stack, int64_t utime) {
     }
 
     if (!finish) break;
+    const std::size_t seen = stack.pendingEvents().size();
     stack.finish(task.id, finish->first, finish->second);
+    for (std::size_t i = seen; i < stack.pendingEvents().size(); ++i) {
+      const auto& event = stack.pendingEvents()[i];
+      if (event.kind != TaskEvent::Kind::Started && event.kind != TaskEvent::Kind::Suspended &&
+          event.kind != TaskEvent::Kind::Resumed)
+        out.log.push_back(describeEvent(event));  // in order with the start/resume lines
+    }
     runs_.erase(task.id);
     out.command = hold(utime);
     if (out.request) break;
@@ -222,7 +229,7 @@ bool Executor::pathBlocked(const Run& run) const {
   const double step = map.resolution / 2;
   const auto& goal = run.path.back();
   const auto occupiedNear = [&](double px, double py) {
-    if (std::hypot(px - r.x, py - r.y) < r.radius + 0.2) return false;  // where it stands now
+    if (std::hypot(px - r.x, py - r.y) < 0.15) return false;  // where it stands now
     if (std::hypot(px - goal.x, py - goal.y) < r.radius) return false;  // the goal's own surroundings
     const int cx = static_cast<int>(std::floor((px - map.origin_x) / map.resolution));
     const int cy = static_cast<int>(std::floor((py - map.origin_y) / map.resolution));
@@ -259,14 +266,38 @@ Executor::Finish Executor::runGoto(const Task& task, Run& run, int64_t utime, Ti
       goal_yaw_error <= parameters_.yaw_tolerance_deg)
     return std::make_pair(Status::Done, "reached (" + fmt(r.x) + ", " + fmt(r.y) + ", " + fmt(r.yaw, 1) + ")");
 
+  if (run.backing_off) {
+    // After a collision: back away from the contact, then plan afresh from
+    // clear ground (a start inside the inflated obstacle invites the same path).
+    const bool touched = r.collisions > run.collisions_seen;
+    run.collisions_seen = std::max(run.collisions_seen, r.collisions);
+    if (std::hypot(run.backoff_x - r.x, run.backoff_y - r.y) < 0.05 || touched ||
+        utime - run.backoff_utime >= micros(2.0)) {
+      run.backing_off = false;
+      run.need_plan = true;
+    } else {
+      out.command = gotoCommand(run.backoff_x, run.backoff_y, r.yaw, utime);
+      return std::nullopt;
+    }
+  }
+
   if (run.request_id != 0) {
     if (auto failed = collectPlan(task, run, out)) return failed;
   } else if (!run.need_plan) {
     std::string why;
-    if (r.collisions > run.collisions_seen) why = "the robot collided";
-    else if (map_changed_ && pathBlocked(run)) why = "a newly mapped obstacle blocks the path";
+    const bool collided = r.collisions > run.collisions_seen;
     run.collisions_seen = std::max(run.collisions_seen, r.collisions);
-    if (why.empty()) {
+    if (collided) {
+      why = "the robot collided";
+    } else if (map_changed_ && pathBlocked(run)) {
+      // The map grows as the camera sees: not a failure, so not counted.
+      out.log.push_back("replan " + std::to_string(task.id) + " " + describe(task) +
+                        ": a newly mapped obstacle blocks the path");
+      run.need_plan = true;
+      run.best_error = 1e300;
+      run.progress_utime = utime;
+    }
+    if (why.empty() && !run.need_plan) {
       // Progress: remaining path length plus the heading still to turn.
       const std::size_t n = run.path.size();
       const auto& target = run.path[std::min(run.next_waypoint, n - 1)];
@@ -282,10 +313,17 @@ Executor::Finish Executor::runGoto(const Task& task, Run& run, int64_t utime, Ti
       if (run.replans > parameters_.max_replans)
         return std::make_pair(Status::Failed, "gave up after " + std::to_string(parameters_.max_replans) +
                                                   " replans (last: " + why + ")");
-      out.log.push_back("replan " + std::to_string(task.id) + " " + describe(task) + ": " + why);
-      run.need_plan = true;
       run.best_error = 1e300;
       run.progress_utime = utime;
+      if (collided && parameters_.backoff_m > 0) {
+        startBackoff(run, utime);
+        out.log.push_back("replan " + std::to_string(task.id) + " " + describe(task) + ": " + why +
+                          "; backing off " + fmt(parameters_.backoff_m) + " m first");
+        out.command = gotoCommand(run.backoff_x, run.backoff_y, r.yaw, utime);
+        return std::nullopt;
+      }
+      out.log.push_back("replan " + std::to_string(task.id) + " " + describe(task) + ": " + why);
+      run.need_plan = true;
     }
   }
   if (run.need_plan) {
@@ -304,12 +342,38 @@ Executor::Finish Executor::runGoto(const Task& task, Run& run, int64_t utime, Ti
     out.command = gotoCommand(task.x, task.y, any_yaw ? waypoint.yaw : task.yaw, utime);
   else
     out.command = gotoCommand(waypoint.x, waypoint.y, waypoint.yaw, utime);
+  run.setpoint_x = out.command.goal_x;
+  run.setpoint_y = out.command.goal_y;
   if (parameters_.goto_centres_head) {
     out.command.set_head = true;
     out.command.head_yaw = 0;
     out.command.head_pitch = 0;
   }
   return std::nullopt;
+}
+
+void Executor::startBackoff(Run& run, int64_t utime) const {
+  const auto& r = *robot_;
+  // Away from where it was driving; straight back when it was not driving.
+  double dx = r.x - run.setpoint_x, dy = r.y - run.setpoint_y;
+  double length = std::hypot(dx, dy);
+  if (length < 1e-6) {
+    dx = -std::cos(r.yaw * kPi / 180);
+    dy = -std::sin(r.yaw * kPi / 180);
+    length = 1;
+  }
+  run.backoff_x = r.x + parameters_.backoff_m * dx / length;
+  run.backoff_y = r.y + parameters_.backoff_m * dy / length;
+  if (map_) {
+    // The world refuses goals outside it: stay within the mapped area.
+    const double margin = r.radius + map_->resolution;
+    const double x0 = map_->origin_x + margin, x1 = map_->origin_x + map_->width * map_->resolution - margin;
+    const double y0 = map_->origin_y + margin, y1 = map_->origin_y + map_->height * map_->resolution - margin;
+    if (x0 < x1) run.backoff_x = std::clamp(run.backoff_x, x0, x1);
+    if (y0 < y1) run.backoff_y = std::clamp(run.backoff_y, y0, y1);
+  }
+  run.backing_off = true;
+  run.backoff_utime = utime;
 }
 
 Executor::Finish Executor::runTurnHead(const Task& task, Run& run, int64_t utime, TickOutput& out) {

@@ -28,15 +28,16 @@
 namespace beft::tasks {
 
 struct ExecutorParameters {
-  double waypoint_tolerance_m = 0.3;  // a waypoint counts as reached within this
-  double goal_tolerance_m = 0.2;      // goto is done within this of its goal
+  double waypoint_tolerance_m = 0.1;  // a waypoint counts as reached within this (small: no corner cutting)
+  double goal_tolerance_m = 0.1;      // goto is done within this of its goal
   double yaw_tolerance_deg = 5;       // goto (with a yaw) and turn are done within this
   double head_tolerance_deg = 2;      // turn_head is done within this
   double look_tolerance_deg = 3;      // look_at is done when the object is within this of the nose
   double look_hold_s = 0.5;           // and stays there this long (simulated time)
   double head_yaw_limit_deg = 85;     // head pan range is +- this around the nose
   int max_failed_plans = 3;           // goto fails after this many failed plans in a row
-  int max_replans = 10;               // goto fails after this many replans
+  int max_replans = 10;               // goto fails after this many collisions or stalls
+  double backoff_m = 0.3;             // after a collision, back away this far before replanning
   double stall_s = 5;                 // no progress for this long: replan (goto) or fail
   double look_timeout_s = 20;         // look_at fails after this long
   double owned_idle_s = 10;           // an owned task with no sub-task for this long fails
@@ -85,8 +86,12 @@ class Executor {
     bool need_plan = true;
     int64_t request_id = 0;              // in flight
     int failed_plans = 0;
-    int replans = 0;
+    int replans = 0;                     // after collisions or stalls
     int32_t collisions_seen = 0;
+    double setpoint_x = 0, setpoint_y = 0;  // where it was last sent
+    bool backing_off = false;
+    double backoff_x = 0, backoff_y = 0;
+    int64_t backoff_utime = 0;
     std::string last_plan_error;
     // progress watch (goto, turns)
     double best_error = 1e300;
@@ -110,6 +115,7 @@ class Executor {
   Finish collectPlan(const Task& task, Run& run, TickOutput& out);
   void requestPlan(const Task& task, Run& run, int64_t utime, TickOutput& out);
   bool pathBlocked(const Run& run) const;
+  void startBackoff(Run& run, int64_t utime) const;
   // Records progress (a smaller error); true when stalled for stall_s.
   bool stalled(Run& run, double error, double min_gain, int64_t utime) const;
 

@@ -19,6 +19,15 @@ const char* eventName(TaskEvent::Kind kind) {
   return "?";
 }
 
+std::string describeEvent(const TaskEvent& event) {
+  const std::string what = event.task.kind.empty() ? std::string("command") : describe(event.task);
+  return std::string(eventName(event.kind)) + " " +
+         (event.task.id ? std::to_string(event.task.id) + " " : std::string()) + what + " from " +
+         (event.task.origin.empty() ? "?" : event.task.origin) +
+         (event.command_id ? " (command " + std::to_string(event.command_id) + ")" : "") +
+         (event.reason.empty() ? "" : ": " + event.reason);
+}
+
 std::string validateTask(const Task& task) {
   if (task.kind.empty()) return "task has no kind";
   const auto finite = [](double v) { return std::isfinite(v); };

@@ -26,6 +26,8 @@ struct TaskEvent {
 };
 
 const char* eventName(TaskEvent::Kind kind);
+// One line for a log: "done 3 goto(12, 8, 90) from user (command 7): reached ...".
+std::string describeEvent(const TaskEvent& event);
 
 struct StackOptions {
   // A failed sub-task fails its parent (and so on up), like a sequence in a
@@ -67,6 +69,8 @@ class TaskStack {
 
   // Events since the last call, oldest first.
   std::vector<TaskEvent> takeEvents();
+  // The events takeEvents() would return now.
+  const std::vector<TaskEvent>& pendingEvents() const { return events_; }
 
  private:
   int indexOf(int64_t id) const;

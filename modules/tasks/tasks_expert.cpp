@@ -57,7 +57,8 @@ std::vector<std::vector<std::string>> TasksExpert::parameterHelp() const {
           {"look_hold_s", s(d.look_hold_s), "look_at keeps facing the object this long before it is done [s]"},
           {"head_yaw_limit_deg", s(d.head_yaw_limit_deg), "head pan range, +- around the nose [deg]"},
           {"max_failed_plans", std::to_string(d.max_failed_plans), "goto fails after this many failed plans in a row"},
-          {"max_replans", std::to_string(d.max_replans), "goto fails after this many replans"},
+          {"max_replans", std::to_string(d.max_replans), "goto fails after this many collisions or stalls"},
+          {"backoff_m", s(d.backoff_m), "after a collision, goto backs away this far before replanning [m]"},
           {"stall_s", s(d.stall_s), "no progress for this long: goto replans, turns fail [s]"},
           {"look_timeout_s", s(d.look_timeout_s), "look_at fails after this long [s]"},
           {"owned_idle_s", s(d.owned_idle_s), "an owned task on top with no sub-task for this long fails [s]"},
@@ -79,6 +80,7 @@ void TasksExpert::onStartUp(const expert::Parameters& p) {
   e.head_yaw_limit_deg = p.getDouble("head_yaw_limit_deg", e.head_yaw_limit_deg);
   e.max_failed_plans = static_cast<int>(p.getInt("max_failed_plans", e.max_failed_plans));
   e.max_replans = static_cast<int>(p.getInt("max_replans", e.max_replans));
+  e.backoff_m = p.getDouble("backoff_m", e.backoff_m);
   e.stall_s = p.getDouble("stall_s", e.stall_s);
   e.look_timeout_s = p.getDouble("look_timeout_s", e.look_timeout_s);
   e.owned_idle_s = p.getDouble("owned_idle_s", e.owned_idle_s);
@@ -99,6 +101,7 @@ void TasksExpert::onStartUp(const expert::Parameters& p) {
   positive(e.owned_idle_s, "owned_idle_s");
   positive(e.plan_time_budget_s, "plan_time_budget_s");
   if (e.look_hold_s < 0) throw std::invalid_argument("look_hold_s must be >= 0");
+  if (!(e.backoff_m >= 0 && e.backoff_m <= 5)) throw std::invalid_argument("backoff_m must be in [0, 5]");
   if (e.max_failed_plans < 1) throw std::invalid_argument("max_failed_plans must be >= 1");
   if (e.max_replans < 0) throw std::invalid_argument("max_replans must be >= 0");
   StackOptions options;
@@ -213,14 +216,8 @@ void TasksExpert::logEvents(const std::vector<TaskEvent>& events) const {
         event.kind == TaskEvent::Kind::Resumed)
       continue;  // the executor's start/resume lines say it
     const bool bad = event.kind == TaskEvent::Kind::Rejected || event.kind == TaskEvent::Kind::Failed;
-    const std::string what = event.task.kind.empty() ? std::string("command") : describe(event.task);
-    const std::string line = std::string(eventName(event.kind)) + " " +
-                             (event.task.id ? std::to_string(event.task.id) + " " : std::string()) + what +
-                             " from " + (event.task.origin.empty() ? "?" : event.task.origin) +
-                             (event.command_id ? " (command " + std::to_string(event.command_id) + ")" : "") +
-                             (event.reason.empty() ? "" : ": " + event.reason);
-    if (bad) log::warn(line);
-    else log::info(line);
+    if (bad) log::warn(describeEvent(event));
+    else log::info(describeEvent(event));
   }
 }
 
@@ -234,9 +231,11 @@ expert::Outcome TasksExpert::fire(const expert::Firing& firing, expert::Output& 
 
   updateExecutorInputs(firing);
   Executor::TickOutput result = executor_->tick(*stack_, firing.utime);
-  for (const auto& line : result.log) log::info(line);
-  const std::vector<TaskEvent> executor_events = stack_->takeEvents();
-  logEvents(executor_events);
+  for (const auto& line : result.log) {
+    if (line.rfind("failed ", 0) == 0) log::warn(line);
+    else log::info(line);
+  }
+  const std::vector<TaskEvent> executor_events = stack_->takeEvents();  // the executor logged them
   events.insert(events.end(), executor_events.begin(), executor_events.end());
 
   if (result.request) out.publish(channels::kPlanRequest, *result.request);

@@ -183,7 +183,7 @@ TEST(Executor, GotoReplansAfterACollision) {
   ASSERT_TRUE(h.stack.empty());
   EXPECT_EQ(h.lastEventOf(id)->kind, TaskEvent::Kind::Done) << h.lastEventOf(id)->reason;
   ASSERT_EQ(h.requests.size(), 2u);
-  EXPECT_NEAR(h.requests[1].start_x, 2.2, 0.15) << "replanned from where it stopped";
+  EXPECT_NEAR(h.requests[1].start_x, 2.2 - 0.3, 0.15) << "backed off 0.3 m from the contact, then replanned";
   EXPECT_GE(h.robot.state.collisions, 1);
   EXPECT_NEAR(h.robot.state.x, 6, 0.2);
   bool logged = false;
@@ -191,8 +191,39 @@ TEST(Executor, GotoReplansAfterACollision) {
   EXPECT_TRUE(logged);
 }
 
+TEST(Executor, GotoWithoutBackoffReplansWhereItStopped) {
+  ExecutorParameters p;
+  p.backoff_m = 0;
+  Harness h(p);
+  h.robot.obstacles.push_back({3, 0, 0.5});
+  h.planner = [&](const beft::plan_request_t& r) {
+    if (h.requests.size() == 1) return answer(r, {{r.start_x, r.start_y, 0}, {6, 0, 0}});
+    return answer(r, {{r.start_x, r.start_y, 90}, {r.start_x, 2, 0}, {6, 2, -90}, {6, 0, 0}});
+  };
+  h.stack.push(gotoTask(6, 0, 0));
+  h.run(300);
+  ASSERT_EQ(h.requests.size(), 2u);
+  EXPECT_NEAR(h.requests[1].start_x, 2.2, 0.15);
+}
+
+TEST(Executor, GotoGivesUpAfterRepeatedCollisions) {
+  ExecutorParameters p;
+  p.max_replans = 2;
+  Harness h(p);
+  h.robot.obstacles.push_back({3, 0, 0.5});
+  h.planner = [](const beft::plan_request_t& r) { return answer(r, {{r.start_x, r.start_y, 0}, {6, 0, 0}}); };
+  const int64_t id = h.stack.push(gotoTask(6, 0, 0));
+  h.run(300);
+  ASSERT_TRUE(h.stack.empty());
+  EXPECT_EQ(h.lastEventOf(id)->kind, TaskEvent::Kind::Failed);
+  EXPECT_NE(h.lastEventOf(id)->reason.find("collided"), std::string::npos) << h.lastEventOf(id)->reason;
+  EXPECT_EQ(h.robot.state.collisions, 3);
+}
+
 TEST(Executor, GotoReplansWhenANewlyMappedObstacleBlocksThePath) {
-  Harness h;
+  ExecutorParameters p;
+  p.max_replans = 0;  // map changes are not failures: they do not count
+  Harness h(p);
   h.planner = [&](const beft::plan_request_t& r) {
     if (h.requests.size() == 1) return answer(r, {{r.start_x, r.start_y, 0}, {8, 0, 0}});
     return answer(r, {{r.start_x, r.start_y, 90}, {r.start_x, 2, 0}, {8, 2, -90}, {8, 0, 0}});
