@@ -117,7 +117,8 @@ bool TasksExpert::onMessage(const std::string& channel, const void* data, int si
   if (channel == channels::kTaskCommand) {
     task_command_t command;
     if (!expert::decodeMessage(data, size, command)) return false;
-    if (commands_.size() < 10000) commands_.push_back(std::move(command));
+    if (commands_.size() < kMaxQueuedCommands) commands_.push_back(std::move(command));
+    else ++dropped_commands_;
     return true;
   }
   if (channel == channels::kPlanResult) {
@@ -225,6 +226,10 @@ expert::Outcome TasksExpert::fire(const expert::Firing& firing, expert::Output& 
   if (!stack_) onStartUp({});
   std::vector<task_command_t> commands;
   commands.swap(commands_);
+  if (dropped_commands_ > 0) {
+    log::warn("dropped ", dropped_commands_, " TASK_COMMANDs beyond ", kMaxQueuedCommands, " queued in one tick");
+    dropped_commands_ = 0;
+  }
   for (const auto& command : commands) applyCommand(command);
   std::vector<TaskEvent> events = stack_->takeEvents();
   logEvents(events);

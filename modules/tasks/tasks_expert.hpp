@@ -43,7 +43,9 @@ class TasksExpert : public expert::Expert {
 
   std::unique_ptr<TaskStack> stack_;
   std::unique_ptr<Executor> executor_;
+  static constexpr std::size_t kMaxQueuedCommands = 10000;
   std::vector<task_command_t> commands_;        // received since the last firing, in order
+  int64_t dropped_commands_ = 0;                // beyond kMaxQueuedCommands
   std::deque<plan_result_t> plan_results_;      // recent answers of the planner service
   expert::TickChannel<robot_state_t> robot_;
   expert::TickChannel<hypotheses_t> hypotheses_{4};
