@@ -443,6 +443,16 @@ Executor::Finish Executor::runLookAt(const Task& task, Run& run, int64_t utime, 
   // head leading; once started, the platform turn goes on to the end so the
   // head ends near the centre of its range.
   if (std::abs(relative) > limit) run.turning_platform = true;
+  // A head that stops short (a robot with a narrower pan range than
+  // head_yaw_limit_deg) gets the platform's help too.
+  if (!run.turning_platform && nose_error > parameters_.look_tolerance_deg) {
+    if (nose_error < run.best_error - 0.5) {
+      run.best_error = nose_error;
+      run.progress_utime = utime;
+    } else if (utime - run.progress_utime >= micros(1.0)) {
+      run.turning_platform = true;
+    }
+  }
   if (run.turning_platform && std::abs(relative) <= parameters_.yaw_tolerance_deg)
     run.turning_platform = false;
   if (run.turning_platform) {

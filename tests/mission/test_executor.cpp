@@ -32,7 +32,9 @@ class FakeRobot {
   }
   void apply(const beft::robot_command_t& c, double dt) {
     state.collided = false;
-    if (c.set_head) state.head_yaw += limited(c.head_yaw - state.head_yaw, 180 * dt);
+    if (c.set_head)
+      state.head_yaw = std::clamp(state.head_yaw + limited(c.head_yaw - state.head_yaw, 180 * dt), -head_limit,
+                                  head_limit);
     if (c.mode != beft::robot_command_t::MODE_GOTO) return;
     const double dx = c.goal_x - state.x, dy = c.goal_y - state.y;
     const double distance = std::hypot(dx, dy);
@@ -57,6 +59,7 @@ class FakeRobot {
 
   beft::robot_state_t state{};
   std::vector<Disc> obstacles;
+  double head_limit = 85;  // pan range +- [deg]
 };
 
 beft::plan_result_t answer(const beft::plan_request_t& request, std::vector<std::array<double, 3>> points,
@@ -354,6 +357,20 @@ TEST(Executor, LookAtBehindTurnsThePlatform) {
   EXPECT_NEAR(model::wrapDegrees(h.robot.state.yaw + h.robot.state.head_yaw - bearing), 0, 3);
   EXPECT_GT(std::abs(h.robot.state.yaw), 90);
   EXPECT_NEAR(h.robot.state.x, 0, 1e-9) << "turned in place";
+}
+
+TEST(Executor, LookAtTurnsThePlatformWhenTheHeadStopsShort) {
+  Harness h;
+  h.robot.head_limit = 40;  // narrower than the executor's 85 deg
+  h.executor.setObjectPositions({{"radio", {1, 3}}});  // 71.6 deg left
+  Task look;
+  look.kind = kinds::kLookAt;
+  look.object_id = "radio";
+  const int64_t id = h.stack.push(look);
+  h.run(100);
+  ASSERT_NE(h.lastEventOf(id), nullptr);
+  EXPECT_EQ(h.lastEventOf(id)->kind, TaskEvent::Kind::Done) << h.lastEventOf(id)->reason;
+  EXPECT_GT(h.robot.state.yaw, 25) << "the platform turned";
 }
 
 TEST(Executor, LookAtAnUnknownObjectFails) {
