@@ -88,7 +88,7 @@ OctileSearchResult octileAStar(const GridMap& grid, GridCell start, GridCell goa
 }
 
 std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal) {
-  return octileDistanceField(grid, goal, goal, kInfinity, kInfinity);
+  return octileDistanceField(grid, goal, GridCell{-1, -1}, kInfinity, kInfinity);  // no start: no bound
 }
 
 std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal, GridCell start, double slack,

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace beft::planners {
@@ -122,19 +123,24 @@ void PotentialFieldParams::set(const std::string& name, const std::string& value
 
 std::vector<std::string> PotentialFieldParams::names() {
   const PotentialFieldParams d;
+  const auto text = [](double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+  };
   return {"target=euclidean|geodesic",
-          "particles=" + std::to_string(d.particles),
-          "sigma=" + std::to_string(d.sigma),
-          "target_weight=" + std::to_string(d.target_weight),
-          "obstacle_weight=" + std::to_string(d.obstacle_weight),
-          "noise=" + std::to_string(d.noise),
-          "noise_decay=" + std::to_string(d.noise_decay),
-          "noise_correlation=" + std::to_string(d.noise_correlation),
-          "step=" + std::to_string(d.step),
-          "goal_tolerance=" + std::to_string(d.goal_tolerance),
-          "straightness_weight=" + std::to_string(d.straightness_weight),
-          "stall_steps=" + std::to_string(d.stall_steps),
-          "max_travel=" + std::to_string(d.max_travel)};
+          "particles=" + text(d.particles),
+          "sigma=" + text(d.sigma),
+          "target_weight=" + text(d.target_weight),
+          "obstacle_weight=" + text(d.obstacle_weight),
+          "noise=" + text(d.noise),
+          "noise_decay=" + text(d.noise_decay),
+          "noise_correlation=" + text(d.noise_correlation),
+          "step=" + text(d.step),
+          "goal_tolerance=" + text(d.goal_tolerance),
+          "straightness_weight=" + text(d.straightness_weight),
+          "stall_steps=" + text(d.stall_steps),
+          "max_travel=" + text(d.max_travel)};
 }
 
 double particleCost(const Path& trace, double straightness_weight) {
@@ -244,7 +250,12 @@ PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index,
       toward = goal - p;
       toward_norm = std::max(norm(toward), 1e-12);
     }
-    const Point2 repulsion = force_scale * obstacle_force_.at(p);
+    Point2 repulsion = force_scale * obstacle_force_.at(p);
+    if (geodesic) {
+      // Obstacles beside the goal must not push particles off it: the
+      // repulsion fades out within 3 sigma of the goal.
+      repulsion = std::min(1.0, distance(p, goal) / (3 * params_.sigma)) * repulsion;
+    }
     random_drift = keep * random_drift + renew * Point2{rng.unitVariance(), rng.unitVariance()};
     Point2 direction = (params_.target_weight / toward_norm) * toward + params_.obstacle_weight * repulsion +
                        noise * random_drift;
@@ -264,12 +275,17 @@ PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index,
         best_wavefront = value;
         steps_without_headway = 0;
       } else if (!moved || ++steps_without_headway >= params_.stall_steps) {
-        if (!stepDownWavefront(p, run.trace)) {
+        // Step down the wavefront until below the best value reached so far,
+        // so every stall ends with real headway.
+        do {
+          if (!stepDownWavefront(p, run.trace)) break;
+          ++run.discrete_steps;
+        } while (wavefrontAt(p) >= best_wavefront);
+        if (wavefrontAt(p) >= best_wavefront) {
           if (wavefrontAt(p) == 0 && map_->segmentFree(p, goal)) continue;  // in the goal cell
           run.stalled = true;  // wavefront undefined here: give up
           return run;
         }
-        ++run.discrete_steps;
         best_wavefront = wavefrontAt(p);
         steps_without_headway = 0;
       }

@@ -24,10 +24,12 @@
 //    decayed); a particle that stops making headway fails.
 //  - Geodesic: the octile wavefront to the target around obstacles, which
 //    has no local minima. The wavefront spreads from the target to 1.5 times
-//    the start's distance plus 20 cells, and particles stay inside it. A
-//    particle that has not lowered its wavefront value
-//    for `stall_steps` steps, or cannot move, steps to the lowest neighbouring
-//    cell, so every particle reaches a reachable goal.
+//    the start's distance plus 20 cells, and particles stay inside it. The
+//    repulsion fades out within 3 sigma of the goal, so a goal beside an
+//    obstacle stays reachable. A particle that has not lowered its wavefront
+//    value for `stall_steps` steps, or cannot move, steps down to lower
+//    neighbouring cells until below its best value so far, so every particle
+//    reaches a reachable goal.
 #pragma once
 
 #include "octile_search.hpp"

@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
                  "potential-field parameter name=value, repeatable: " + joined(bp::PotentialFieldParams::names(), ", "));
   app.add_option("--png", png_file, "write a picture of the map, the path and (potential field) the particles");
   app.add_flag("--json", json, R"(print one JSON object {"planner","success","length","time_ms","path",...})");
-  app.add_flag("--raw", raw, "return the planner's own path, not shortcut to sparse waypoints");
+  app.add_flag("--raw", raw, "return the planner's own path, not pulled taut into sparse waypoints");
   CLI11_PARSE(app, argc, argv);
 
   bp::PlannerConfig config;
