@@ -127,7 +127,7 @@ std::vector<std::vector<std::string>> ExplorationExpert::parameterHelp() const {
       {"blind_radius_m", number(d.frontiers.blind_radius_m), "unknown ground this close to where the robot stood is no frontier [m]"},
       {"visited_radius_m", number(d.frontiers.visited_radius_m), "frontier cells this close to a reached frontier goal are ignored [m]"},
       {"min_frontier_cells", std::to_string(d.frontiers.min_cells), "smaller frontiers are ignored [cells]"},
-      {"stop", "1", "publish STOP_REQUEST when the mission is over (0: keep idling)"},
+      {"stop_when_done", "1", "request the stop when nothing is left (0: keep watching until the scenario's duration)"},
   };
 }
 
@@ -156,7 +156,7 @@ void ExplorationExpert::onStartUp(const expert::Parameters& p) {
   e.frontiers.blind_radius_m = p.getDouble("blind_radius_m", e.frontiers.blind_radius_m);
   e.frontiers.visited_radius_m = p.getDouble("visited_radius_m", e.frontiers.visited_radius_m);
   e.frontiers.min_cells = static_cast<int>(p.getInt("min_frontier_cells", e.frontiers.min_cells));
-  publish_stop_ = p.getBool("stop", true);
+  e.stop_when_done = p.getBool("stop_when_done", e.stop_when_done);
 
   requireNonNegative(e.safety_margin_m, "safety_margin_m");
   if (e.verify_attempts < 1) throw std::invalid_argument("verify_attempts must be >= 1");
@@ -227,7 +227,8 @@ Observation ExplorationExpert::observe(const expert::Firing& firing) {
 
   const auto* map = map_messages_.ofTick(firing.tick);
   if (map == nullptr) map = map_messages_.latest();
-  if (map != nullptr && map->utime != map_utime_) {
+  // Decoded only when the explorer will look at it this step.
+  if (map != nullptr && map->utime != map_utime_ && explorer_->wantsMap(o.t)) {
     map_utime_ = map->utime;
     try {
       map_ = std::make_shared<const planners::ObstacleCells>(planners::decodeObstacleMap(*map));
@@ -260,7 +261,7 @@ expert::Outcome ExplorationExpert::fire(const expert::Firing& firing, expert::Ou
     command.command_id = next_command_id_++;
     out.publish(channels::kTaskCommand, command);
   }
-  if (decision.stop && publish_stop_) {
+  if (decision.stop) {
     run_status_t stop{};
     stop.utime = firing.utime;
     stop.tick = firing.tick;

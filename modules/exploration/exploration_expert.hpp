@@ -46,7 +46,6 @@ class ExplorationExpert : public expert::Expert {
   ExplorerParameters parameters_;
   std::unique_ptr<Explorer> explorer_;
   int64_t next_command_id_ = 1;
-  bool publish_stop_ = true;
   int64_t map_utime_ = -1;  // the obstacle map last decoded
   std::shared_ptr<const planners::ObstacleCells> map_;
   bool map_warned_ = false;

@@ -105,6 +105,12 @@ void Explorer::updateTrail(const Observation& o) {
     memory_.addStood({o.robot_x, o.robot_y});
 }
 
+bool Explorer::wantsMap(double t) const {
+  if (stopped_) return false;
+  if (!job_) return true;
+  return job_->composite_id != 0 && t - job_->last_check_t >= parameters_.revalidate_period_s;
+}
+
 Decision Explorer::step(const Observation& o) {
   Decision d;
   if (stopped_) {
@@ -120,8 +126,17 @@ Decision Explorer::step(const Observation& o) {
     return d;
   }
   if (job_) followJob(o, d);
-  if (!job_ && !stopped_) decide(o, d);
+  if (!job_ && !stopped_ && (o.t >= idle_until_t_ || hasFreshTarget(o))) decide(o, d);
   return d;
+}
+
+bool Explorer::hasFreshTarget(const Observation& o) const {
+  for (const auto& h : o.hypotheses) {
+    if (!wantsVerify(h) && !wantsInspect(h)) continue;
+    const auto it = targets_.find(h.object_id);
+    if (it == targets_.end() || (!it->second.given_up && !it->second.no_viewpoint)) return true;
+  }
+  return false;
 }
 
 // Composites of ours on the stack that no job follows (an earlier job's whose
@@ -344,8 +359,8 @@ void Explorer::decide(const Observation& o, Decision& d) {
     job.x = o.robot_x;
     job.y = o.robot_y;
     job.yaw = o.robot_yaw;
-    // The stack runs the sub-task pushed last first: push the last turn first.
-    for (int quarter = 4; quarter >= 1; --quarter)
+    // Sub-tasks run in the order they are pushed.
+    for (int quarter = 1; quarter <= 4; ++quarter)
       job.sub_tasks.push_back(subTask("turn", 0, 0, wrapDeg(o.robot_yaw + 90.0 * quarter), "",
                                       "look around, " + std::to_string(90 * quarter) + " deg"));
     job.deadline_t = o.t + parameters_.attempt_timeout_s;
@@ -377,7 +392,13 @@ void Explorer::decide(const Observation& o, Decision& d) {
   if (given_up > 0) reason += ", " + std::to_string(given_up) + " given up";
   if (no_viewpoint > 0) reason += ", " + std::to_string(no_viewpoint) + " without a reachable viewpoint";
   reason += "), no reachable frontier left";
-  stop(reason, d);
+  if (parameters_.stop_when_done) {
+    stop(reason, d);
+    return;
+  }
+  if (reason != done_reason_) d.log.push_back(reason + "; watching until the scenario's end");
+  done_reason_ = reason;
+  idle_until_t_ = o.t + parameters_.idle_recheck_s;
 }
 
 bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
@@ -414,10 +435,9 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
   job.x = best_viewpoint.x;
   job.y = best_viewpoint.y;
   job.yaw = best_viewpoint.yaw;
-  // Run order goto, then look_at: pushed in reverse.
-  job.sub_tasks.push_back(subTask("look_at", best->x, best->y, 0, best->object_id, "look at " + best->object_id));
   job.sub_tasks.push_back(subTask("goto", job.x, job.y, job.yaw, "",
                                   "go to a viewpoint of " + best->object_id));
+  job.sub_tasks.push_back(subTask("look_at", best->x, best->y, 0, best->object_id, "look at " + best->object_id));
   job.deadline_t = o.t + parameters_.attempt_timeout_s + best_viewpoint.travel_m / parameters_.nominal_speed;
   const std::string note = std::string(inspect ? "inspect " : "verify ") + best->object_id + " at " +
                            at(best->x, best->y) + " from " + at(job.x, job.y) + ", travel " +

@@ -16,7 +16,9 @@
 //  4. Explore: the nearest reachable frontier (frontiers.hpp), facing the
 //     unknown. A hypothesis to verify interrupts it.
 //  5. Stop: nothing to verify or inspect and no reachable frontier left, or
-//     the scenario's duration reached: a stop request with the reason.
+//     the scenario's duration reached: a stop request with the reason. With
+//     stop_when_done off, it keeps watching instead (a new sound to verify
+//     starts it again) and asks to stop only when the duration is reached.
 //
 // Hypotheses are chosen by DW weight (the sounds that matter first), then by
 // the cost of their best viewpoint. Only what the robot perceived is used:
@@ -93,12 +95,12 @@ struct ExplorerParameters {
   std::string origin = "exploration";  // name on the tasks it pushes
   int32_t verify_priority = 20;
   int32_t explore_priority = 10;
-  double safety_margin_m = 0.1;        // added to the robot radius for standable cells
+  double safety_margin_m = 0.15;       // added to the robot radius for standable cells
   bool look_around = true;             // turn a full circle at the start
   int verify_attempts = 4;             // viewpoints per heard hypothesis before giving up
   int inspect_attempts = 2;            // viewpoints per glimpsed hypothesis
   bool inspect_glimpsed = true;
-  double inspect_person_margin = 0.02; // glimpsed: person within this of the best category
+  double inspect_person_margin = 0.0; // glimpsed: person within this of the best category
   double look_dwell_s = 1.5;           // after looking, wait this long for fusion to settle
   double confirm_timeout_s = 3.0;      // a pushed task must show on the stack within this
   double attempt_timeout_s = 30.0;     // plus travel / speed
@@ -108,6 +110,8 @@ struct ExplorerParameters {
   double weight_gain_m = 20.0;         // a DW weight of 1 is worth this much travel
   double stood_spacing_m = 0.5;        // the robot's trail is sampled at this pitch
   double frontier_check_radius_m = 1.0;  // an explore goal ends when no frontier is this near it
+  bool stop_when_done = true;          // request the stop when nothing is left (else at the duration)
+  double idle_recheck_s = 2.0;         // when done and watching, look for work again this often
   ViewpointParameters viewpoints;
   FrontierParameters frontiers;
 };
@@ -117,6 +121,9 @@ class Explorer {
   explicit Explorer(ExplorerParameters parameters = {});
 
   Decision step(const Observation& observation);
+  // Whether the next step at sim time t will look at the map: decoding a map
+  // message can be skipped when not (a running task between its checks).
+  bool wantsMap(double t) const;
 
   // For tests and logs.
   enum class Phase { LookAround, Verify, Explore, Idle, Stopped };
@@ -132,7 +139,7 @@ class Explorer {
     JobKind kind = JobKind::Explore;
     std::string object_id;           // verify / inspect
     double x = 0, y = 0, yaw = 0;    // goal pose
-    std::vector<TaskRequest> sub_tasks;  // pushed once the composite shows, in this order
+    std::vector<TaskRequest> sub_tasks;  // pushed once the composite shows; they run in this order
     int64_t composite_id = 0;        // 0 until seen on the stack
     double sub_tasks_pushed_t = -1;  // when the sub-tasks were pushed, -1 not yet
     double pushed_t = 0;
@@ -151,6 +158,8 @@ class Explorer {
   void updateTrail(const Observation& o);
   bool wantsVerify(const HypothesisView& h) const;
   bool wantsInspect(const HypothesisView& h) const;
+  // A hypothesis to verify or inspect that has not been tried in vain yet.
+  bool hasFreshTarget(const Observation& o) const;
   const HypothesisView* findHypothesis(const Observation& o, const std::string& id) const;
 
   void followJob(const Observation& o, Decision& d);
@@ -177,6 +186,8 @@ class Explorer {
   bool looked_around_ = false;
   bool stopped_ = false;
   std::string stop_reason_;
+  std::string done_reason_;          // why there is nothing left, while watching
+  double idle_until_t_ = -1;         // watching: next look for work
   std::unique_ptr<KnownMap> map_;
   int64_t map_version_ = -1;
   double map_radius_ = -1;

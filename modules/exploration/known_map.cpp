@@ -45,22 +45,36 @@ bool KnownMap::cellOf(double wx, double wy, Cell& cell) const {
 }
 
 SightLine KnownMap::sight(double ax, double ay, double bx, double by, double ignore_near_b) const {
+  // Every cell the segment crosses, in order (Amanatides & Woo's grid walk).
   SightLine line;
   const double length = std::hypot(bx - ax, by - ay);
-  const double step = cells_.resolution / 4;
-  const int samples = std::max(1, static_cast<int>(std::ceil(length / step)));
-  Cell previous{-1, -1};
-  for (int i = 0; i <= samples; ++i) {
-    const double s = static_cast<double>(i) / samples;
-    const double x = ax + (bx - ax) * s, y = ay + (by - ay) * s;
-    if ((1 - s) * length < ignore_near_b) break;  // the target's own footprint from here on
-    Cell cell;
-    if (!cellOf(x, y, cell)) return line;  // leaves the map: no sight
-    if (cell.x == previous.x && cell.y == previous.y) continue;
-    previous = cell;
-    const uint8_t value = cells_.at(cell.x, cell.y);
+  const double fx = (ax - cells_.origin_x) / cells_.resolution, fy = (ay - cells_.origin_y) / cells_.resolution;
+  const double dx = (bx - ax) / cells_.resolution, dy = (by - ay) / cells_.resolution;
+  if (!std::isfinite(fx + fy + dx + dy)) return line;
+  int x = static_cast<int>(std::floor(fx)), y = static_cast<int>(std::floor(fy));
+  const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
+  const double t_delta_x = dx != 0 ? std::abs(1.0 / dx) : kInfinity;
+  const double t_delta_y = dy != 0 ? std::abs(1.0 / dy) : kInfinity;
+  double t_max_x = dx != 0 ? ((dx > 0 ? std::floor(fx) + 1 - fx : fx - std::floor(fx)) * t_delta_x) : kInfinity;
+  double t_max_y = dy != 0 ? ((dy > 0 ? std::floor(fy) + 1 - fy : fy - std::floor(fy)) * t_delta_y) : kInfinity;
+  double t_enter = 0;  // where the walk entered the current cell, as a fraction of the segment
+  while (t_enter <= 1.0) {
+    if ((1.0 - t_enter) * length < ignore_near_b) break;  // the target's own footprint from here on
+    if (!inside(x, y)) return line;                       // leaves the map: no sight
+    const uint8_t value = cells_.at(x, y);
     if (value == obstacle_map_t::CELL_OCCUPIED) return line;
-    if (value == obstacle_map_t::CELL_UNKNOWN) line.unknown_m += cells_.resolution;
+    const double t_exit = std::min({t_max_x, t_max_y, 1.0});
+    if (value == obstacle_map_t::CELL_UNKNOWN) line.unknown_m += (t_exit - t_enter) * length;
+    if (t_max_x < t_max_y) {
+      t_enter = t_max_x;
+      t_max_x += t_delta_x;
+      x += step_x;
+    } else {
+      t_enter = t_max_y;
+      t_max_y += t_delta_y;
+      y += step_y;
+    }
+    if (t_exit >= 1.0) break;
   }
   line.clear = true;
   return line;

@@ -14,8 +14,9 @@ namespace {
 constexpr int kLeft = 84;
 constexpr int kRight = kWeightsPictureWidth - 250;  // legend to the right
 constexpr int kWeightsTop = 84, kWeightsBottom = 500;
-constexpr int kTaskTop = 540, kTaskBottom = 580;
-constexpr int kViewTop = 628, kViewBottom = 810;
+constexpr int kTaskTop = 530, kTaskBottom = 570;
+constexpr int kTaskKeyY = 594;  // baseline of the task colour key
+constexpr int kViewTop = 648, kViewBottom = 820;
 
 const cv::Scalar kCommandedColor(40, 40, 200);
 const cv::Scalar kActualColor(140, 140, 140);
@@ -145,7 +146,7 @@ void drawTaskStrip(cv::Mat& image, const RunRecord& record, const Axes& axes) {
     const double end = j < timeline.size() ? timeline[j].first : axes.t1;
     const std::string& task = timeline[i].second;
     if (!task.empty()) {
-      const std::string kind = task.substr(0, task.find(' '));
+      const std::string kind = task.substr(0, task.find_first_of(" ("));
       auto it = std::find(kinds.begin(), kinds.end(), kind);
       if (it == kinds.end()) it = kinds.insert(kinds.end(), kind);
       const cv::Scalar color = draw::lighter(draw::seriesColor(static_cast<int>(it - kinds.begin()) + 3), 0.55);
@@ -159,6 +160,17 @@ void drawTaskStrip(cv::Mat& image, const RunRecord& record, const Axes& axes) {
     i = j;
   }
   cv::rectangle(image, cv::Rect(kLeft, kTaskTop, kRight - kLeft, kTaskBottom - kTaskTop), draw::kBlack, 1);
+  // Key: the colour of each kind, for segments too short to carry their name.
+  int x = kLeft;
+  for (size_t k = 0; k < kinds.size(); ++k) {
+    const cv::Scalar color = draw::lighter(draw::seriesColor(static_cast<int>(k) + 3), 0.55);
+    const int width = draw::textSize(kinds[k], 0.42).width;
+    if (x + 22 + width > kRight) break;
+    cv::rectangle(image, cv::Rect(x, kTaskKeyY - 11, 16, 12), color, cv::FILLED);
+    cv::rectangle(image, cv::Rect(x, kTaskKeyY - 11, 16, 12), draw::kMidGrey, 1);
+    draw::text(image, kinds[k], {x + 21, kTaskKeyY}, 0.42);
+    x += 21 + width + 18;
+  }
   if (timeline.empty())
     draw::text(image, "no task information in the log", {kLeft + 8, (kTaskTop + kTaskBottom) / 2 + 5}, 0.45, draw::kDarkGrey);
 }
@@ -195,7 +207,7 @@ void drawViewingDirection(cv::Mat& image, const RunRecord& record, const Axes& a
   plotHeading(image, actual, axes, kActualColor, 2);
   plotHeading(image, commanded, axes, kCommandedColor, 1);
   cv::rectangle(image, cv::Rect(kLeft, kViewTop, kRight - kLeft, kViewBottom - kViewTop), draw::kBlack, 1);
-  draw::text(image, "viewing direction [deg]", {12, kViewTop - 12}, 0.5);
+  draw::text(image, "viewing direction [deg]", {12, kViewTop - 14}, 0.5);
   draw::text(image, "simulated time [s]", {(kLeft + kRight) / 2 - 70, kViewBottom + 44}, 0.55);
   const int lx = kRight + 18;
   cv::line(image, {lx, kViewTop + 20}, {lx + 26, kViewTop + 20}, kCommandedColor, 2, cv::LINE_AA);

@@ -12,7 +12,7 @@
 namespace beft::report {
 
 inline constexpr int kWeightsPictureWidth = 1280;
-inline constexpr int kWeightsPictureHeight = 870;
+inline constexpr int kWeightsPictureHeight = 880;
 
 cv::Mat renderWeights(const RunRecord& record);
 

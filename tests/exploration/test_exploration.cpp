@@ -79,6 +79,23 @@ TEST(KnownMap, SightIsBlockedByOccupiedCellsButNotByTheTargetItself) {
   EXPECT_FALSE(map.sight(12, 3, 12, 10, 0.0).clear);  // the target blocks itself unless ignored
 }
 
+TEST(KnownMap, SightMeasuresItsLengthThroughUnknownCellsAndMissesNoDiagonalCell) {
+  auto cells = makeCells(10, 10, kFree);
+  fillRect(cells, 4.0, 0.0, 6.0, 10.0, kUnknown);  // a 2 m band of unknown
+  const KnownMap map(cells, 0.3);
+  const SightLine across = map.sight(1.05, 5.05, 8.05, 5.05, 0.0);
+  EXPECT_TRUE(across.clear);
+  EXPECT_NEAR(across.unknown_m, 2.0, 1e-6);
+  const SightLine slanted = map.sight(1.05, 2.05, 9.05, 8.05, 0.0);  // 3-4-5: 2 m across x is 2.5 m long
+  EXPECT_NEAR(slanted.unknown_m, 2.5, 1e-6);
+
+  auto single = makeCells(10, 10, kFree);
+  fillRect(single, 5.0, 5.0, 5.1, 5.1, kOccupied);  // one cell, (50, 50)
+  const KnownMap dot(single, 0.3);
+  EXPECT_FALSE(dot.sight(2.02, 2.0, 8.02, 8.0, 0.0).clear);  // clips that cell's corner
+  EXPECT_TRUE(dot.sight(2.0, 2.3, 8.0, 8.3, 0.0).clear);     // passes beside it
+}
+
 TEST(Viewpoints, ChoosesALineOfSightAroundTheWallNotThroughIt) {
   const KnownMap map(wallWorld(), 0.45);
   const TravelField travel(map, 5.0, 10.0, 0.6);
@@ -302,10 +319,12 @@ TEST_F(ExplorerRun, LooksAroundFirstWithFourQuarterTurns) {
   EXPECT_EQ(explorer.phase(), Explorer::Phase::LookAround);
   const Decision second = tick();
   ASSERT_EQ(second.requests.size(), 4u);
-  // Pushed last-first: the first turn to run (+90 deg) is pushed last.
-  EXPECT_EQ(second.requests.back().kind, "turn");
-  EXPECT_NEAR(second.requests.back().yaw, 90, 1e-9);
-  EXPECT_NEAR(second.requests.front().yaw, 0, 1e-9);
+  // In the order they run: a quarter turn at a time, back to the start heading.
+  const double expected_yaw[] = {90, 180, -90, 0};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(second.requests[i].kind, "turn");
+    EXPECT_NEAR(std::remainder(second.requests[i].yaw - expected_yaw[i], 360.0), 0, 1e-9) << i;
+  }
   for (const auto& r : second.requests) EXPECT_EQ(r.parent, 1);
   tick();  // turning: nothing to do
   EXPECT_TRUE(stack.finishes.empty());
@@ -330,8 +349,8 @@ TEST_F(ExplorerRun, VerifiesAHiddenHypothesisFromAroundTheWallAndFinishesWhenVer
 
   const auto subs = pushesOf(tick());
   ASSERT_EQ(subs.size(), 2u);
-  const TaskRequest& look = subs[0];
-  const TaskRequest& go = subs[1];  // pushed last: runs first
+  const TaskRequest& go = subs[0];  // sub-tasks run in the order pushed
+  const TaskRequest& look = subs[1];
   EXPECT_EQ(look.kind, "look_at");
   EXPECT_EQ(look.object_id, "victim1");
   EXPECT_EQ(go.kind, "goto");
@@ -361,8 +380,9 @@ TEST_F(ExplorerRun, TriesAnotherViewpointWhenStillUnseenAndGivesUpAfterTheLimit)
   for (int attempt = 0; attempt < 2; ++attempt) {
     const auto subs = pushesOf(tick());
     ASSERT_EQ(subs.size(), 2u) << "attempt " << attempt;
-    goals.push_back({subs[1].x, subs[1].y});
-    stack.completeSubTasks(subs[1].parent);  // got there and looked
+    ASSERT_EQ(subs[0].kind, "goto");
+    goals.push_back({subs[0].x, subs[0].y});
+    stack.completeSubTasks(subs[0].parent);  // got there and looked
     const size_t finishes = stack.finishes.size();
     for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) last = tick();  // dwell, then fail
     ASSERT_EQ(stack.finishes.size(), finishes + 1);
@@ -444,6 +464,24 @@ TEST_F(ExplorerRun, StopsWhenTheDurationEnds) {
   EXPECT_EQ(tick().stop, d.stop);
 }
 
+TEST_F(ExplorerRun, WithoutStopWhenDoneItWatchesForNewSoundsUntilTheDuration) {
+  parameters.stop_when_done = false;
+  explorer = Explorer(parameters);
+  lookAround();
+  const Decision done = tick();  // nothing heard, everything known
+  EXPECT_FALSE(done.stop.has_value());
+  EXPECT_EQ(explorer.phase(), Explorer::Phase::Idle);
+  for (int i = 0; i < 5; ++i) EXPECT_TRUE(tick().requests.empty());
+  observation.hypotheses = {hidden()};  // someone starts yelling
+  const auto pushes = pushesOf(tick());
+  ASSERT_EQ(pushes.size(), 1u);
+  EXPECT_EQ(pushes[0].kind, "verify");
+  observation.t = observation.duration;
+  const Decision end = tick();
+  ASSERT_TRUE(end.stop.has_value());
+  EXPECT_NE(end.stop->find("duration"), std::string::npos);
+}
+
 TEST_F(ExplorerRun, PrefersTheHypothesisWithTheHigherWeight) {
   lookAround();
   HypothesisView near = hidden("near");
@@ -464,9 +502,9 @@ TEST_F(ExplorerRun, InspectsAGlimpsedPossiblePersonButNotAClearWall) {
   far.x = 2;
   far.y = 18;
   far.glimpsed = true;
-  far.best_category = "car";
+  far.best_category = "person";  // barely: every label is near 0.5 so far away
   far.confidence = 0.51;
-  far.person_confidence = 0.5;
+  far.person_confidence = 0.51;
   HypothesisView wall = far;
   wall.object_id = "wall2";
   wall.x = 18;
