@@ -26,6 +26,7 @@ const cv::Scalar kPathColor(200, 90, 0);
 const cv::Scalar kVerifiedColor(40, 150, 40);
 const cv::Scalar kFalsifiedColor(30, 30, 220);
 const cv::Scalar kUnsettledColor(0, 150, 240);
+const cv::Scalar kSeenOnlyColor(150, 120, 90);
 
 double degToRad(double deg) { return deg * M_PI / 180.0; }
 
@@ -104,6 +105,39 @@ cv::Point keepInside(const MapLayout& layout, cv::Point origin, cv::Size size) {
   return origin;
 }
 
+// Places text labels so they do not cover each other: each label takes the
+// first free spot among its preferred one and spots shifted up or down.
+class LabelPlacer {
+ public:
+  explicit LabelPlacer(const MapLayout& layout) : layout_(layout) {}
+  // origin: preferred bottom-left of the text. Returns where to draw it.
+  cv::Point place(cv::Point origin, cv::Size size) {
+    const int line = size.height + 8;
+    cv::Point chosen = keepInside(layout_, origin, size);
+    for (int k : {0, 1, -1, 2, -2, 3, -3, 4, -4}) {
+      const cv::Point candidate = keepInside(layout_, origin + cv::Point(0, k * line), size);
+      if (free(box(candidate, size))) {
+        chosen = candidate;
+        break;
+      }
+    }
+    taken_.push_back(box(chosen, size));
+    return chosen;
+  }
+
+ private:
+  static cv::Rect box(cv::Point origin, cv::Size size) {
+    return {origin.x - 2, origin.y - size.height - 3, size.width + 4, size.height + 6};
+  }
+  bool free(const cv::Rect& r) const {
+    for (const auto& t : taken_)
+      if ((r & t).area() > 0) return false;
+    return true;
+  }
+  const MapLayout& layout_;
+  std::vector<cv::Rect> taken_;
+};
+
 std::vector<cv::Point> footprint(const MapLayout& layout, const TruthObject& object) {
   const double c = std::cos(degToRad(object.yaw)), s = std::sin(degToRad(object.yaw));
   std::vector<cv::Point> corners;
@@ -126,7 +160,7 @@ void drawTruth(cv::Mat& image, const MapLayout& layout, const RunRecord& record)
   }
   cv::Mat overlay = image.clone();
   for (const auto& object : record.truth) {
-    const cv::Scalar color = draw::categoryColor(object.label, record.categories);
+    const cv::Scalar color = draw::lighter(draw::categoryColor(object.label, record.categories), 0.3);
     const cv::Point centre = layout.toPixel(object.x, object.y);
     if (object.shape == TruthObject::Shape::Box) {
       const auto corners = footprint(layout, object);
@@ -154,7 +188,7 @@ void drawTruth(cv::Mat& image, const MapLayout& layout, const RunRecord& record)
 }
 
 // Object ids above their footprints, drawn last so that nothing hides them.
-void drawTruthLabels(cv::Mat& image, const MapLayout& layout, const RunRecord& record) {
+void drawTruthLabels(cv::Mat& image, const MapLayout& layout, const RunRecord& record, LabelPlacer& placer) {
   for (const auto& object : record.truth) {
     const cv::Point centre = layout.toPixel(object.x, object.y);
     int half_height = 7;
@@ -164,7 +198,7 @@ void drawTruthLabels(cv::Mat& image, const MapLayout& layout, const RunRecord& r
       half_height = std::max(half_height, static_cast<int>(std::lround(object.radius * layout.scale)));
     }
     const cv::Size size = draw::textSize(object.id, 0.42);
-    const cv::Point origin = keepInside(layout, centre + cv::Point(-size.width / 2, -half_height - 5), size);
+    const cv::Point origin = placer.place(centre + cv::Point(-size.width / 2, -half_height - 5), size);
     draw::labelBox(image, object.id, origin, 0.42, draw::darker(draw::categoryColor(object.label, record.categories)),
                    cv::Scalar(255, 255, 255));
   }
@@ -197,7 +231,8 @@ void drawPath(cv::Mat& image, const MapLayout& layout, const RunRecord& record) 
 cv::Scalar hypothesisColor(const HypothesisState& h) {
   if (h.falsified) return kFalsifiedColor;
   if (h.verified) return kVerifiedColor;
-  return kUnsettledColor;
+  if (h.heard) return kUnsettledColor;
+  return kSeenOnlyColor;
 }
 
 std::string hypothesisText(const HypothesisState& h) {
@@ -205,11 +240,14 @@ std::string hypothesisText(const HypothesisState& h) {
                      draw::formatNumber(h.confidence, 2);
   if (h.verified) text += " verified";
   if (h.falsified) text += " falsified (heard " + h.heard_as + ", seen " + h.seen_as + ")";
-  if (!h.verified && !h.falsified) text += h.seen ? (h.heard ? " seen+heard" : " seen") : " heard only";
+  if (!h.verified && !h.falsified) {
+    if (h.heard) text += h.seen ? " seen+heard" : " heard, not seen";
+    else text += h.seen ? " seen" : " glimpsed";
+  }
   return text;
 }
 
-void drawHypotheses(cv::Mat& image, const MapLayout& layout, const RunRecord& record) {
+void drawHypotheses(cv::Mat& image, const MapLayout& layout, const RunRecord& record, LabelPlacer& placer) {
   if (record.hypotheses.empty()) return;
   for (const auto& h : record.hypotheses.back().hypotheses) {
     const cv::Scalar color = hypothesisColor(h);
@@ -224,7 +262,7 @@ void drawHypotheses(cv::Mat& image, const MapLayout& layout, const RunRecord& re
     const cv::Size size = draw::textSize(text, 0.42);
     cv::Point origin = p + cv::Point(12, 20);
     if (origin.x + size.width > layout.left + layout.world_px_width - 3) origin.x = p.x - 12 - size.width;  // to the left
-    draw::labelBox(image, text, keepInside(layout, origin, size), 0.42, color, cv::Scalar(250, 250, 250));
+    draw::labelBox(image, text, placer.place(origin, size), 0.42, color, cv::Scalar(250, 250, 250));
   }
 }
 
@@ -297,7 +335,8 @@ void drawLegend(cv::Mat& image, const MapLayout& layout, const RunRecord& record
         cv::line(image, c + cv::Point(-5, -5), c + cv::Point(5, 5), kFalsifiedColor, 2, cv::LINE_AA);
       },
       "falsified");
-  legend.marker([&](cv::Point c) { cv::circle(image, c, 8, kUnsettledColor, 2, cv::LINE_AA); }, "not settled");
+  legend.marker([&](cv::Point c) { cv::circle(image, c, 8, kUnsettledColor, 2, cv::LINE_AA); }, "heard, not settled");
+  legend.marker([&](cv::Point c) { cv::circle(image, c, 8, kSeenOnlyColor, 2, cv::LINE_AA); }, "silent: seen or glimpsed");
   legend.heading("Outcome");
   legend.note("persons found: " + std::to_string(report.victims.size()) + " of " + std::to_string(report.persons));
   legend.note("falsified: " + std::to_string(report.falsified.size()) +
@@ -334,8 +373,9 @@ cv::Mat renderMap(const RunRecord& record, const RunReport& report) {
   drawGridAndAxes(image, layout, world_width, world_height);
   drawTruth(image, layout, record);
   drawPath(image, layout, record);
-  drawHypotheses(image, layout, record);
-  drawTruthLabels(image, layout, record);
+  LabelPlacer placer(layout);
+  drawTruthLabels(image, layout, record, placer);
+  drawHypotheses(image, layout, record, placer);
   drawScaleBar(image, layout);
   drawLegend(image, layout, record, report);
   const std::string title = (record.scenario_name.empty() ? std::string("run") : record.scenario_name) +
