@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 #include <lcm/lcm-cpp.hpp>
@@ -194,6 +195,8 @@ class LogReader {
 }  // namespace
 
 RunRecord readRunLog(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw ReportError(path + ": is a folder, not an LCM log file");
   {
     std::ifstream probe(path, std::ios::binary);
     if (!probe) throw ReportError(path + ": cannot open the log file");
