@@ -25,12 +25,17 @@ PlanningMap::PlanningMap(GridMap raw, double robot_radius_cells)
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) free_mask.at<uint8_t>(y, x) = raw_.blocked(x, y) ? 0 : 255;
   }
-  if (raw_.blockedCount() == 0) {
-    raw_distance_ = cv::Mat(h, w, CV_32F, cv::Scalar(std::numeric_limits<float>::max()));
-  } else {
-    cv::distanceTransform(free_mask, raw_distance_, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
-    // Centre-to-centre distance -> distance to the obstacle cell's near edge.
-    raw_distance_ = cv::max(raw_distance_ - 0.5f, 0.0f);
+  if (raw_.blockedCount() > 0) {
+    cv::Mat distance;
+    cv::distanceTransform(free_mask, distance, nearest_label_, cv::DIST_L2, cv::DIST_MASK_5, cv::DIST_LABEL_PIXEL);
+    obstacle_of_label_.assign(raw_.blockedCount() + 1, cv::Point(-1, -1));
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        if (free_mask.at<uint8_t>(y, x) != 0) continue;
+        const int label = nearest_label_.at<int>(y, x);
+        if (label >= 0 && label < static_cast<int>(obstacle_of_label_.size())) obstacle_of_label_[label] = {x, y};
+      }
+    }
   }
 }
 
@@ -107,16 +112,22 @@ double PlanningMap::freeFraction(Point2 a, Point2 b, double tolerance) const {
 }
 
 double PlanningMap::clearance(Point2 p) const {
-  const double u = std::clamp(p.x - 0.5, 0.0, raw_.width() - 1.0);
-  const double v = std::clamp(p.y - 0.5, 0.0, raw_.height() - 1.0);
-  const int x0 = static_cast<int>(u);
-  const int y0 = static_cast<int>(v);
-  const int x1 = std::min(x0 + 1, raw_.width() - 1);
-  const int y1 = std::min(y0 + 1, raw_.height() - 1);
-  const double fx = u - x0;
-  const double fy = v - y0;
-  const auto d = [&](int x, int y) { return static_cast<double>(raw_distance_.at<float>(y, x)); };
-  return (1 - fy) * ((1 - fx) * d(x0, y0) + fx * d(x1, y0)) + fy * ((1 - fx) * d(x0, y1) + fx * d(x1, y1));
+  if (nearest_label_.empty()) return 1e9;
+  const int cx = std::clamp(static_cast<int>(std::floor(p.x)), 0, raw_.width() - 1);
+  const int cy = std::clamp(static_cast<int>(std::floor(p.y)), 0, raw_.height() - 1);
+  double best = std::numeric_limits<double>::infinity();
+  for (int y = std::max(0, cy - 1); y <= std::min(raw_.height() - 1, cy + 1); ++y) {
+    for (int x = std::max(0, cx - 1); x <= std::min(raw_.width() - 1, cx + 1); ++x) {
+      const int label = nearest_label_.at<int>(y, x);
+      if (label < 0 || label >= static_cast<int>(obstacle_of_label_.size())) continue;
+      const cv::Point cell = obstacle_of_label_[label];
+      if (cell.x < 0) continue;
+      const double dx = std::max({cell.x - p.x, 0.0, p.x - (cell.x + 1)});
+      const double dy = std::max({cell.y - p.y, 0.0, p.y - (cell.y + 1)});
+      best = std::min(best, std::sqrt(dx * dx + dy * dy));
+    }
+  }
+  return best;
 }
 
 }  // namespace beft::planners

@@ -33,16 +33,19 @@ class PlanningMap {
   // (0 when a itself is blocked), found to within `tolerance` cells.
   double freeFraction(Point2 a, Point2 b, double tolerance = 0.05) const;
 
-  // Distance from p to the nearest raw obstacle cell [cells], from a distance
-  // transform of the raw grid (exact at cell centres, interpolated between;
-  // the map border does not count as an obstacle).
+  // Distance from p to the nearest raw obstacle cell's square [cells]: the
+  // nearest obstacle cells of p's cell and its neighbours come from a
+  // labelled distance transform of the raw grid, the distance to each is
+  // exact. The map border does not count; a map without obstacles gives a
+  // large number.
   double clearance(Point2 p) const;
 
  private:
   GridMap raw_;
   GridMap inflated_;
   double radius_;
-  cv::Mat raw_distance_;  // CV_32F, per cell centre: distance to nearest obstacle edge
+  cv::Mat nearest_label_;                      // CV_32S: label of the nearest obstacle cell
+  std::vector<cv::Point> obstacle_of_label_;  // label -> obstacle cell
 };
 
 }  // namespace beft::planners

@@ -194,7 +194,7 @@ TEST(PlannerService, SameRequestSameAnswerAcrossServices) {
 
 // The real process on its own UDP port: a map and a request in, one result out.
 TEST(PlannerServiceProcess, AnswersARequestOverLcm) {
-  const int port = 20000 + static_cast<int>(getpid() % 20000);
+  const int port = 40000 + static_cast<int>(getpid() % 20000);  // a range of its own
   const std::string url = "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0";
   lcm::LCM lcm(url);
   ASSERT_TRUE(lcm.good());

@@ -112,6 +112,27 @@ TEST(Clearance, DistanceToTheNearestObstacleEdge) {
   const PlanningMap map(grid, 0);
   EXPECT_NEAR(map.clearance(cellCentre(14, 10)), 3.5, 1e-4);
   EXPECT_NEAR(map.clearance(cellCentre(10, 6)), 3.5, 1e-4);
+  EXPECT_NEAR(map.clearance({11.2, 11.3}), std::hypot(0.2, 0.3), 1e-9);  // off its corner
+}
+
+TEST(Clearance, MatchesTheBruteForceDistanceToEveryObstacleCell) {
+  std::mt19937 rng(9);
+  GridMap grid(40, 30);
+  for (int i = 0; i < 60; ++i) grid.setBlocked(rng() % 40, rng() % 30);
+  const PlanningMap map(grid, 0);
+  std::uniform_real_distribution<double> x(0.0, 40.0), y(0.0, 30.0);
+  for (int i = 0; i < 500; ++i) {
+    const Point2 p{x(rng), y(rng)};
+    double best = 1e9;
+    for (int cy = 0; cy < 30; ++cy) {
+      for (int cx = 0; cx < 40; ++cx) {
+        if (!grid.blocked(cx, cy)) continue;
+        best = std::min(best, std::hypot(std::max({cx - p.x, 0.0, p.x - cx - 1}), std::max({cy - p.y, 0.0, p.y - cy - 1})));
+      }
+    }
+    // The labelled transform is a 5x5-mask approximation: allow a small slack far from obstacles.
+    EXPECT_NEAR(map.clearance(p), best, best < 2.0 ? 1e-9 : 0.05 * best) << p.x << "," << p.y;
+  }
 }
 
 TEST(PathTools, ShortcutIsFreeSparseAndNoLonger) {
