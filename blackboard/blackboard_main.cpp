@@ -48,7 +48,7 @@ class BlackboardProcess {
  public:
   explicit BlackboardProcess(lcm::LCM& lcm, BlackboardService& service) : lcm_(lcm), service_(service) {}
 
-  // For LCM's subscribeFunction (see main for why not the member-pointer subscribe).
+  // For LCM's subscribeFunction (see main).
   static void onAnyMessageOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, BlackboardProcess* self) {
     self->onAnyMessage(buffer, channel);
   }
@@ -178,10 +178,8 @@ int main(int argc, char** argv) {
   }
 
   BlackboardProcess process(lcm, *service);
-  // subscribeFunction rather than subscribe(channel, &Class::method, object):
-  // GCC 12's UndefinedBehaviorSanitizer miscompiles the member-pointer call
-  // inside LCM's header (the handler gets a null this), so sanitizer builds
-  // would crash on the first message.
+  // subscribeFunction: LCM's member-pointer subscribe crashes under GCC's
+  // -fsanitize=vptr (see the top-level CMakeLists); this form works with any flags.
   lcm::Subscription* everything = lcm.subscribeFunction(".*", &BlackboardProcess::onAnyMessageOf, &process);
   // The default 30 would drop messages when a tick's burst (camera frames,
   // percepts of every expert) arrives while a large snapshot is being sent.

@@ -29,9 +29,8 @@ int64_t newQueryId() {
 class SnapshotWaiter {
  public:
   explicit SnapshotWaiter(int64_t query_id) : query_id_(query_id) {}
-  // A plain function for LCM's subscribeFunction: GCC 12's
-  // UndefinedBehaviorSanitizer miscompiles the member-pointer call of LCM's
-  // subscribe(channel, &Class::method, object).
+  // A plain function for LCM's subscribeFunction: the member-pointer
+  // subscribe crashes under GCC's -fsanitize=vptr (see the top-level CMakeLists).
   static void onSnapshot(const lcm::ReceiveBuffer*, const std::string&, const beft::bb_snapshot_t* snapshot,
                          SnapshotWaiter* self) {
     if (!self->answer_ && snapshot->query_id == self->query_id_) self->answer_ = *snapshot;

@@ -36,9 +36,8 @@ class Spy {
   Spy(Clock::time_point start, double window_s, std::set<std::string> decoded, int max_lines)
       : start_(start), table_(0.0, window_s), decoded_(std::move(decoded)), max_lines_(max_lines) {}
 
-  // For LCM's subscribeFunction: GCC 12's UndefinedBehaviorSanitizer
-  // miscompiles the member-pointer call of LCM's subscribe(channel,
-  // &Class::method, object), so sanitizer builds would crash.
+  // For LCM's subscribeFunction: the member-pointer subscribe crashes under
+  // GCC's -fsanitize=vptr (see the top-level CMakeLists).
   static void onMessageOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, Spy* self) {
     self->onMessage(buffer, channel);
   }
