@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include <beft/done_t.hpp>
 #include <beft/fire_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
@@ -41,6 +42,9 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
   std::map<std::string, Messages> recorded;
   std::optional<Firing> pending;
   int64_t last_firing_id = -1;
+  // Recorded outputs are the messages on its channels between this expert's
+  // FIRE and its DONE: others (or a user) may publish on the same channels.
+  bool in_recorded_firing = false;
 
   auto firePending = [&] {
     if (!pending) return;
@@ -61,11 +65,19 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
       if (fire.expert != process_name || fire.firing_id <= last_firing_id) continue;
       firePending();  // a newer token: the previous one runs now, as live after its timeout
       last_firing_id = fire.firing_id;
+      in_recorded_firing = true;
       pending = Firing{fire.expert, fire.transition, fire.tick, fire.utime, fire.firing_id};
       if (expert.inputsReady(*pending)) firePending();
       continue;
     }
-    if (writes.count(channel)) {
+    if (channel == channels::kDone) {
+      beft::done_t done;
+      if (done.decode(event->data, 0, event->datalen) == event->datalen && done.expert == process_name &&
+          done.firing_id == last_firing_id)
+        in_recorded_firing = false;
+      continue;
+    }
+    if (writes.count(channel) && in_recorded_firing) {
       const auto* bytes = static_cast<const uint8_t*>(event->data);
       recorded[channel].emplace_back(bytes, bytes + event->datalen);
     }

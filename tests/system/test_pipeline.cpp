@@ -86,7 +86,8 @@ TEST(Pipeline, EachExpertFiresOncePerTickInThePapersOrder) {
     bool complete = true;
     for (const auto& e : all) complete &= first_fire.count({tick, e}) && first_done.count({tick, e});
     ASSERT_TRUE(complete) << "tick " << tick << " misses a FIRE or DONE";
-    for (const auto& e : all) EXPECT_EQ(firing_ids[{tick, e}].size(), 1u) << e << " fired twice in tick " << tick;
+    for (const auto& e : all)
+      EXPECT_EQ(firing_ids[std::make_pair(tick, e)].size(), 1u) << e << " fired twice in tick " << tick;
     for (const auto& low : kLow) EXPECT_LT(done("world"), fire(low)) << tick;
     for (const auto& mid : kMid)
       for (const auto& low : kLow) EXPECT_LT(done(low), fire(mid)) << tick << " " << low << " " << mid;
