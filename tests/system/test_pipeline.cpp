@@ -228,3 +228,35 @@ TEST(Launch, AnExpertStartedByHandLaterCompletesTheRun) {
   for (const auto& d : messagesOn<beft::done_t>(readLog(dir + "/run.lcmlog"), "DONE")) vision_done += d.expert == "vision";
   EXPECT_GE(vision_done, 20);
 }
+
+// A short run of peek.xml recorded when the message types were first fixed:
+// old logs must stay readable (types change by adding new ones, never by
+// editing old ones) and replay exactly.
+TEST(OldLogs, ACommittedLogStillDecodesAndReplaysExactly) {
+  const std::string log_path = sourceDir() + "/tests/system/data/peek_6_ticks.lcmlog";
+  const auto log = readLog(log_path);
+  ASSERT_GT(log.size(), 100u);
+  std::map<std::string, int> decoded;
+  auto check = [&](const auto& sample, const std::string& channel) {
+    using Message = std::decay_t<decltype(sample)>;
+    const auto messages = messagesOn<Message>(log, channel);
+    int on_channel = 0;
+    for (const auto& e : log) on_channel += e.channel == channel;
+    EXPECT_EQ(static_cast<int>(messages.size()), on_channel) << channel << " no longer decodes";
+    decoded[channel] = on_channel;
+  };
+  check(beft::fire_t{}, "FIRE");
+  check(beft::done_t{}, "DONE");
+  check(beft::scene_objects_t{}, "GT_OBJECTS");
+  check(beft::geometry_percepts_t{}, "GEOMETRY");
+  check(beft::visual_percepts_t{}, "VISION");
+  check(beft::acoustic_percepts_t{}, "AUDIO");
+  check(beft::labels_t{}, "LABELS_VISUAL");
+  check(beft::labels_t{}, "LABELS_ACOUSTIC");
+  for (const auto& [channel, count] : decoded) EXPECT_GT(count, 0) << channel;
+  for (const char* module : {"fusion", "visual_labels", "acoustic_labels", "geometry"}) {
+    const auto replay = runCommand(binDir() + "/beft-replay " + log_path + " --module " + module, 120);
+    EXPECT_EQ(replay.exit_code, 0) << module << "\n" << replay.output;
+    EXPECT_NE(replay.output.find("EXACT MATCH"), std::string::npos) << replay.output;
+  }
+}
