@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
   bool skip_brute_force = false;
   int fixed_frames = 0;
   CLI::App app(
-      "Benchmarks the RGBD camera's ray caster: frames per second on one core for 160x120 and 640x480 images "
+      "Benchmarks the RGBD camera's ray caster: frames per second of CPU time on one core for 160x120 and 640x480 images "
       "over random scenes (walls, crates, persons in a yard), for each render method: projection (used by the "
       "world), grid traversal, and brute force (every object for every ray) as the baseline; the last column "
       "is projection over brute force. A last table times a whole world frame: render plus the three "
