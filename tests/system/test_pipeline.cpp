@@ -260,3 +260,17 @@ TEST(OldLogs, ACommittedLogStillDecodesAndReplaysExactly) {
     EXPECT_NE(replay.output.find("EXACT MATCH"), std::string::npos) << replay.output;
   }
 }
+
+TEST(Render, WritesOneFramePerRenderedTickFromALog) {
+  const std::string log_path = sourceDir() + "/tests/system/data/peek_6_ticks.lcmlog";
+  const std::string dir = makeTempDir("render");
+  const auto render = runCommand(binDir() + "/beft-replay " + log_path + " --to " + dir + "/frames", 120);
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  const auto listing = runCommand("ls " + dir + "/frames", 5).output;
+  EXPECT_NE(listing.find("frame_00000.png"), std::string::npos) << listing;
+  EXPECT_NE(listing.find("frame_00005.png"), std::string::npos) << listing;
+  const auto header = runCommand("head -c 8 " + dir + "/frames/frame_00005.png | od -An -c", 5).output;
+  EXPECT_NE(header.find("P   N   G"), std::string::npos) << header;
+  const auto bad = runCommand(binDir() + "/beft-replay " + log_path + " --to " + dir + "/x.mp4 --module fusion", 30);
+  EXPECT_NE(bad.exit_code, 0);  // --to and --module exclude each other
+}

@@ -1,0 +1,168 @@
+// beft-render: a recorded run, frame by frame (./beft replay LOG --to DIR|FILE.mp4):
+// the top-down view (world, robot and its path, the obstacle map as known at
+// that tick, hypotheses) next to the camera image of the same tick.
+#include <CLI/CLI.hpp>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+#include <beft/camera_frame_t.hpp>
+#include <beft/obstacle_map_t.hpp>
+#include <lcm/lcm-cpp.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "channels.hpp"
+#include "drawing.hpp"
+#include "map_picture.hpp"
+#include "run_record.hpp"
+#include "run_scoring.hpp"
+
+namespace {
+
+using namespace beft;
+
+// The per-tick pictures the run record does not keep: camera colour images and
+// obstacle maps, by tick.
+struct TickImages {
+  std::map<int64_t, beft::camera_frame_t> camera;
+  std::map<int64_t, beft::obstacle_map_t> maps;
+};
+
+TickImages readTickImages(const std::string& path) {
+  lcm::LogFile log(path, "r");
+  TickImages images;
+  while (const lcm::LogEvent* event = log.readNextEvent()) {
+    const std::string channel = event->channel;
+    if (channel == channels::kCameraColor) {
+      beft::camera_frame_t frame;
+      if (frame.decode(event->data, 0, event->datalen) == event->datalen &&
+          frame.encoding == beft::camera_frame_t::ENCODING_RGB8)
+        images.camera[frame.tick] = std::move(frame);
+    } else if (channel == channels::kObstacleMap) {
+      beft::obstacle_map_t map;
+      if (map.decode(event->data, 0, event->datalen) == event->datalen) images.maps[map.tick] = std::move(map);
+    }
+  }
+  return images;
+}
+
+// The record as it stood at the end of tick `tick`.
+report::RunRecord recordUpTo(const report::RunRecord& full, int64_t tick, double t, const TickImages& images) {
+  report::RunRecord part = full;
+  part.robot.clear();
+  for (const auto& sample : full.robot)
+    if (sample.tick <= tick) part.robot.push_back(sample);
+  auto keepUntil = [t](auto& samples) {
+    samples.erase(std::remove_if(samples.begin(), samples.end(), [t](const auto& s) { return s.t > t + 1e-9; }),
+                  samples.end());
+  };
+  keepUntil(part.hypotheses);
+  keepUntil(part.weights);
+  keepUntil(part.tasks);
+  part.obstacle_map.reset();
+  auto map_it = images.maps.upper_bound(tick);
+  if (map_it != images.maps.begin()) {
+    try {
+      part.obstacle_map = planners::decodeObstacleMap(std::prev(map_it)->second);
+    } catch (const std::exception&) {
+    }
+  }
+  return part;
+}
+
+cv::Mat cameraPanel(const TickImages& images, int64_t tick, int height) {
+  const int width = height * 4 / 3;
+  cv::Mat panel(height, width, CV_8UC3, cv::Scalar(40, 40, 40));
+  auto it = images.camera.find(tick);
+  if (it == images.camera.end()) {
+    report::draw::text(panel, "no camera image for this tick", {20, height / 2}, 0.6, report::draw::kWhite);
+    return panel;
+  }
+  const auto& frame = it->second;
+  cv::Mat rgb(frame.height, frame.width, CV_8UC3, const_cast<uint8_t*>(frame.data.data()));
+  cv::Mat bgr;
+  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+  cv::resize(bgr, panel, panel.size(), 0, 0, cv::INTER_NEAREST);
+  char caption[96];
+  std::snprintf(caption, sizeof(caption), "camera  tick %lld  heading %.0f deg", static_cast<long long>(tick),
+                frame.cam_yaw);
+  report::draw::labelBox(panel, caption, {10, 24}, 0.55, report::draw::kBlack, report::draw::kWhite);
+  return panel;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string log_path, to;
+  int every = 5;
+  double fps = 10;
+  CLI::App app(
+      "Renders a recorded run frame by frame: the top-down view (world, robot path, the obstacle map known at "
+      "that tick, hypotheses) next to the camera image. Writes PNGs into a folder, or a video when the target "
+      "ends in .mp4 or .avi (OpenCV VideoWriter). Needs no live system.",
+      "beft-render");
+  app.add_option("log", log_path, "the run's LCM log")->required()->check(CLI::ExistingFile);
+  app.add_option("--to", to, "folder for frame_NNNNN.png, or FILE.mp4 / FILE.avi")->required();
+  app.add_option("--every", every, "render every N-th tick")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--fps", fps, "video frame rate")->capture_default_str()->check(CLI::PositiveNumber);
+  CLI11_PARSE(app, argc, argv);
+
+  report::RunRecord full;
+  try {
+    full = report::readRunLog(log_path);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "[render] error: %s\n", e.what());
+    return 1;
+  }
+  if (full.robot.empty()) {
+    std::fprintf(stderr, "[render] error: %s has no ROBOT_STATE: nothing to render\n", log_path.c_str());
+    return 1;
+  }
+  const TickImages images = readTickImages(log_path);
+  const bool video = to.size() > 4 && (to.substr(to.size() - 4) == ".mp4" || to.substr(to.size() - 4) == ".avi");
+  if (!video) {
+    mkdir(to.c_str(), 0755);
+    struct stat info {};
+    if (stat(to.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) {
+      std::fprintf(stderr, "[render] error: cannot create the folder %s\n", to.c_str());
+      return 1;
+    }
+  }
+  cv::VideoWriter writer;
+  int frames = 0;
+  for (std::size_t i = 0; i < full.robot.size(); i += static_cast<std::size_t>(every)) {
+    const auto& sample = full.robot[i];
+    const auto part = recordUpTo(full, sample.tick, sample.t, images);
+    report::ScoringOptions options;
+    const auto scored = report::scoreRun(part, options);
+    cv::Mat top = report::renderMap(part, scored);
+    cv::Mat camera = cameraPanel(images, sample.tick, top.rows);
+    cv::Mat frame;
+    cv::hconcat(top, camera, frame);
+    if (video) {
+      if (!writer.isOpened()) {
+        const int fourcc = to.substr(to.size() - 4) == ".avi" ? cv::VideoWriter::fourcc('M', 'J', 'P', 'G')
+                                                                : cv::VideoWriter::fourcc('m', 'p', '4', 'v');
+        if (!writer.open(to, fourcc, fps, frame.size())) {
+          std::fprintf(stderr, "[render] error: cannot open a video writer for %s\n", to.c_str());
+          return 1;
+        }
+      }
+      writer.write(frame);
+    } else {
+      char name[64];
+      std::snprintf(name, sizeof(name), "/frame_%05lld.png", static_cast<long long>(sample.tick));
+      if (!cv::imwrite(to + name, frame)) {
+        std::fprintf(stderr, "[render] error: cannot write %s%s\n", to.c_str(), name);
+        return 1;
+      }
+    }
+    ++frames;
+  }
+  std::printf("[render] %d frames (every %d ticks) written to %s\n", frames, every, to.c_str());
+  return 0;
+}
