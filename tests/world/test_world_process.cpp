@@ -291,12 +291,31 @@ TEST(WorldProcess, LockstepPublishesEachTickAsTheInProcessWorldDoes) {
 }
 
 TEST(WorldProcess, FreeRunningPublishesEveryTickAndTakesCommands) {
+  // A small camera keeps each tick's messages far below the socket buffer,
+  // so a test process that is not scheduled for a while loses nothing.
+  const std::string scenario_path = "/tmp/beft_test_world_free_" + std::to_string(getpid()) + ".xml";
+  {
+    std::ofstream out(scenario_path);
+    out << R"(<?xml version="1.0" encoding="UTF-8"?>
+<scenario name="free_running" dt="0.1" duration="60" seed="3">
+  <world width="30" height="20"/>
+  <robot x="2" y="2"><camera width="40" height="30"/></robot>
+  <object id="victim" label="person" x="9" y="2">
+    <visual shape="cylinder" radius="0.3" height="1.8" color="#3060d0"/>
+  </object>
+  <object id="wall1" label="wall" x="12" y="6" yaw="90">
+    <visual shape="box" size="6 0.2 2.5"/>
+  </object>
+</scenario>
+)";
+  }
   const std::string url = beft::lcmUrlForPort(testPort(2));
   lcm::LCM lcm(url);
   ASSERT_TRUE(lcm.good());
   Listener listener(lcm);
   constexpr int kLastTick = 30;
-  WorldProcess world({"--scenario", kYard, "--lcm-url", url, "--realtime", "60", "--ticks", std::to_string(kLastTick)});
+  WorldProcess world(
+      {"--scenario", scenario_path, "--lcm-url", url, "--realtime", "40", "--ticks", std::to_string(kLastTick)});
   ASSERT_TRUE(world.started());
   // Once tick 2 is out, command a motion; later ticks must show it.
   ASSERT_TRUE(handleUntil(lcm, 15.0, [&] { return listener.count(beft::channels::kRobotState) >= 3; }))
@@ -311,7 +330,8 @@ TEST(WorldProcess, FreeRunningPublishesEveryTickAndTakesCommands) {
   EXPECT_EQ(world.waitExit(10.0), 0) << world.output();
   handleUntil(lcm, 0.2, [] { return false; });
 
-  const beft::scenario::Scenario scenario = beft::scenario::loadScenario(kYard, nullptr);
+  const beft::scenario::Scenario scenario = beft::scenario::loadScenario(scenario_path, nullptr);
+  std::remove(scenario_path.c_str());
   for (const std::string& channel : kWorldChannels) EXPECT_EQ(listener.count(channel), kLastTick + 1u) << channel;
   const auto truths = listener.decoded<beft::scene_objects_t>(beft::channels::kGroundTruth);
   const auto states = listener.decoded<beft::robot_state_t>(beft::channels::kRobotState);
@@ -322,7 +342,7 @@ TEST(WorldProcess, FreeRunningPublishesEveryTickAndTakesCommands) {
     EXPECT_EQ(states[k].utime, k * 100000);
   }
   expectScenarioObjects(truths[0], scenario);
-  expectScenarioObjects(truths[kLastTick], scenario);  // nothing in the yard moves
+  expectScenarioObjects(truths[kLastTick], scenario);  // nothing in this scene moves
   EXPECT_EQ(states[0].x, 2.0);
   EXPECT_EQ(states[0].y, 2.0);
   // Driven north at 0.5 m/s for at least the last few ticks.
@@ -333,8 +353,17 @@ TEST(WorldProcess, FreeRunningPublishesEveryTickAndTakesCommands) {
   for (const auto& frame : listener.decoded<beft::camera_frame_t>(beft::channels::kCameraDepth)) {
     std::string why;
     EXPECT_TRUE(beft::camera::validCameraFrame(frame, &why)) << why;
-    EXPECT_EQ(frame.width, scenario.robot.camera.width);
+    EXPECT_EQ(frame.width, 40);
+    EXPECT_EQ(frame.height, 30);
   }
+  // The victim stands on the optical axis, its near side 6.7 m ahead. Pixel
+  // (20, 15)'s ray runs half a pixel (0.025 t) to the right, meeting the
+  // cylinder (centre 7 m ahead, radius 0.3) at t = 7 - sqrt(0.09 - (0.025 t)^2)
+  // = 6.75 m.
+  const auto depth = listener.decoded<beft::camera_frame_t>(beft::channels::kCameraDepth).at(0);
+  const auto instance = listener.decoded<beft::camera_frame_t>(beft::channels::kCameraInstance).at(0);
+  EXPECT_EQ(beft::camera::objectAt(instance, 20, 15), 0);
+  EXPECT_NEAR(beft::camera::depthAt(depth, 20, 15), 6.752, 0.002);
 }
 
 TEST(WorldProcess, RefusesABadScenarioWithFileAndLine) {
