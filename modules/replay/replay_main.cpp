@@ -44,6 +44,9 @@ int main(int argc, char** argv) {
   app.add_option("--param", params, "NAME=VALUE for the replayed expert (repeatable)")->needs(module_option);
   auto* to_option = app.add_option("--to", to, "render into this folder of PNGs, or this .mp4 file");
   module_option->excludes(to_option);
+  std::string every, fps;
+  app.add_option("--every", every, "with --to: render every N-th tick (default 5)")->needs(to_option);
+  app.add_option("--fps", fps, "with --to and a video: frame rate (default 10)")->needs(to_option);
   CLI11_PARSE(app, argc, argv);
 
   const std::string bin = ownBinDir();
@@ -57,7 +60,12 @@ int main(int argc, char** argv) {
     }
     return execProgram(args);
   }
-  if (!to.empty()) return execProgram({bin + "/beft-render", log, "--to", to});
+  if (!to.empty()) {
+    std::vector<std::string> args = {bin + "/beft-render", log, "--to", to};
+    if (!every.empty()) args.insert(args.end(), {"--every", every});
+    if (!fps.empty()) args.insert(args.end(), {"--fps", fps});
+    return execProgram(args);
+  }
   std::fprintf(stderr, "[replay] error: say what to do: --module NAME or --to DIR|FILE.mp4 (see --help)\n");
   return 2;
 }
