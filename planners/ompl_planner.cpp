@@ -9,7 +9,6 @@
 #include <ompl/geometric/PathSimplifier.h>
 #include <ompl/geometric/planners/informedtrees/ABITstar.h>
 #include <ompl/geometric/planners/informedtrees/BITstar.h>
-#include <ompl/geometric/planners/prm/LazyPRMstar.h>
 #include <ompl/geometric/planners/prm/PRM.h>
 #include <ompl/geometric/planners/prm/PRMstar.h>
 #include <ompl/geometric/planners/rrt/InformedRRTstar.h>
@@ -43,7 +42,6 @@ const std::map<std::string, Allocator>& allocators() {
       {"ABITstar", [](const ob::SpaceInformationPtr& si) { return std::make_shared<og::ABITstar>(si); }},
       {"PRM", [](const ob::SpaceInformationPtr& si) { return std::make_shared<og::PRM>(si); }},
       {"PRMstar", [](const ob::SpaceInformationPtr& si) { return std::make_shared<og::PRMstar>(si); }},
-      {"LazyPRMstar", [](const ob::SpaceInformationPtr& si) { return std::make_shared<og::LazyPRMstar>(si); }},
   };
   return table;
 }

@@ -62,7 +62,7 @@ PlanResult Planner::solve(Point2 start, Point2 goal, const Deadline& deadline) {
       result.raw_path.clear();
     } else {
       result.success = true;
-      result.path = shortcut_ ? tightenPath(*map_, result.raw_path) : removeDuplicatePoints(result.raw_path);
+      result.path = tighten_ ? tightenPath(*map_, result.raw_path) : removeDuplicatePoints(result.raw_path);
       if (result.path.size() == 1) result.path.push_back(result.path.front());  // start == goal
     }
   } else {

@@ -39,7 +39,7 @@ struct PlanResult {
   std::string message;      // why it failed, or empty
   Path raw_path;            // the planner's own path
   Path path;                // the sparse, collision-free waypoints returned
-  double planning_time_s = 0;  // solve + shortcut, wall clock [s]
+  double planning_time_s = 0;  // solve + tightening, wall clock [s]
   double length() const { return pathLength(path); }  // [cells]
 };
 
@@ -66,7 +66,7 @@ class Planner {
   const Statistics& statistics() const { return stats_; }
 
   // Whether solve() pulls the planner's path taut into sparse waypoints (default on).
-  void setShortcut(bool enabled) { shortcut_ = enabled; }
+  void setTighten(bool enabled) { tighten_ = enabled; }
 
   const PlanningMap& map() const { return *map_; }
   bool hasMap() const { return map_ != nullptr; }
@@ -81,7 +81,7 @@ class Planner {
   Statistics stats_;
 
  private:
-  bool shortcut_ = true;
+  bool tighten_ = true;
 };
 
 }  // namespace beft::planners

@@ -10,9 +10,9 @@
 //   something it has just seen) is moved to the nearest free cell within
 //   radius + 2 cells, and the path begins with that short move. A blocked goal
 //   is moved to the nearest free cell within goal_snap metres, or refused.
-// - Waypoints are sparse (the shortcut of the planner's path on the inflated
-//   map); each carries the heading of travel out of it, the last one the goal
-//   heading.
+// - Waypoints are sparse: the planner's path pulled taut on the inflated map
+//   (tightenPath). Each carries the heading of travel out of it, the last one
+//   the goal heading.
 #pragma once
 
 #include "obstacle_map_codec.hpp"

@@ -82,7 +82,7 @@ bench::RunRecord runOnce(bp::Planner& planner, const bench::BenchMap& map, const
   return r;
 }
 
-// RRTConnect (with simplification and the shared shortcut), restarted until
+// RRTConnect (with simplification, and the shared tightening if enabled), restarted until
 // its best path is no longer than `target_length`: the time that took, or
 // +infinity when `cap` seconds were not enough.
 double timeToMatchLength(bp::Planner& rrt, const bench::BenchQuery& query, double target_length, double cap) {
@@ -275,7 +275,7 @@ int main(int argc, char** argv) {
     bp::PlannerConfig config;
     config.seed = o.seed;
     auto rrt_simplified = bp::makePlanner("ompl:RRTConnect", config);
-    rrt_simplified->setShortcut(false);
+    rrt_simplified->setTighten(false);
     auto rrt_tightened = bp::makePlanner("ompl:RRTConnect", config);
     std::vector<double> pf_times, simplified_times, tightened_times;
     for (const bench::BenchMap& map : maps) {

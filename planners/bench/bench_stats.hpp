@@ -15,7 +15,7 @@ struct RunRecord {
   int map_width = 0, map_height = 0;
   uint64_t seed = 0;
   bool success = false;
-  double time_ms = 0;       // solve + shortcut [ms]
+  double time_ms = 0;       // solve + tightening [ms]
   double setup_ms = 0;      // per-map preparation of this planner [ms]
   double length = 0;        // [cells]
   double optimum = 0;       // octile optimum [cells]

@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
   }
 
   planner->setup(map);
-  planner->setShortcut(!raw);
+  planner->setTighten(!raw);
   const bp::Point2 start = bp::cellCentre(sx, sy);
   const bp::Point2 goal = bp::cellCentre(gx, gy);
   const bp::PlanResult result = planner->solve(start, goal, bp::Deadline::after(budget));
