@@ -46,7 +46,8 @@ GridMap loadMovingAiMap(const std::string& path) {
   GridMap grid(width, height);
   for (int y = 0; y < height; ++y) {
     if (!readLine(in, line, number)) {
-      fail(path, number + 1, "the map has " + std::to_string(y) + " rows, the header says " + std::to_string(height));
+      fail(path, number + 1, "the map ends after " + std::to_string(y) + " of the " + std::to_string(height) +
+                                 " rows the header announces");
     }
     if (static_cast<int>(line.size()) != width) {
       fail(path, number, "row has " + std::to_string(line.size()) + " cells, the header says " + std::to_string(width));

@@ -150,7 +150,7 @@ TEST_F(MovingAiFiles, RefusesBrokenMapsWithFileAndLine) {
   expect_error(write("b.map", "type octile\nheight x\nwidth 3\nmap\n"), "b.map:2: expected 'height N'");
   expect_error(write("c.map", "type octile\nheight 2\nwidth 3\nmap\n...\n..\n"), "c.map:6: row has 2 cells");
   expect_error(write("d.map", "type octile\nheight 2\nwidth 3\nmap\n...\n.x.\n"), "d.map:6: unknown cell character 'x'");
-  expect_error(write("e.map", "type octile\nheight 3\nwidth 3\nmap\n...\n...\n"), "e.map:7: the map has 2 rows");
+  expect_error(write("e.map", "type octile\nheight 3\nwidth 3\nmap\n...\n...\n"), "e.map:7: the map ends after 2 of the 3 rows");
 }
 
 TEST_F(MovingAiFiles, RefusesBrokenScenarios) {
