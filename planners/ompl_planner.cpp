@@ -2,7 +2,6 @@
 
 #include "ompl_space.hpp"
 
-#include <ompl/base/PlannerData.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
@@ -109,9 +108,16 @@ Path OmplPlanner::solvePath(Point2 start, Point2 goal, const Deadline& deadline,
   const ob::PlannerTerminationCondition stop([&deadline] { return deadline.expired(); });
   const ob::PlannerStatus status = planner_->solve(stop);
 
-  ob::PlannerData data(si_);
-  planner_->getPlannerData(data);
-  stats_["vertices"] = data.numVertices();
+  // Progress figures OMPL planners report about themselves, e.g. iterations.
+  for (const auto& [property, read] : planner_->getPlannerProgressProperties()) {
+    if (property.find("INTEGER") != std::string::npos || property.find("REAL") != std::string::npos) {
+      try {
+        stats_[property.substr(0, property.rfind(' '))] = std::stod(read());
+      } catch (const std::exception&) {
+        // "inf" or empty before a first solution: not a figure
+      }
+    }
+  }
   if (status != ob::PlannerStatus::EXACT_SOLUTION || !problem->hasExactSolution()) {
     why_not = name() + ": " + (deadline.expired() ? "no exact solution before the deadline"
                                                   : "no exact solution (" + status.asString() + ")");

@@ -335,7 +335,7 @@ int main(int argc, char** argv) {
   // OMPL's benchmark tooling on a few problems.
   std::vector<std::string> logs;
   if (o.ompl_runs > 0) {
-    std::set<std::string> chosen = o.quick ? std::set<std::string>{"u-trap", "Berlin_0_256"}
+    std::set<std::string> chosen = o.quick ? std::set<std::string>{"u-trap"}
                                            : std::set<std::string>{"u-trap", "comb", "narrow-gap", "Berlin_0_256",
                                                                    "Boston_2_512", "maze512-32-9", "yard"};
     for (const bench::BenchMap& map : maps) {
