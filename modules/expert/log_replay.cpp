@@ -18,13 +18,16 @@ namespace beft::expert {
 namespace {
 
 using Messages = std::vector<std::vector<uint8_t>>;
+// Outputs of each firing, by firing id, then channel.
+using OutputsByFiring = std::map<int64_t, std::map<std::string, Messages>>;
 
 class CapturingOutput : public Output {
  public:
   void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
-    captured[channel].push_back(bytes);
+    captured[firing_id][channel].push_back(bytes);
   }
-  std::map<std::string, Messages> captured;
+  int64_t firing_id = -1;
+  OutputsByFiring captured;
 };
 
 }  // namespace
@@ -39,7 +42,7 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
 
   ReplayResult result;
   CapturingOutput output;
-  std::map<std::string, Messages> recorded;
+  OutputsByFiring recorded;
   std::optional<Firing> pending;
   int64_t last_firing_id = -1;
   // Recorded outputs are the messages on its channels between this expert's
@@ -48,6 +51,7 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
 
   auto firePending = [&] {
     if (!pending) return;
+    output.firing_id = pending->firing_id;
     try {
       expert.fire(*pending, output);
     } catch (const std::exception& e) {
@@ -79,7 +83,7 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
     }
     if (writes.count(channel) && in_recorded_firing) {
       const auto* bytes = static_cast<const uint8_t*>(event->data);
-      recorded[channel].emplace_back(bytes, bytes + event->datalen);
+      recorded[last_firing_id][channel].emplace_back(bytes, bytes + event->datalen);
     }
     if (reads.count(channel)) {
       expert.onMessage(channel, event->data, event->datalen);
@@ -88,23 +92,29 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
   }
   firePending();
 
-  std::set<std::string> all_channels;
-  for (const auto& [channel, _] : recorded) all_channels.insert(channel);
-  for (const auto& [channel, _] : output.captured) all_channels.insert(channel);
-  for (const auto& channel : all_channels) {
-    const Messages& was = recorded[channel];
-    const Messages& now = output.captured[channel];
-    const std::size_t common = std::min(was.size(), now.size());
-    for (std::size_t i = 0; i < common; ++i) {
-      ++result.outputs_compared;
-      if (was[i] == now[i]) {
-        ++result.outputs_matching;
-      } else if (result.first_mismatches.size() < 3) {
-        result.first_mismatches.push_back({channel, static_cast<int64_t>(i), was[i], now[i]});
+  // Compared firing by firing, so a message the logger lost shifts nothing.
+  std::set<int64_t> firing_ids;
+  for (const auto& [id, _] : recorded) firing_ids.insert(id);
+  for (const auto& [id, _] : output.captured) firing_ids.insert(id);
+  for (int64_t id : firing_ids) {
+    std::set<std::string> channels_of_firing;
+    for (const auto& [channel, _] : recorded[id]) channels_of_firing.insert(channel);
+    for (const auto& [channel, _] : output.captured[id]) channels_of_firing.insert(channel);
+    for (const auto& channel : channels_of_firing) {
+      const Messages& was = recorded[id][channel];
+      const Messages& now = output.captured[id][channel];
+      const std::size_t common = std::min(was.size(), now.size());
+      for (std::size_t i = 0; i < common; ++i) {
+        ++result.outputs_compared;
+        if (was[i] == now[i]) {
+          ++result.outputs_matching;
+        } else if (result.first_mismatches.size() < 3) {
+          result.first_mismatches.push_back({channel, id, was[i], now[i]});
+        }
       }
+      if (was.size() > common) result.recorded_only += static_cast<int64_t>(was.size() - common);
+      if (now.size() > common) result.replayed_only += static_cast<int64_t>(now.size() - common);
     }
-    if (was.size() > common) result.recorded_only += static_cast<int64_t>(was.size() - common);
-    if (now.size() > common) result.replayed_only += static_cast<int64_t>(now.size() - common);
   }
   return result;
 }
@@ -115,11 +125,13 @@ void printReplayResult(const ReplayResult& result, const std::string& process_na
               static_cast<long long>(result.firings), static_cast<long long>(result.outputs_matching),
               static_cast<long long>(result.outputs_compared));
   if (result.recorded_only) std::printf(", %lld recorded but not produced", static_cast<long long>(result.recorded_only));
-  if (result.replayed_only) std::printf(", %lld produced but not recorded", static_cast<long long>(result.replayed_only));
+  if (result.replayed_only)
+    std::printf(", %lld produced but not in the log (lost by the logger, or new output)",
+                static_cast<long long>(result.replayed_only));
   std::printf("\n%s\n", result.exactMatch() ? "EXACT MATCH" : "DIFFERENCES FOUND");
   if (result.firings == 0) std::printf("(no FIRE for '%s' in the log)\n", process_name.c_str());
   for (const auto& mismatch : result.first_mismatches) {
-    std::printf("\nfirst difference on %s, output #%lld:\n", mismatch.channel.c_str(),
+    std::printf("\nfirst difference on %s, firing %lld:\n", mismatch.channel.c_str(),
                 static_cast<long long>(mismatch.index));
     if (describe) {
       std::printf("--- recorded:\n%s\n--- replayed:\n%s\n", describe(mismatch.channel, mismatch.recorded).c_str(),

@@ -212,7 +212,7 @@ TEST(Parameters, TypedGettersRefuseBadValuesByName) {
 
 namespace {
 // A log as a run would record it: inputs, FIRE (sent twice), DONE, outputs.
-std::string writeRecordedLog(double recorded_factor) {
+std::string writeRecordedLog(double recorded_factor, int64_t lost_tick = -1) {
   char path[] = "/tmp/beft_replay_XXXXXX";
   const int fd = mkstemp(path);
   close(fd);
@@ -235,7 +235,7 @@ std::string writeRecordedLog(double recorded_factor) {
     write(channels::kFire, fire);
     write(channels::kFire, fire);
     auto out = stateAt(tick, (1.0 + tick) * recorded_factor);
-    write("SCALED", out);
+    if (tick != lost_tick) write("SCALED", out);  // a datagram the logger lost
   }
   return path;
 }
@@ -264,7 +264,19 @@ TEST(Replay, ChangedParameterShowsTheDifference) {
   EXPECT_EQ(result.outputs_matching, 0);
   ASSERT_FALSE(result.first_mismatches.empty());
   EXPECT_EQ(result.first_mismatches[0].channel, "SCALED");
-  EXPECT_EQ(result.first_mismatches[0].index, 0);
+  EXPECT_EQ(result.first_mismatches[0].index, 100);  // the firing it belongs to
+  std::remove(log_path.c_str());
+}
+
+TEST(Replay, AnOutputLostByTheLoggerShiftsNothing) {
+  const std::string log_path = writeRecordedLog(2.0, 1);
+  ScalingExpert scaler;
+  scaler.onStartUp({});
+  const auto result = expert::replayLog(scaler, "scaler", log_path);
+  EXPECT_EQ(result.outputs_compared, 4);
+  EXPECT_EQ(result.outputs_matching, 4);
+  EXPECT_EQ(result.replayed_only, 1);
+  EXPECT_TRUE(result.exactMatch());
   std::remove(log_path.c_str());
 }
 

@@ -13,6 +13,7 @@
 
 #include <beft/done_t.hpp>
 #include <beft/fire_t.hpp>
+#include <beft/hypotheses_t.hpp>
 #include <beft/geometry_percepts_t.hpp>
 #include <beft/labels_t.hpp>
 #include <beft/acoustic_percepts_t.hpp>
@@ -50,7 +51,19 @@ bool logHasEveryFiring(const std::vector<LoggedMessage>& log) {
     for (const auto& e : {"world", "geometry", "vision", "audio", "visual_labels", "acoustic_labels", "fusion",
                           "dw", "exploration", "tasks"})
       if (!fires.count({tick, e}) || !dones.count({tick, e})) return false;
-  return true;
+  // And one message per tick on the channels the replayed experts read and write.
+  std::map<std::string, std::set<int64_t>> ticks_of;
+  for (const auto& g : messagesOn<beft::geometry_percepts_t>(log, "GEOMETRY")) ticks_of["GEOMETRY"].insert(g.tick);
+  for (const auto& v : messagesOn<beft::visual_percepts_t>(log, "VISION")) ticks_of["VISION"].insert(v.tick);
+  for (const auto& a : messagesOn<beft::acoustic_percepts_t>(log, "AUDIO")) ticks_of["AUDIO"].insert(a.tick);
+  for (const auto& o : messagesOn<beft::scene_objects_t>(log, "GT_OBJECTS")) ticks_of["GT_OBJECTS"].insert(o.tick);
+  for (const auto& l : messagesOn<beft::labels_t>(log, "LABELS_VISUAL")) ticks_of["LABELS_VISUAL"].insert(l.tick);
+  for (const auto& l : messagesOn<beft::labels_t>(log, "LABELS_ACOUSTIC")) ticks_of["LABELS_ACOUSTIC"].insert(l.tick);
+  for (const auto& h : messagesOn<beft::hypotheses_t>(log, "HYPOTHESES")) ticks_of["HYPOTHESES"].insert(h.tick);
+  for (const auto& [channel, ticks] : ticks_of)
+    for (int64_t tick = 0; tick < kShortTicks; ++tick)
+      if (!ticks.count(tick)) return false;
+  return ticks_of.size() == 7;
 }
 
 // The logger hears the run over UDP like any other process; on a busy
@@ -71,7 +84,7 @@ const ShortRun& shortYardRun() {
         r.result.output += e.what();
       }
       if (r.result.exit_code != 0 || logHasEveryFiring(r.log)) break;
-      std::printf("[test] the log of %s lost a FIRE or DONE; recording again\n", r.dir.c_str());
+      std::printf("[test] the log of %s lost a message; recording again\n", r.dir.c_str());
     }
     return r;
   }();
