@@ -19,6 +19,7 @@
 #include "channels.hpp"
 #include "lcm_url.hpp"
 #include "log.hpp"
+#include "udpm_filter.hpp"
 
 namespace {
 
@@ -187,6 +188,13 @@ int main(int argc, char** argv) {
   lcm::Subscription* queries =
       lcm.subscribeFunction(beft::channels::kBlackboardQuery, &BlackboardProcess::onQueryOf, &process);
   queries->setQueueCapacity(100);
+  // Excluded channels named plainly (FIRE, DONE, ...) are dropped in the kernel.
+  beft::udpm_filter::Spec filter;
+  filter.mode = beft::udpm_filter::Spec::Mode::RejectListed;
+  for (const auto& pattern : options.exclude)
+    if (beft::udpm_filter::isPlainChannel(pattern) && pattern != beft::channels::kBlackboardQuery)
+      filter.rules.push_back(beft::udpm_filter::channelRule(pattern));
+  beft::udpm_filter::installAndReport(lcm, lcm_url, filter);
 
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);

@@ -34,6 +34,10 @@ void LcmArbiterOutput::firingEnded(const FiringRecord& record) {
   if (firing_log_) firing_log_->write(record);
 }
 
+std::vector<std::string> ArbiterEventQueue::channelsRead() {
+  return {channels::kDone, channels::kHeartbeat, channels::kStopRequest};
+}
+
 ArbiterEventQueue::ArbiterEventQueue(lcm::LCM& lcm) : lcm_(lcm) {
   subscriptions_.push_back(lcm_.subscribe(channels::kDone, &ArbiterEventQueue::onDone, this));
   subscriptions_.push_back(lcm_.subscribe(channels::kHeartbeat, &ArbiterEventQueue::onHeartbeat, this));

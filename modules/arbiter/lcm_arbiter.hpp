@@ -48,6 +48,9 @@ class ArbiterEventQueue {
   ArbiterEventQueue(const ArbiterEventQueue&) = delete;
   ArbiterEventQueue& operator=(const ArbiterEventQueue&) = delete;
 
+  // The channels it subscribes to: DONE, HEARTBEAT, STOP_REQUEST.
+  static std::vector<std::string> channelsRead();
+
   // Hands every queued event to the core, in arrival order.
   void deliverTo(ArbiterCore& core);
   bool empty() const { return events_.empty(); }

@@ -10,6 +10,7 @@
 #include "firing_log.hpp"
 #include "lcm_arbiter.hpp"
 #include "lcm_url.hpp"
+#include "udpm_filter.hpp"
 #include "log.hpp"
 #include "pnml_reader.hpp"
 
@@ -107,6 +108,10 @@ int main(int argc, char** argv) {
     beft::log::error("cannot open LCM at ", lcm_url);
     return 2;
   }
+  beft::udpm_filter::Spec filter;
+  for (const auto& channel : ArbiterEventQueue::channelsRead())
+    filter.rules.push_back(beft::udpm_filter::channelRule(channel));
+  beft::udpm_filter::installAndReport(lcm, lcm_url, filter);
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onTerminate);
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // firing lines appear as they happen, also in a pipe

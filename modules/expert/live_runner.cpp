@@ -19,6 +19,7 @@
 
 #include "channels.hpp"
 #include "log.hpp"
+#include "udpm_filter.hpp"
 
 namespace beft::expert {
 
@@ -67,6 +68,8 @@ class Runner {
     }
     lcm_.subscribe(channels::kFire, &Runner::onFire, this)->setQueueCapacity(1000);
     lcm_.subscribe(channels::kRunStatus, &Runner::onRunStatus, this);
+    if (options_.catch_up) subscribeToSnapshot();
+    installChannelFilter();
     if (options_.catch_up) requestSnapshot();
 
     log::info("ready: waiting for FIRE on ", options_.lcm_url);
@@ -192,12 +195,40 @@ class Runner {
     lcm_.publish(channels::kHeartbeat, &beat);
   }
 
-  // Late joiners: ask the blackboard for the latest message of each channel
-  // read; the answer only fills channels nothing has arrived on yet.
-  void requestSnapshot() {
+  // Only this expert's inputs, its own FIREs, the run status and its snapshot
+  // answer wake it up; everything else is dropped in the kernel.
+  void installChannelFilter() {
+    udpm_filter::Spec spec;
+    for (const auto& channel : read_channels_) {
+      if (!udpm_filter::isPlainChannel(channel)) {
+        log::info("every channel reaches this process (it reads the pattern ", channel, ")");
+        return;
+      }
+      spec.rules.push_back(udpm_filter::channelRule(channel));
+    }
+    spec.rules.push_back(udpm_filter::fireFor(channels::kFire, options_.process_name));
+    // Only the end of the run matters here, not the status of every tick:
+    // run_status_t's state byte follows utime and tick.
+    for (int8_t ended : {beft::run_status_t::STATE_FINISHED, beft::run_status_t::STATE_FAILED}) {
+      udpm_filter::Rule rule = udpm_filter::channelRule(channels::kRunStatus);
+      rule.field_offset = 16;
+      rule.field = std::string(1, static_cast<char>(ended));
+      rule.what = "end of run";
+      spec.rules.push_back(rule);
+    }
+    if (!snapshot_channel_.empty()) spec.rules.push_back(udpm_filter::channelRule(snapshot_channel_));
+    udpm_filter::installAndReport(lcm_, options_.lcm_url, spec);
+  }
+
+  void subscribeToSnapshot() {
     snapshot_channel_ = std::string(channels::kBlackboardSnapshotPrefix) + options_.process_name +
                         "_" + std::to_string(getpid());
     lcm_.subscribe(snapshot_channel_, &Runner::onSnapshot, this);
+  }
+
+  // Late joiners: ask the blackboard for the latest message of each channel
+  // read; the answer only fills channels nothing has arrived on yet.
+  void requestSnapshot() {
     beft::bb_query_t query;
     query.utime = wallMicros();
     query.requester = snapshot_channel_.substr(std::string(channels::kBlackboardSnapshotPrefix).size());

@@ -7,6 +7,7 @@
 #include "ompl_planner.hpp"
 #include "planner_factory.hpp"
 #include "planner_service.hpp"
+#include "udpm_filter.hpp"
 
 #include <beft/heartbeat_t.hpp>
 #include <lcm/lcm-cpp.hpp>
@@ -109,6 +110,10 @@ int main(int argc, char** argv) {
   Inbox inbox;
   lcm.subscribe(beft::channels::kObstacleMap, &Inbox::onMap, &inbox)->setQueueCapacity(4);
   lcm.subscribe(beft::channels::kPlanRequest, &Inbox::onRequest, &inbox)->setQueueCapacity(1000);
+  beft::udpm_filter::Spec filter;
+  filter.rules = {beft::udpm_filter::channelRule(beft::channels::kObstacleMap),
+                  beft::udpm_filter::channelRule(beft::channels::kPlanRequest)};
+  beft::udpm_filter::installAndReport(lcm, lcm_url, filter);
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);
   beft::log::info("planning with ", config.default_planner, " (robot radius ", config.robot_radius, " m) on ",
