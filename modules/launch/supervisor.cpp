@@ -12,11 +12,15 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <thread>
 
 namespace beft::launch {
 
 namespace {
+
+// The child that records the run (beft-record), started first and stopped last.
+constexpr const char* kRecorderName = "logger";
 
 std::atomic<bool> g_interrupted{false};
 void onSignal(int) { g_interrupted = true; }
@@ -135,14 +139,16 @@ std::string describeStatus(int status) {
   return "ended";
 }
 
-void stopAll(std::vector<Child>& children, Printer& printer, double grace_s) {
+// SIGTERM, then SIGKILL after the grace time, to the children `chosen` picks.
+void stopSome(std::vector<Child>& children, Printer& printer, double grace_s,
+              const std::function<bool(const Child&)>& chosen) {
   for (auto& child : children)
-    if (child.running) kill(-child.pid, SIGTERM);
+    if (child.running && chosen(child)) kill(-child.pid, SIGTERM);
   const auto deadline = Clock::now() + std::chrono::duration<double>(grace_s);
   while (Clock::now() < deadline) {
     bool any = false;
     for (auto& child : children) {
-      if (!child.running) continue;
+      if (!child.running || !chosen(child)) continue;
       drain(child, printer, false);
       int status = 0;
       if (waitpid(child.pid, &status, WNOHANG) == child.pid) {
@@ -156,12 +162,18 @@ void stopAll(std::vector<Child>& children, Printer& printer, double grace_s) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   for (auto& child : children) {
-    if (!child.running) continue;
+    if (!child.running || !chosen(child)) continue;
     printer.own(child.spec.name + " did not stop within " + std::to_string(grace_s) + " s: killed");
     kill(-child.pid, SIGKILL);
     waitpid(child.pid, nullptr, 0);
     child.running = false;
   }
+}
+
+// The recorder last, so it records what the others send while stopping.
+void stopAll(std::vector<Child>& children, Printer& printer, double grace_s) {
+  stopSome(children, printer, grace_s, [](const Child& child) { return child.spec.name != kRecorderName; });
+  stopSome(children, printer, grace_s, [](const Child& child) { return child.spec.name == kRecorderName; });
   for (auto& child : children)
     if (child.output_fd >= 0) {
       drain(child, printer, true);
@@ -193,12 +205,9 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
 
   if (!options.record_log.empty()) {
     Child logger;
-    logger.spec.name = "logger";
-    logger.argv = {"lcm-logger", "--lcm-url=" + options.lcm_url, "--force", "--quiet"};
-    if (!options.record_exclude_regex.empty()) {
-      logger.argv.push_back("--invert-channels");
-      logger.argv.push_back("--channel=" + options.record_exclude_regex);
-    }
+    logger.spec.name = kRecorderName;
+    logger.argv = {resolveCommand("beft-record", options.bin_dir), "--lcm-url=" + options.lcm_url, "--force", "--quiet"};
+    if (!options.record_exclude_regex.empty()) logger.argv.push_back("--exclude=" + options.record_exclude_regex);
     logger.argv.push_back(options.record_log);
     children.push_back(logger);
   }
@@ -230,7 +239,7 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
       return outcome;
     }
     if (child.spec.is_arbiter) outcome.arbiter_ran = true;
-    if (child.spec.name == "logger") std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (child.spec.name == kRecorderName) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   printer.own("started " + std::to_string(children.size()) + " processes on " + options.lcm_url);
 

@@ -16,7 +16,7 @@ struct SupervisorOptions {
   std::string host = "local";         // processes with another host label are not started
   std::set<std::string> except;       // processes not to start (started by hand)
   std::string bin_dir;                // where commands are looked up first
-  std::string record_log;             // if set, lcm-logger records the run here
+  std::string record_log;             // if set, beft-record records the run here
   std::string record_exclude_regex;   // channels the logger leaves out
   double stop_grace_s = 3.0;          // SIGTERM, then SIGKILL after this
   bool quiet_children = false;        // do not echo children's output

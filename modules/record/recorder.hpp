@@ -1,0 +1,66 @@
+// Writes what one LCM instance hears into an LCM log file (lcm-logger's
+// format: lcm-logplayer plays it), in arrival order, with the receive time as
+// the event timestamp.
+//
+// Written for lockstep runs, which hand a burst of large messages to every
+// process each tick: lcm-logger 1.3 keeps LCM's default 30 queued messages per
+// subscription and drops the rest when it falls behind, passes each message
+// through a writer thread (one more wake-up per message), and discards what
+// is still queued when it is stopped. The recorder writes from the handler
+// into a buffered file, keeps a deep queue, and on stop takes everything still
+// arriving before it closes the file.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <regex>
+#include <string>
+
+namespace lcm {
+class LCM;
+class LogFile;
+class ReceiveBuffer;
+class Subscription;
+}  // namespace lcm
+
+namespace beft::record {
+
+struct RecordOptions {
+  std::string path;           // the log file to write
+  bool overwrite = false;     // replace an existing file
+  std::string exclude_regex;  // channels not recorded (empty: record all)
+  int queue_capacity = 100000;
+};
+
+class Recorder {
+ public:
+  // Opens the file; throws std::runtime_error with the reason if it cannot.
+  Recorder(lcm::LCM& lcm, RecordOptions options);
+  ~Recorder();
+  Recorder(const Recorder&) = delete;
+  Recorder& operator=(const Recorder&) = delete;
+
+  // Handles what arrives for up to `timeout_ms`; false if LCM failed.
+  bool handle(int timeout_ms);
+  // Keeps writing until nothing arrived for `quiet_ms` (or `longest_ms` passed).
+  void drain(int quiet_ms, int longest_ms);
+  void flush();
+
+  int64_t events() const { return events_; }
+  int64_t bytes() const { return bytes_; }
+
+  static void onMessageOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, Recorder* self);
+
+ private:
+  void write(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+
+  lcm::LCM& lcm_;
+  RecordOptions options_;
+  std::unique_ptr<lcm::LogFile> log_;
+  lcm::Subscription* subscription_ = nullptr;
+  std::regex exclude_;
+  bool has_exclude_ = false;
+  int64_t events_ = 0, bytes_ = 0;
+};
+
+}  // namespace beft::record
