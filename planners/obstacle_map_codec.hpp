@@ -50,4 +50,9 @@ beft::obstacle_map_t makeObstacleMap(const ObstacleCells& map, int8_t encoding,
 // wrong.
 ObstacleCells decodeObstacleMap(const beft::obstacle_map_t& message);
 
+// True when two messages hold the same map (size, resolution, origin, encoding
+// and bytes), whatever their time: a map republished unchanged need not be
+// decoded again.
+bool sameEncodedMap(const beft::obstacle_map_t& a, const beft::obstacle_map_t& b);
+
 }  // namespace beft::planners

@@ -49,7 +49,7 @@ struct RayCaster::SolidFootprint {
   double min_depth = 0;                  // no point of the solid is nearer [m]
 };
 
-void RayCaster::prepareRays(const Camera& camera) {
+void RayCaster::prepareCamera(const Camera& camera) {
   const bool same_intrinsics = width_ == camera.intrinsics.width && height_ == camera.intrinsics.height &&
                                camera_.intrinsics.fov_deg == camera.intrinsics.fov_deg &&
                                !inverse_length_.empty();
@@ -86,7 +86,11 @@ void RayCaster::prepareRays(const Camera& camera) {
     // this x next points into the frustum.
     frustum_normals_[i] = corners[i].cross(corners[(i + 1) % 4]).normalized();
   }
+}
 
+void RayCaster::prepareRays(const Camera& camera) {
+  prepareCamera(camera);
+  const CameraFrame& f = camera_frame_;
   // Locals and raw pointers: stores to the arrays cannot alias them, so the
   // compiler keeps them in registers.
   const double range = camera.intrinsics.range;
@@ -347,9 +351,13 @@ void RayCaster::render(const SceneGeometry& scene, const Camera& camera, Rendere
 }
 
 std::vector<int> RayCaster::expectedPixelsPerObject(const SceneGeometry& scene, const Camera& camera) {
-  prepareRays(camera);
+  // Rays only inside each solid's footprint, by the same formula (and order
+  // of operations) as prepareRays, so the counts are those of full rays.
+  prepareCamera(camera);
   std::vector<int> counts(std::max(scene.objectCount(), 0), 0);
-  const Eigen::Vector3d& o = camera_frame_.origin;
+  const CameraFrame& f = camera_frame_;
+  const Eigen::Vector3d& o = f.origin;
+  const double range = camera.intrinsics.range;
   LineInterval interval;
   const std::vector<Solid>& solids = scene.solids();
   for (size_t s = 0; s < solids.size(); ++s) {
@@ -359,10 +367,17 @@ std::vector<int> RayCaster::expectedPixelsPerObject(const SceneGeometry& scene, 
     if (!projectSolid(solid, footprint)) continue;
     int count = 0;
     for (int v = footprint.v0; v <= footprint.v1; ++v) {
+      const double b = row_b_[v];
+      const double row_x = f.forward.x() + b * f.up.x(), row_y = f.forward.y() + b * f.up.y(),
+                   row_z = f.forward.z() + b * f.up.z();
+      const double t_ground = (row_z < 0 && o.z() > 0) ? -o.z() / row_z : SceneGeometry::kInfinity;
       for (int u = footprint.u0; u <= footprint.u1; ++u) {
         const size_t p = static_cast<size_t>(v) * width_ + u;
-        const Eigen::Vector3d d(ray_x_[p], ray_y_[p], ray_z_[p]);
-        if (intersectLine(solid, o, d, interval) && interval.enter >= kMinDepth && interval.enter <= t_limit_[p]) {
+        const double a = column_a_[u];
+        const Eigen::Vector3d d(row_x + a * f.left.x(), row_y + a * f.left.y(), row_z);
+        const double t_range = range * inverse_length_[p];
+        const double t_limit = t_ground <= t_range ? t_ground : t_range;
+        if (intersectLine(solid, o, d, interval) && interval.enter >= kMinDepth && interval.enter <= t_limit) {
           ++count;
         }
       }

@@ -51,6 +51,9 @@ class RayCaster {
 
  private:
   struct SolidFootprint;  // a solid's covered pixel rectangle and nearest depth
+  // The camera's frame, frustum and per-intrinsics tables.
+  void prepareCamera(const Camera& camera);
+  // prepareCamera, then every pixel's ray and distance limit.
   void prepareRays(const Camera& camera);
   bool projectSolid(const Solid& solid, SolidFootprint& footprint) const;
   void castProjection(const SceneGeometry& scene);

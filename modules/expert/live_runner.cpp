@@ -136,6 +136,13 @@ class Runner {
   }
 
   void onRunStatus(const lcm::ReceiveBuffer*, const std::string&, const beft::run_status_t* s) {
+    // An arbiter that started after this expert's last heartbeat waits for
+    // the next one: answer at once (at most every 50 ms) instead.
+    if (s->state == beft::run_status_t::STATE_WAITING &&
+        Clock::now() - last_waiting_answer_ > std::chrono::milliseconds(50)) {
+      last_waiting_answer_ = Clock::now();
+      sendHeartbeat();
+    }
     if (s->state == beft::run_status_t::STATE_FINISHED || s->state == beft::run_status_t::STATE_FAILED) {
       run_ended_ = true;
       run_end_reason_ = s->message;
@@ -207,13 +214,15 @@ class Runner {
       spec.rules.push_back(udpm_filter::channelRule(channel));
     }
     spec.rules.push_back(udpm_filter::fireFor(channels::kFire, options_.process_name));
-    // Only the end of the run matters here, not the status of every tick:
-    // run_status_t's state byte follows utime and tick.
-    for (int8_t ended : {beft::run_status_t::STATE_FINISHED, beft::run_status_t::STATE_FAILED}) {
+    // Only an arbiter waiting for heartbeats and the end of the run matter
+    // here, not the status of every tick: run_status_t's state byte follows
+    // utime and tick.
+    for (int8_t state : {beft::run_status_t::STATE_WAITING, beft::run_status_t::STATE_FINISHED,
+                         beft::run_status_t::STATE_FAILED}) {
       udpm_filter::Rule rule = udpm_filter::channelRule(channels::kRunStatus);
       rule.field_offset = 16;
-      rule.field = std::string(1, static_cast<char>(ended));
-      rule.what = "end of run";
+      rule.field = std::string(1, static_cast<char>(state));
+      rule.what = "waiting and end of run";
       spec.rules.push_back(rule);
     }
     if (!snapshot_channel_.empty()) spec.rules.push_back(udpm_filter::channelRule(snapshot_channel_));
@@ -260,6 +269,7 @@ class Runner {
   std::optional<Firing> pending_;
   bool pending_fired_ = false;
   Clock::time_point pending_since_;
+  Clock::time_point last_waiting_answer_;
   beft::done_t last_done_;
   int64_t firings_run_ = 0;
   bool run_ended_ = false;

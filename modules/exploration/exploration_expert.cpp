@@ -231,14 +231,18 @@ Observation ExplorationExpert::observe(const expert::Firing& firing) {
   if (map != nullptr && map->utime != map_utime_ && explorer_->wantsMap(o.t)) {
     map_utime_ = map->utime;
     try {
-      map_ = std::make_shared<const planners::ObstacleCells>(planners::decodeObstacleMap(*map));
+      if (!last_map_ || !planners::sameEncodedMap(*map, *last_map_)) {  // unchanged: nothing to redo
+        map_ = std::make_shared<const planners::ObstacleCells>(planners::decodeObstacleMap(*map));
+        last_map_ = *map;
+        ++map_version_;
+      }
     } catch (const std::exception& e) {
       if (!map_warned_) log::warn("OBSTACLE_MAP ignored: ", e.what());
       map_warned_ = true;
     }
   }
   o.map = map_;
-  o.map_version = map_utime_;
+  o.map_version = map_version_;
 
   if (const auto* stack = stack_.latest()) {
     o.stack_known = true;

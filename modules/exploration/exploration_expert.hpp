@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,7 +47,9 @@ class ExplorationExpert : public expert::Expert {
   ExplorerParameters parameters_;
   std::unique_ptr<Explorer> explorer_;
   int64_t next_command_id_ = 1;
-  int64_t map_utime_ = -1;  // the obstacle map last decoded
+  int64_t map_utime_ = -1;  // the obstacle map message last looked at
+  int64_t map_version_ = 0;  // counts the different maps decoded
+  std::optional<obstacle_map_t> last_map_;  // as last decoded
   std::shared_ptr<const planners::ObstacleCells> map_;
   bool map_warned_ = false;
 

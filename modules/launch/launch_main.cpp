@@ -7,17 +7,8 @@
 
 #include "free_port.hpp"
 #include "lcm_url.hpp"
+#include "own_bin_dir.hpp"
 #include "supervisor.hpp"
-
-namespace {
-std::string ownBinDir() {
-  char path[PATH_MAX] = {0};
-  const ssize_t n = readlink("/proc/self/exe", path, sizeof(path) - 1);
-  if (n <= 0) return "";
-  std::string exe(path, static_cast<std::size_t>(n));
-  return exe.substr(0, exe.rfind('/'));
-}
-}  // namespace
 
 int main(int argc, char** argv) {
   std::string file, lcm_url, record;
@@ -43,7 +34,7 @@ int main(int argc, char** argv) {
   beft::launch::SupervisorOptions options;
   options.host = host;
   options.except = {except.begin(), except.end()};
-  options.bin_dir = ownBinDir();
+  options.bin_dir = beft::ownBinDir();
   options.record_log = record;
   if (lcm_url.empty()) {
     if (new_port) {

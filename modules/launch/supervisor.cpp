@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <thread>
@@ -139,6 +140,26 @@ std::string describeStatus(int status) {
   return "ended";
 }
 
+// The recorder creates its file once it listens: nothing is started before
+// that, so the log holds the run from its first message.
+bool waitForRecorder(Child& recorder, const std::string& path, Printer& printer) {
+  const auto give_up = Clock::now() + std::chrono::seconds(10);
+  std::error_code error;
+  while (Clock::now() < give_up) {
+    if (std::filesystem::exists(path, error)) return true;
+    int status = 0;
+    if (waitpid(recorder.pid, &status, WNOHANG) == recorder.pid) {
+      recorder.running = false;
+      drain(recorder, printer, true);
+      printer.own("the recorder " + describeStatus(status) + " before it started recording");
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  printer.own("the recorder did not create " + path + " within 10 s");
+  return false;
+}
+
 // SIGTERM, then SIGKILL after the grace time, to the children `chosen` picks.
 void stopSome(std::vector<Child>& children, Printer& printer, double grace_s,
               const std::function<bool(const Child&)>& chosen) {
@@ -204,6 +225,9 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
   std::vector<Child> children;
 
   if (!options.record_log.empty()) {
+    // Replaced anyway (--force); gone now so that its appearance means the recorder listens.
+    std::error_code error;
+    std::filesystem::remove(options.record_log, error);
     Child logger;
     logger.spec.name = kRecorderName;
     logger.argv = {resolveCommand("beft-record", options.bin_dir), "--lcm-url=" + options.lcm_url, "--force", "--quiet"};
@@ -239,7 +263,11 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
       return outcome;
     }
     if (child.spec.is_arbiter) outcome.arbiter_ran = true;
-    if (child.spec.name == kRecorderName) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (child.spec.name == kRecorderName && !waitForRecorder(child, options.record_log, printer)) {
+      outcome.message = "the recorder did not start";
+      stopAll(children, printer, options.stop_grace_s);
+      return outcome;
+    }
   }
   printer.own("started " + std::to_string(children.size()) + " processes on " + options.lcm_url);
 

@@ -140,7 +140,8 @@ int main(int argc, char** argv) {
     }
     while (lcm.handleTimeout(0) > 0) {
     }  // take everything queued, so a request sees the map sent before it
-    if (inbox.has_map) {
+    // Decoded only when a request needs it: the map arrives every tick, requests rarely.
+    if (inbox.has_map && !inbox.requests.empty()) {
       try {
         service->setObstacleMap(inbox.latest_map);
       } catch (const std::exception& e) {

@@ -22,10 +22,17 @@ Recorder::Recorder(lcm::LCM& lcm, RecordOptions options) : lcm_(lcm), options_(s
       throw std::runtime_error("--exclude '" + options_.exclude_regex + "': not a regular expression (" + e.what() + ")");
     }
   }
-  log_ = std::make_unique<lcm::LogFile>(options_.path, "w");
-  if (!log_->good()) throw std::runtime_error(options_.path + ": cannot be written");
+  // Listening before the file appears: whoever waits for the file to start
+  // publishing (the launcher) loses nothing.
   subscription_ = lcm_.subscribeFunction(".*", &Recorder::onMessageOf, this);
   subscription_->setQueueCapacity(options_.queue_capacity);
+  lcm_get_fileno(lcm_.getUnderlyingLCM());  // LCM opens its receive socket here at the latest
+  log_ = std::make_unique<lcm::LogFile>(options_.path, "w");
+  if (!log_->good()) {
+    lcm_.unsubscribe(subscription_);
+    subscription_ = nullptr;
+    throw std::runtime_error(options_.path + ": cannot be written");
+  }
 }
 
 Recorder::~Recorder() {

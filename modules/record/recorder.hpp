@@ -34,7 +34,8 @@ struct RecordOptions {
 
 class Recorder {
  public:
-  // Opens the file; throws std::runtime_error with the reason if it cannot.
+  // Subscribes, then creates the file (so once the file exists, everything
+  // sent is recorded); throws std::runtime_error with the reason if it cannot.
   Recorder(lcm::LCM& lcm, RecordOptions options);
   ~Recorder();
   Recorder(const Recorder&) = delete;

@@ -8,15 +8,9 @@
 #include <climits>
 #include <cstdio>
 
-namespace {
-std::string ownBinDir() {
-  char path[PATH_MAX] = {0};
-  const ssize_t n = readlink("/proc/self/exe", path, sizeof(path) - 1);
-  if (n <= 0) return ".";
-  std::string exe(path, static_cast<std::size_t>(n));
-  return exe.substr(0, exe.rfind('/'));
-}
+#include "own_bin_dir.hpp"
 
+namespace {
 int execProgram(std::vector<std::string> args) {
   std::vector<char*> argv;
   for (auto& arg : args) argv.push_back(arg.data());
@@ -49,7 +43,7 @@ int main(int argc, char** argv) {
   app.add_option("--fps", fps, "with --to and a video: frame rate (default 10)")->needs(to_option);
   CLI11_PARSE(app, argc, argv);
 
-  const std::string bin = ownBinDir();
+  const std::string bin = beft::ownBinDir();
   if (!module.empty()) {
     std::string program = module;
     std::replace(program.begin(), program.end(), '_', '-');

@@ -13,17 +13,10 @@
 #include "free_port.hpp"
 #include "lcm_url.hpp"
 #include "load_scenario.hpp"
+#include "own_bin_dir.hpp"
 #include "supervisor.hpp"
 
 namespace {
-
-std::string ownBinDir() {
-  char path[PATH_MAX] = {0};
-  const ssize_t n = readlink("/proc/self/exe", path, sizeof(path) - 1);
-  if (n <= 0) return ".";
-  std::string exe(path, static_cast<std::size_t>(n));
-  return exe.substr(0, exe.rfind('/'));
-}
 
 std::string absolutePath(const std::string& path) {
   if (!path.empty() && path[0] == '/') return path;
@@ -124,7 +117,7 @@ int main(int argc, char** argv) {
 
   beft::launch::SupervisorOptions options;
   options.lcm_url = beft::lcmUrlForPort(port);
-  options.bin_dir = ownBinDir();
+  options.bin_dir = beft::ownBinDir();
   options.except = {except.begin(), except.end()};
   options.record_log = out_dir + "/run.lcmlog";
   options.quiet_children = !verbose;

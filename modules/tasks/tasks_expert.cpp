@@ -199,7 +199,10 @@ void TasksExpert::updateExecutorInputs(const expert::Firing& firing) {
   if (const auto* map = map_.latest(); map != nullptr && map->utime != map_utime_) {
     map_utime_ = map->utime;
     try {
-      executor_->setObstacleMap(planners::decodeObstacleMap(*map));
+      if (!last_map_ || !planners::sameEncodedMap(*map, *last_map_)) {  // unchanged: nothing to decode
+        executor_->setObstacleMap(planners::decodeObstacleMap(*map));
+        last_map_ = *map;
+      }
     } catch (const std::exception& e) {
       if (!map_warned_) log::warn("OBSTACLE_MAP ignored: ", e.what());
       map_warned_ = true;

@@ -7,6 +7,7 @@
 
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,7 @@ class TasksExpert : public expert::Expert {
   expert::TickChannel<acoustic_percepts_t> audio_{4};
   expert::TickChannel<obstacle_map_t> map_{2};
   int64_t map_utime_ = -1;  // the obstacle map last given to the executor
+  std::optional<obstacle_map_t> last_map_;  // as last decoded
   bool map_warned_ = false;
 };
 

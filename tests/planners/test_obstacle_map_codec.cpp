@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
 
 namespace beft::planners {
@@ -92,6 +93,35 @@ TEST(ObstacleMapCodec, RejectsInconsistentMessages) {
   bad = makeObstacleMap(sampleMap(), beft::obstacle_map_t::ENCODING_RAW);
   bad.height = 5;  // more cells than data
   EXPECT_THROW(decodeObstacleMap(bad), ObstacleMapError);
+}
+
+TEST(ObstacleMapCodec, NamesTheFirstBadCellWhereverItIs) {
+  for (const std::size_t bad_index : {std::size_t{0}, std::size_t{599}, std::size_t{1199}}) {
+    auto bad = makeObstacleMap(sampleMap(), beft::obstacle_map_t::ENCODING_RAW);
+    bad.data[bad_index] = 3;
+    try {
+      decodeObstacleMap(bad);
+      ADD_FAILURE() << "cell " << bad_index << " = 3 was accepted";
+    } catch (const ObstacleMapError& e) {
+      EXPECT_NE(std::string(e.what()).find("cell " + std::to_string(bad_index) + " has value 3"), std::string::npos)
+          << e.what();
+    }
+  }
+  auto bad_rle = makeObstacleMap(sampleMap(), beft::obstacle_map_t::ENCODING_RLE);
+  bad_rle.data[1] = 200;  // the value of the first run
+  EXPECT_THROW(decodeObstacleMap(bad_rle), ObstacleMapError);
+}
+
+TEST(ObstacleMapCodec, SameEncodedMapIgnoresTimeOnly) {
+  const auto first = makeObstacleMap(sampleMap(), beft::obstacle_map_t::ENCODING_RLE, 100, 1);
+  auto later = makeObstacleMap(sampleMap(), beft::obstacle_map_t::ENCODING_RLE, 200, 2);
+  EXPECT_TRUE(sameEncodedMap(first, later));
+  ObstacleCells changed = sampleMap();
+  changed.cells[5] = kOccupied;
+  EXPECT_FALSE(sameEncodedMap(first, makeObstacleMap(changed, beft::obstacle_map_t::ENCODING_RLE, 100, 1)));
+  later.resolution = 0.1;
+  EXPECT_FALSE(sameEncodedMap(first, later));
+  EXPECT_FALSE(sameEncodedMap(first, makeObstacleMap(sampleMap(), beft::obstacle_map_t::ENCODING_RAW, 100, 1)));
 }
 
 TEST(ObstacleMapCodec, RefusesToEncodeWrongCellCount) {

@@ -1,0 +1,115 @@
+// beft-bench-mission (./beft bench mission): how fast a whole mission runs.
+// Runs `beft-run` on a scenario several times, alternating the kernel channel
+// filter on and off (BEFT_UDPM_FILTER=0), so both share the machine's state,
+// and prints ticks per second, times real time and the ratio between them.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "own_bin_dir.hpp"
+
+extern char** environ;
+
+namespace {
+
+struct RunFigures {
+  bool ok = false;
+  double ticks_per_s = 0, times_real_time = 0;
+  bool completed = false;
+};
+
+RunFigures runOnce(const std::string& scenario, const std::string& out_dir, bool filtered) {
+  RunFigures figures;
+  std::vector<std::string> args = {beft::ownBinDir() + "/beft-run", scenario, "--out", out_dir};
+  std::vector<char*> argv;
+  for (auto& arg : args) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  std::vector<std::string> environment;
+  for (char** e = environ; *e; ++e)
+    if (std::string(*e).rfind("BEFT_UDPM_FILTER=", 0) != 0) environment.emplace_back(*e);
+  if (!filtered) environment.emplace_back("BEFT_UDPM_FILTER=0");
+  std::vector<char*> envp;
+  for (auto& entry : environment) envp.push_back(entry.data());
+  envp.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return figures;
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return figures;
+  std::ifstream file(out_dir + "/report.json");
+  try {
+    const auto report = nlohmann::json::parse(file);
+    figures.ticks_per_s = report.at("ticks_per_s").get<double>();
+    figures.times_real_time = report.at("sim_time_s").get<double>() / report.at("wall_time_s").get<double>();
+    figures.completed = report.at("completed").get<bool>();
+    figures.ok = true;
+  } catch (const std::exception&) {
+  }
+  return figures;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "beft-bench-mission: runs the whole mission (every process, lockstep, recorded) on a scenario "
+      "several times, alternating the kernel channel filter on and off, and prints the median ticks "
+      "per second and times real time of each, and their ratio. Target: >= 50x real time on yard.xml."};
+  std::string scenario = "scenarios/yard.xml";
+  int runs = 3;
+  app.add_option("scenario", scenario, "scenario XML file")->capture_default_str()->check(CLI::ExistingFile);
+  app.add_option("--runs", runs, "runs of each variant")->capture_default_str()->check(CLI::Range(1, 100));
+  CLI11_PARSE(app, argc, argv);
+
+  const auto work = std::filesystem::temp_directory_path() / ("beft-bench-mission-" + std::to_string(getpid()));
+  std::vector<double> rate[2], real[2];
+  int failures = 0;
+  for (int i = 0; i < runs; ++i) {
+    for (int filtered = 1; filtered >= 0; --filtered) {
+      const auto out = work / ((filtered ? "filtered-" : "unfiltered-") + std::to_string(i));
+      const RunFigures figures = runOnce(scenario, out.string(), filtered);
+      if (!figures.ok) {
+        std::fprintf(stderr, "run %d (%s) failed: see %s/processes.log\n", i + 1,
+                     filtered ? "filtered" : "unfiltered", out.c_str());
+        ++failures;
+        continue;
+      }
+      std::printf("  run %d %-10s %6.0f ticks/s  %5.1fx real time%s\n", i + 1, filtered ? "filtered" : "unfiltered",
+                  figures.ticks_per_s, figures.times_real_time, figures.completed ? "" : "  (mission not completed)");
+      std::fflush(stdout);
+      rate[filtered].push_back(figures.ticks_per_s);
+      real[filtered].push_back(figures.times_real_time);
+      std::filesystem::remove_all(out);
+    }
+  }
+  std::filesystem::remove_all(work);
+  std::printf("%s, median of %d runs each:\n", scenario.c_str(), runs);
+  std::printf("  kernel channel filter on   %6.0f ticks/s  %5.1fx real time\n", median(rate[1]), median(real[1]));
+  std::printf("  filter off (baseline)      %6.0f ticks/s  %5.1fx real time\n", median(rate[0]), median(real[0]));
+  if (median(rate[0]) > 0) std::printf("  ratio on / off             %6.2f\n", median(rate[1]) / median(rate[0]));
+  std::printf("  target                     >= 50x real time\n");
+  return failures ? 1 : 0;
+}
