@@ -230,7 +230,8 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
     std::filesystem::remove(options.record_log, error);
     Child logger;
     logger.spec.name = kRecorderName;
-    logger.argv = {resolveCommand("beft-record", options.bin_dir), "--lcm-url=" + options.lcm_url, "--force", "--quiet"};
+    logger.argv = {resolveCommand("beft-record", options.bin_dir), "--force", "--quiet"};
+    if (!options.lcm_url.empty()) logger.argv.push_back("--lcm-url=" + options.lcm_url);
     if (!options.record_exclude_regex.empty()) logger.argv.push_back("--exclude=" + options.record_exclude_regex);
     logger.argv.push_back(options.record_log);
     children.push_back(logger);

@@ -161,6 +161,39 @@ TEST(LiveRunner, FiresOncePerFiringAndRepeatsDoneForDuplicates) {
   EXPECT_GE(collector.heartbeats, 2);
 }
 
+TEST(LiveRunner, AnswersAWaitingArbiterWithAHeartbeatAtOnce) {
+  const std::string url = lcmUrlForPort(uniquePort(3));
+  ScalingExpert scaler;
+  scaler.onStartUp({});
+  expert::LiveOptions options;
+  options.lcm_url = url;
+  options.process_name = "scaler";
+  options.heartbeat_period_s = 30;  // only the first one comes by itself
+  options.catch_up = false;
+  lcm::LCM lcm(url);
+  DoneCollector collector;
+  lcm.subscribe(channels::kHeartbeat, &DoneCollector::onHeartbeat, &collector);
+  std::thread runner([&] { expert::runLive(scaler, options); });
+  pump(lcm, 300ms);
+  {
+    std::lock_guard<std::mutex> lock(collector.mutex);
+    EXPECT_EQ(collector.heartbeats, 1);
+  }
+  beft::run_status_t waiting{};
+  waiting.state = beft::run_status_t::STATE_WAITING;
+  waiting.message = "waiting for heartbeats from: scaler";
+  lcm.publish(channels::kRunStatus, &waiting);
+  pump(lcm, 300ms);
+  {
+    std::lock_guard<std::mutex> lock(collector.mutex);
+    EXPECT_EQ(collector.heartbeats, 2) << "no heartbeat in answer to WAITING";
+  }
+  beft::run_status_t end{};
+  end.state = beft::run_status_t::STATE_FINISHED;
+  lcm.publish(channels::kRunStatus, &end);
+  runner.join();
+}
+
 TEST(LiveRunner, WaitsForInputsThenFiresAnyway) {
   const std::string url = lcmUrlForPort(uniquePort(2));
   ScalingExpert scaler;

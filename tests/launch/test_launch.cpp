@@ -149,6 +149,47 @@ TEST(Supervisor, ReportsAFailedArbiter) {
   EXPECT_EQ(outcome.message, "run failed");
 }
 
+TEST(Supervisor, RecordsFromTheFirstMessageOfTheFirstProcess) {
+  // beft-task publishes its command the moment it starts: it is in the log
+  // only if nothing starts before the recorder listens.
+  TempDir dir;
+  SupervisorOptions options;
+  options.lcm_url = "udpm://239.255.76.67:" + std::to_string(findFreeUdpPort(35000, 39999)) + "?ttl=0";
+  // beft-task takes --lcm-url before its subcommand, so it is written here.
+  const auto file = dir.write("run.xml", R"(<launch>
+  <process name="talker" command="beft-task" args="--lcm-url )" + options.lcm_url +
+                                             R"( push --no-wait goto 1 2 90" lcm_url="0"/>
+  <process name="arbiter" command="sh" args="-c 'sleep 0.5'" role="arbiter" lcm_url="0"/>
+</launch>)");
+  options.quiet_children = true;
+  options.output_file = dir.path + "/out.log";
+  options.bin_dir = BEFT_BIN_DIR;
+  options.record_log = dir.path + "/run.lcmlog";
+  std::ofstream(options.record_log) << "an old log, replaced";
+  const auto outcome = supervise(loadLaunchFile(file, {}), options);
+  EXPECT_EQ(outcome.arbiter_exit_code, 0) << readAll(options.output_file);
+  const std::string log = readAll(options.record_log);
+  EXPECT_EQ(log.find("an old log"), std::string::npos);
+  EXPECT_NE(log.find("TASK_COMMAND"), std::string::npos) << readAll(options.output_file);
+}
+
+TEST(Supervisor, SaysWhenTheRecorderCannotStart) {
+  TempDir dir;
+  const std::string marker = dir.path + "/ran";
+  const auto file = dir.write("run.xml", R"(<launch>
+  <process name="arbiter" command="touch" args=")" + marker + R"(" role="arbiter" lcm_url="0"/>
+</launch>)");
+  SupervisorOptions options;
+  options.quiet_children = true;
+  options.output_file = dir.path + "/out.log";
+  options.bin_dir = BEFT_BIN_DIR;
+  options.record_log = dir.path + "/no/such/folder/run.lcmlog";
+  const auto outcome = supervise(loadLaunchFile(file, {}), options);
+  EXPECT_EQ(outcome.message, "the recorder did not start");
+  EXPECT_NE(access(marker.c_str(), F_OK), 0) << "a process started without a recorder";
+  EXPECT_NE(readAll(options.output_file).find("cannot be written"), std::string::npos) << readAll(options.output_file);
+}
+
 TEST(FreePort, ReturnsAPortInRange) {
   const int port = findFreeUdpPort(30000, 30100);
   EXPECT_GE(port, 30000);

@@ -163,6 +163,23 @@ TEST(Pipeline, EachExpertFiresOncePerTickInThePapersOrder) {
       EXPECT_EQ((firings[{tick, e}]), 1) << e << " in tick " << tick;
 }
 
+TEST(Pipeline, EveryProcessReceivesOnlyWhatItReads) {
+  // The kernel channel filter is on in every process of a udpm run, and an
+  // expert hears its own firings only.
+  const ShortRun& run = shortYardRun();
+  const std::string record = runCommand("cat " + run.dir + "/processes.log", 10).output;
+  for (const std::string process : {"world", "geometry", "vision", "audio", "visual_labels", "acoustic_labels",
+                                    "fusion", "dw", "exploration", "tasks", "arbiter", "planner"}) {
+    const auto line_start = record.find("[" + process + "] [" + process + "] info: kernel filter: receiving only ");
+    EXPECT_NE(line_start, std::string::npos) << process << " has no kernel filter:\n" << record.substr(0, 3000);
+    if (line_start == std::string::npos || process == "arbiter" || process == "planner") continue;
+    const std::string line = record.substr(line_start, record.find('\n', line_start) - line_start);
+    EXPECT_NE(line.find("FIRE (own firings)"), std::string::npos) << line;
+  }
+  EXPECT_NE(record.find("[blackboard] [blackboard] info: kernel filter: dropping FIRE, DONE, HEARTBEAT, MARKING"),
+            std::string::npos);
+}
+
 TEST(Pipeline, LabelsOnTheBlackboardMatchTheModelLibrary) {
   const auto& run = shortYardRun();
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
