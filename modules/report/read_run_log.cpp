@@ -57,6 +57,8 @@ class LogReader {
     record_.last_timestamp_us = std::max(record_.last_timestamp_us, event.timestamp);
     ++record_.events;
     const std::string& channel = event.channel;
+    if (channel == channels::kFire && record_.first_fire_us < 0) record_.first_fire_us = event.timestamp;
+    if (channel == channels::kDone) record_.last_done_us = std::max(record_.last_done_us, event.timestamp);
     bool ok = true;
     if (channel == channels::kGroundTruth) ok = addGroundTruth(event);
     else if (channel == channels::kRobotState) ok = addRobotState(event);

@@ -28,9 +28,11 @@ nlohmann::json toJson(const RunReport& report) {
   json["sim_time_s"] = rounded(report.sim_time_s);
   json["wall_time_s"] = rounded(report.wall_time_s, 4);
   json["wall_time_source"] = report.wall_time_measured ? "runner" : "log timestamps";
+  json["ticking_time_s"] = rounded(report.ticking_time_s, 4);
   json["ticks"] = report.ticks;
   json["ticks_per_s"] = rounded(report.ticks_per_s, 1);
   json["realtime_factor"] = rounded(report.realtime_factor, 1);
+  json["overall_realtime_factor"] = rounded(report.overall_realtime_factor, 1);
   json["path_length_m"] = rounded(report.path_length_m);
   json["collisions"] = report.collisions;
   json["persons"] = report.persons;
@@ -74,12 +76,17 @@ void printSummary(const RunReport& report, std::ostream& out) {
   out << "  completed:   " << (report.completed ? "yes" : "no") << " (" << report.victims.size() << " of "
       << report.persons << " persons found, " << report.unsettled.size() << " of " << report.hypotheses
       << " hypotheses unsettled)\n";
-  out << "  time:        " << std::setprecision(1) << report.sim_time_s << " s simulated in "
-      << std::setprecision(2) << report.wall_time_s << " s wall, " << report.ticks << " ticks";
-  if (report.wall_time_s > 0)
-    out << ", " << std::setprecision(0) << report.ticks_per_s << " ticks/s, " << std::setprecision(1)
+  out << "  time:        " << std::setprecision(1) << report.sim_time_s << " s simulated, " << report.ticks
+      << " ticks";
+  if (report.ticking_time_s > 0)
+    out << " in " << std::setprecision(2) << report.ticking_time_s << " s of lockstep loop";
+  if (report.ticks_per_s > 0)
+    out << ": " << std::setprecision(0) << report.ticks_per_s << " ticks/s, " << std::setprecision(1)
         << report.realtime_factor << "x real time";
   out << "\n" << std::setprecision(2);
+  if (report.wall_time_s > 0)
+    out << "  wall:        " << report.wall_time_s << " s in all, every process started and stopped ("
+        << std::setprecision(1) << report.overall_realtime_factor << "x real time)\n" << std::setprecision(2);
   out << "  robot:       path " << report.path_length_m << " m, " << report.collisions << " collisions\n";
   for (const auto& v : report.victims)
     out << "  victim:      " << v.object << " at (" << v.x << ", " << v.y << "), error " << v.error_m

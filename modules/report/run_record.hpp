@@ -88,11 +88,18 @@ struct RunRecord {
   std::string stop_reason;            // last STOP_REQUEST message, or ""
   std::string run_status;             // last RUN_STATUS message, or ""
   int64_t first_timestamp_us = 0, last_timestamp_us = 0;  // logger receive times
+  int64_t first_fire_us = -1, last_done_us = -1;  // receive times of the first FIRE and last DONE
   int64_t events = 0;
   std::map<std::string, int> undecodable;  // channel -> messages that did not decode
 
   double simTime() const { return robot.empty() ? 0.0 : robot.back().t; }
   double wallSpan() const { return (last_timestamp_us - first_timestamp_us) * 1e-6; }
+  // Wall time of the lockstep loop itself, first FIRE to last DONE (0 if unknown).
+  double tickingSpan() const {
+    return first_fire_us >= 0 && last_done_us > first_fire_us ? (last_done_us - first_fire_us) * 1e-6 : 0.0;
+  }
+  // Ticks run: from the tick indices, so a robot state the logger lost does not count less.
+  int64_t tickCount() const { return robot.empty() ? 0 : robot.back().tick - robot.front().tick + 1; }
 };
 
 // Reads the whole log. Throws ReportError when the file cannot be opened or

@@ -78,13 +78,16 @@ RunReport scoreRun(const RunRecord& record, const ScoringOptions& options) {
   report.log_path = record.log_path;
   report.person_confidence = options.person_confidence;
   report.sim_time_s = record.simTime();
-  report.ticks = static_cast<int64_t>(record.robot.size());
+  report.ticks = record.tickCount();
   report.wall_time_measured = options.wall_time_s.has_value();
   report.wall_time_s = options.wall_time_s ? *options.wall_time_s : record.wallSpan();
-  if (report.wall_time_s > 0) {
-    report.ticks_per_s = report.ticks / report.wall_time_s;
-    report.realtime_factor = report.sim_time_s / report.wall_time_s;
+  report.ticking_time_s = record.tickingSpan();
+  const double loop_s = report.ticking_time_s > 0 ? report.ticking_time_s : report.wall_time_s;
+  if (loop_s > 0) {
+    report.ticks_per_s = report.ticks / loop_s;
+    report.realtime_factor = report.sim_time_s / loop_s;
   }
+  if (report.wall_time_s > 0) report.overall_realtime_factor = report.sim_time_s / report.wall_time_s;
   if (!record.robot.empty()) {
     report.path_length_m = record.robot.back().path_length;
     report.collisions = record.robot.back().collisions;

@@ -56,11 +56,13 @@ struct RunReport {
   std::string log_path;
   bool completed = false;       // every person found and every hypothesis settled
   double sim_time_s = 0;
-  double wall_time_s = 0;
+  double wall_time_s = 0;           // the whole run, start and stop of every process included
   bool wall_time_measured = false;  // from --wall-time rather than log timestamps
+  double ticking_time_s = 0;        // the lockstep loop: first FIRE to last DONE (log times)
   int64_t ticks = 0;
-  double ticks_per_s = 0;       // 0 when the wall time is unknown
-  double realtime_factor = 0;   // sim time / wall time
+  double ticks_per_s = 0;       // ticks / ticking time (wall time if that is unknown); 0 if neither is
+  double realtime_factor = 0;   // sim time / ticking time (or wall time)
+  double overall_realtime_factor = 0;  // sim time / wall time
   double path_length_m = 0;
   int collisions = 0;
   int persons = 0;              // ground-truth persons

@@ -12,7 +12,9 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include <beft/done_t.hpp>
 #include <beft/dynamic_weights_t.hpp>
+#include <beft/fire_t.hpp>
 #include <beft/hypotheses_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/run_status_t.hpp>
@@ -254,6 +256,38 @@ TEST_F(ReportFromLog, ScoresVictimsFalsifiedAndMissed) {
   EXPECT_NEAR(scoreRun(record, options).ticks_per_s, kTicks / 2.0, 1e-9);
   options.person_confidence = 0.99;  // stricter than the fused confidence
   EXPECT_TRUE(scoreRun(record, options).victims.empty());
+}
+
+TEST_F(ReportFromLog, TicksPerSecondCountTheLockstepLoopAndSurviveALostRobotState) {
+  // The same run with its firings: FIRE first at 0.10 s, the last DONE at 0.50 s.
+  {
+    lcm::LogFile log(log_path, "a");
+    fire_t fire{};
+    fire.expert = "world";
+    done_t done{};
+    done.expert = "tasks";
+    write(log, channels::kFire, fire, 1'700'000'000'100'000);
+    write(log, channels::kDone, done, 1'700'000'000'300'000);
+    write(log, channels::kDone, done, 1'700'000'000'500'000);
+  }
+  RunRecord record = readRunLog(log_path);
+  EXPECT_NEAR(record.tickingSpan(), 0.4, 1e-9);
+  record.robot.erase(record.robot.begin() + 10);  // a robot state the recorder lost
+  ScoringOptions options;
+  options.wall_time_s = 2.0;  // start and stop of every process included
+  const RunReport report = scoreRun(record, options);
+  EXPECT_EQ(report.ticks, kTicks);
+  EXPECT_NEAR(report.ticking_time_s, 0.4, 1e-9);
+  EXPECT_NEAR(report.ticks_per_s, kTicks / 0.4, 1e-6);
+  EXPECT_NEAR(report.realtime_factor, report.sim_time_s / 0.4, 1e-6);
+  EXPECT_NEAR(report.overall_realtime_factor, report.sim_time_s / 2.0, 1e-6);
+  const auto json = toJson(report);
+  EXPECT_NEAR(json.at("ticking_time_s").get<double>(), 0.4, 1e-9);
+  EXPECT_NEAR(json.at("overall_realtime_factor").get<double>(), report.sim_time_s / 2.0, 0.051);
+  std::ostringstream summary;
+  printSummary(report, summary);
+  EXPECT_NE(summary.str().find("0.40 s of lockstep loop"), std::string::npos) << summary.str();
+  EXPECT_NE(summary.str().find("2.00 s in all"), std::string::npos) << summary.str();
 }
 
 TEST_F(ReportFromLog, AHeardButUnseenPersonIsNotAVictim) {
