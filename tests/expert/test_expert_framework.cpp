@@ -102,6 +102,15 @@ struct DoneCollector {
   }
 };
 
+// The options of a live "scaler" on its own port, without blackboard catch-up.
+expert::LiveOptions scalerOptions(int port_offset) {
+  expert::LiveOptions options;
+  options.lcm_url = lcmUrlForPort(uniquePort(port_offset));
+  options.process_name = "scaler";
+  options.catch_up = false;
+  return options;
+}
+
 void pump(lcm::LCM& lcm, std::chrono::milliseconds how_long) {
   const auto end = std::chrono::steady_clock::now() + how_long;
   while (std::chrono::steady_clock::now() < end) lcm.handleTimeout(10);
@@ -110,14 +119,11 @@ void pump(lcm::LCM& lcm, std::chrono::milliseconds how_long) {
 }  // namespace
 
 TEST(LiveRunner, FiresOncePerFiringAndRepeatsDoneForDuplicates) {
-  const std::string url = lcmUrlForPort(uniquePort(1));
   ScalingExpert scaler;
   scaler.onStartUp({});
-  expert::LiveOptions options;
-  options.lcm_url = url;
-  options.process_name = "scaler";
+  expert::LiveOptions options = scalerOptions(1);
   options.heartbeat_period_s = 0.05;
-  options.catch_up = false;
+  const std::string url = options.lcm_url;
   std::atomic<int> exit_code{-1};
   std::thread runner([&] { exit_code = expert::runLive(scaler, options); });
 
@@ -162,14 +168,11 @@ TEST(LiveRunner, FiresOncePerFiringAndRepeatsDoneForDuplicates) {
 }
 
 TEST(LiveRunner, AnswersAWaitingArbiterWithAHeartbeatAtOnce) {
-  const std::string url = lcmUrlForPort(uniquePort(3));
   ScalingExpert scaler;
   scaler.onStartUp({});
-  expert::LiveOptions options;
-  options.lcm_url = url;
-  options.process_name = "scaler";
+  expert::LiveOptions options = scalerOptions(3);
   options.heartbeat_period_s = 30;  // only the first one comes by itself
-  options.catch_up = false;
+  const std::string url = options.lcm_url;
   lcm::LCM lcm(url);
   DoneCollector collector;
   lcm.subscribe(channels::kHeartbeat, &DoneCollector::onHeartbeat, &collector);
@@ -195,14 +198,11 @@ TEST(LiveRunner, AnswersAWaitingArbiterWithAHeartbeatAtOnce) {
 }
 
 TEST(LiveRunner, WaitsForInputsThenFiresAnyway) {
-  const std::string url = lcmUrlForPort(uniquePort(2));
   ScalingExpert scaler;
   scaler.onStartUp({});
-  expert::LiveOptions options;
-  options.lcm_url = url;
-  options.process_name = "scaler";
+  expert::LiveOptions options = scalerOptions(2);
   options.ready_timeout_s = 0.2;
-  options.catch_up = false;
+  const std::string url = options.lcm_url;
   std::thread runner([&] { expert::runLive(scaler, options); });
 
   lcm::LCM lcm(url);
