@@ -29,9 +29,10 @@ struct RunFigures {
   bool completed = false;
 };
 
-RunFigures runOnce(const std::string& scenario, const std::string& out_dir, bool filtered) {
+RunFigures runOnce(const std::string& scenario, const std::string& net, const std::string& out_dir, bool filtered) {
   RunFigures figures;
   std::vector<std::string> args = {beft::ownBinDir() + "/beft-run", scenario, "--out", out_dir};
+  if (!net.empty()) args.insert(args.end(), {"--net", net});
   std::vector<char*> argv;
   for (auto& arg : args) argv.push_back(arg.data());
   argv.push_back(nullptr);
@@ -80,8 +81,11 @@ int main(int argc, char** argv) {
       "several times, alternating the kernel channel filter on and off, and prints the median ticks "
       "per second and times real time of each, and their ratio. Target: >= 50x real time on yard.xml."};
   std::string scenario = "scenarios/yard.xml";
+  std::string net;
   int runs = 3;
   app.add_option("scenario", scenario, "scenario XML file")->capture_default_str()->check(CLI::ExistingFile);
+  app.add_option("--net", net, "Petri net of the schedule (default: the run's, scenarios/nets/default.pnml)")
+      ->check(CLI::ExistingFile);
   app.add_option("--runs", runs, "runs of each variant")->capture_default_str()->check(CLI::Range(1, 100));
   CLI11_PARSE(app, argc, argv);
 
@@ -91,7 +95,7 @@ int main(int argc, char** argv) {
   for (int i = 0; i < runs; ++i) {
     for (int filtered = 1; filtered >= 0; --filtered) {
       const auto out = work / ((filtered ? "filtered-" : "unfiltered-") + std::to_string(i));
-      const RunFigures figures = runOnce(scenario, out.string(), filtered);
+      const RunFigures figures = runOnce(scenario, net, out.string(), filtered);
       if (!figures.ok) {
         std::fprintf(stderr, "run %d (%s) failed: see %s/processes.log\n", i + 1,
                      filtered ? "filtered" : "unfiltered", out.c_str());
@@ -109,8 +113,8 @@ int main(int argc, char** argv) {
     }
   }
   std::filesystem::remove_all(work);
-  std::printf("%s, median of %d runs each (lockstep loop; in brackets with every process started and stopped):\n",
-              scenario.c_str(), runs);
+  std::printf("%s%s, median of %d runs each (lockstep loop; in brackets with every process started and stopped):\n",
+              scenario.c_str(), net.empty() ? "" : (" with " + net).c_str(), runs);
   std::printf("  kernel channel filter on   %6.0f ticks/s  %5.1fx real time (%4.1fx)\n", median(rate[1]),
               median(real[1]), median(overall[1]));
   std::printf("  filter off (baseline)      %6.0f ticks/s  %5.1fx real time (%4.1fx)\n", median(rate[0]),

@@ -399,6 +399,34 @@ TEST(ArbiterCore, SequentialNetRunsOneExpertAtATime) {
                     ticks);
 }
 
+TEST(ArbiterCore, ConcurrentNetStartsEachExpertWhenWhatItReadsIsDone) {
+  const int64_t ticks = 3;
+  Simulation sim(readPnmlFile(kNets + "concurrent.pnml"), testConfig(ticks));
+  sim.expert("vision").duration = [](const beft::fire_t&) { return 0.050; };  // the long one, as in a run
+  sim.run();
+  ASSERT_EQ(sim.core().state(), RunState::Finished) << sim.core().message();
+  const auto& entries = sim.entries();
+  // Each expert after the ones whose output it reads, and nothing more.
+  const std::map<std::string, std::vector<std::string>> after = {
+      {"geometry", {"world"}}, {"vision", {"world"}}, {"audio", {"world"}},
+      {"visual_labels", {"vision", "geometry"}}, {"acoustic_labels", {"audio", "geometry"}},
+      {"dw", {"acoustic_labels"}}, {"fusion", {"visual_labels", "acoustic_labels"}},
+      {"exploration", {"fusion", "dw"}}, {"tasks", {"exploration"}}};
+  for (int64_t k = 0; k < ticks; ++k) {
+    for (const auto& [expert, inputs] : after) {
+      ASSERT_EQ(countOf(entries, 'F', expert, k), 1) << expert << " tick " << k;
+      for (const auto& input : inputs)
+        EXPECT_LT(positionOf(entries, 'D', input, k), positionOf(entries, 'F', expert, k))
+            << expert << " started before " << input << " was done in tick " << k;
+    }
+    // Acoustic labels and dynamic weighting no longer wait for vision.
+    EXPECT_LT(positionOf(entries, 'D', "dw", k), positionOf(entries, 'D', "vision", k)) << "tick " << k;
+    if (k > 0) {
+      EXPECT_LT(positionOf(entries, 'D', "tasks", k - 1), positionOf(entries, 'F', "world", k));
+    }
+  }
+}
+
 TEST(ArbiterCore, RecoversALostFireByResending) {
   Simulation sim(readPnmlFile(kNets + "experts_only.pnml"), testConfig(3));
   // The first three copies of vision's FIRE in tick 1 are lost.

@@ -128,7 +128,7 @@ TEST(NetCheckProcess, DefaultNetIsSafeAndLive) {
   EXPECT_TRUE(contains(run.out, "dead transitions: none")) << run.out;
   EXPECT_TRUE(contains(run.out, "tick end reachable from every reachable marking: yes")) << run.out;
   EXPECT_TRUE(contains(run.out, "result: OK, 1-safe and live")) << run.out;
-  for (const char* other : {"experts_only.pnml", "sequential.pnml"})
+  for (const char* other : {"experts_only.pnml", "sequential.pnml", "concurrent.pnml"})
     EXPECT_EQ(runToEnd({BEFT_NET_CHECK_BIN, kNets + other}).exit_code, 0) << other;
 }
 
