@@ -13,11 +13,11 @@
 #include <beft/bb_snapshot_t.hpp>
 #include <beft/done_t.hpp>
 #include <beft/fire_t.hpp>
-#include <beft/heartbeat_t.hpp>
 #include <beft/run_status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include "channels.hpp"
+#include "heartbeat_thread.hpp"
 #include "log.hpp"
 #include "udpm_filter.hpp"
 
@@ -34,12 +34,6 @@ int64_t wallMicros() {
   return std::chrono::duration_cast<std::chrono::microseconds>(
              std::chrono::system_clock::now().time_since_epoch())
       .count();
-}
-
-std::string hostName() {
-  char buffer[256] = {0};
-  if (gethostname(buffer, sizeof(buffer) - 1) != 0) return "unknown";
-  return buffer;
 }
 
 class LcmOutput : public Output {
@@ -73,35 +67,24 @@ class Runner {
     if (options_.catch_up) requestSnapshot();
 
     log::info("ready: waiting for FIRE on ", options_.lcm_url);
-    sendHeartbeat();
-    auto next_heartbeat = Clock::now() + heartbeatPeriod();
+    heartbeat_.emplace(lcm_, options_.process_name, options_.heartbeat_period_s);
     while (!g_stop_requested && !run_ended_) {
-      const auto now = Clock::now();
-      int timeout_ms = static_cast<int>(
-          std::chrono::duration_cast<std::chrono::milliseconds>(next_heartbeat - now).count());
-      if (pending_ && !pending_fired_) timeout_ms = std::min(timeout_ms, 5);
-      timeout_ms = std::max(0, std::min(timeout_ms, 100));
+      // Short waits while a firing waits for its inputs; else 100 ms, so a signal is seen.
+      const int timeout_ms = pending_ && !pending_fired_ ? 5 : 100;
       if (lcm_.handleTimeout(timeout_ms) < 0) {
         if (g_stop_requested) break;  // the signal interrupted the wait
         log::error("LCM receive failed; stopping");
         return 1;
       }
       servePendingFiring();
-      if (Clock::now() >= next_heartbeat) {
-        sendHeartbeat();
-        next_heartbeat = Clock::now() + heartbeatPeriod();
-      }
     }
+    heartbeat_.reset();
     log::info(run_ended_ ? "run ended: " + run_end_reason_ : std::string("stopped by signal"),
               " (", firings_run_, " firings)");
     return 0;
   }
 
  private:
-  std::chrono::microseconds heartbeatPeriod() const {
-    return std::chrono::microseconds(static_cast<int64_t>(options_.heartbeat_period_s * 1e6));
-  }
-
   void onInput(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
     live_channels_.insert(channel);
     deliver(channel, rbuf->data, static_cast<int>(rbuf->data_size));
@@ -131,6 +114,7 @@ class Runner {
     if (pending_ && !pending_fired_)
       log::warn("FIRE ", pending_->firing_id, " superseded by ", fire->firing_id, " before it ran");
     pending_ = Firing{fire->expert, fire->transition, fire->tick, fire->utime, fire->firing_id};
+    if (heartbeat_) heartbeat_->setState(true, last_fired_id_);
     pending_fired_ = false;
     pending_since_ = Clock::now();
   }
@@ -138,10 +122,10 @@ class Runner {
   void onRunStatus(const lcm::ReceiveBuffer*, const std::string&, const beft::run_status_t* s) {
     // An arbiter that started after this expert's last heartbeat waits for
     // the next one: answer at once (at most every 50 ms) instead.
-    if (s->state == beft::run_status_t::STATE_WAITING &&
+    if (s->state == beft::run_status_t::STATE_WAITING && heartbeat_ &&
         Clock::now() - last_waiting_answer_ > std::chrono::milliseconds(50)) {
       last_waiting_answer_ = Clock::now();
-      sendHeartbeat();
+      heartbeat_->sendNow();
     }
     if (s->state == beft::run_status_t::STATE_FINISHED || s->state == beft::run_status_t::STATE_FAILED) {
       run_ended_ = true;
@@ -177,6 +161,8 @@ class Runner {
     }
     ++firings_run_;
     pending_fired_ = true;
+    last_fired_id_ = pending_->firing_id;
+    if (heartbeat_) heartbeat_->setState(false, last_fired_id_);
     last_done_.utime = pending_->utime;
     last_done_.expert = options_.process_name;
     last_done_.tick = pending_->tick;
@@ -190,17 +176,6 @@ class Runner {
   }
 
   void resendDone() { lcm_.publish(channels::kDone, &last_done_); }
-
-  void sendHeartbeat() {
-    beft::heartbeat_t beat;
-    beat.utime = wallMicros();
-    beat.process = options_.process_name;
-    beat.pid = static_cast<int32_t>(getpid());
-    beat.host = host_;
-    beat.last_firing_id = pending_fired_ && pending_ ? pending_->firing_id : -1;
-    beat.state = pending_ && !pending_fired_ ? "firing" : "idle";
-    lcm_.publish(channels::kHeartbeat, &beat);
-  }
 
   // Only this expert's inputs, its own FIREs, the run status and its snapshot
   // answer wake it up; everything else is dropped in the kernel.
@@ -263,13 +238,14 @@ class Runner {
   LiveOptions options_;
   lcm::LCM& lcm_;
   LcmOutput output_;
-  std::string host_ = hostName();
   std::set<std::string> read_channels_, live_channels_;
   std::map<std::string, int64_t> unhandled_;
   std::optional<Firing> pending_;
   bool pending_fired_ = false;
   Clock::time_point pending_since_;
   Clock::time_point last_waiting_answer_;
+  int64_t last_fired_id_ = -1;
+  std::optional<HeartbeatThread> heartbeat_;  // from the start of the loop to its end
   beft::done_t last_done_;
   int64_t firings_run_ = 0;
   bool run_ended_ = false;

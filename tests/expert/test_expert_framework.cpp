@@ -63,6 +63,23 @@ class ScalingExpert : public expert::Expert {
   blackboard::ChannelHistory<beft::robot_state_t> states_;
 };
 
+// Reads nothing and takes a second per firing, like the task executor waiting for a plan.
+class SlowExpert : public expert::Expert {
+ public:
+  std::string name() const override { return "slow"; }
+  std::string description() const override { return "test expert"; }
+  std::vector<expert::ChannelSpec> reads() const override { return {}; }
+  std::vector<expert::ChannelSpec> writes() const override { return {}; }
+  std::vector<std::vector<std::string>> parameterHelp() const override { return {}; }
+  void onStartUp(const expert::Parameters&) override {}
+  bool onMessage(const std::string&, const void*, int) override { return false; }
+  bool inputsReady(const expert::Firing&) const override { return true; }
+  expert::Outcome fire(const expert::Firing&, expert::Output&) override {
+    std::this_thread::sleep_for(1s);
+    return expert::Outcome::success();
+  }
+};
+
 int uniquePort(int offset) { return 21000 + (getpid() * 7 + offset) % 9000; }
 
 beft::robot_state_t stateAt(int64_t tick, double x) {
@@ -96,10 +113,12 @@ struct DoneCollector {
     std::lock_guard<std::mutex> lock(mutex);
     scaled.push_back(*s);
   }
-  void onHeartbeat(const lcm::ReceiveBuffer*, const std::string&, const beft::heartbeat_t*) {
+  void onHeartbeat(const lcm::ReceiveBuffer*, const std::string&, const beft::heartbeat_t* h) {
     std::lock_guard<std::mutex> lock(mutex);
     ++heartbeats;
+    beats.push_back(*h);
   }
+  std::vector<beft::heartbeat_t> beats;
 };
 
 // The options of a live "scaler" on its own port, without blackboard catch-up.
@@ -195,6 +214,36 @@ TEST(LiveRunner, AnswersAWaitingArbiterWithAHeartbeatAtOnce) {
   end.state = beft::run_status_t::STATE_FINISHED;
   lcm.publish(channels::kRunStatus, &end);
   runner.join();
+}
+
+TEST(LiveRunner, KeepsItsHeartbeatDuringALongFiring) {
+  SlowExpert slow;
+  expert::LiveOptions options = scalerOptions(4);
+  options.process_name = "slow";
+  options.heartbeat_period_s = 0.1;
+  lcm::LCM lcm(options.lcm_url);
+  DoneCollector collector;
+  lcm.subscribe(channels::kHeartbeat, &DoneCollector::onHeartbeat, &collector);
+  lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
+  std::thread runner([&] { expert::runLive(slow, options); });
+  pump(lcm, 200ms);
+  const auto fire = fireToken("slow", 1, 7);
+  lcm.publish(channels::kFire, &fire);
+  pump(lcm, 1400ms);
+  beft::run_status_t end{};
+  end.state = beft::run_status_t::STATE_FINISHED;
+  lcm.publish(channels::kRunStatus, &end);
+  runner.join();
+
+  std::lock_guard<std::mutex> lock(collector.mutex);
+  ASSERT_EQ(collector.done.size(), 1u);
+  int firing = 0;
+  for (const auto& beat : collector.beats) firing += beat.state == "firing";
+  EXPECT_GE(firing, 5) << "heartbeats stopped while the expert worked on its firing";
+  ASSERT_FALSE(collector.beats.empty());
+  EXPECT_EQ(collector.beats.back().state, "idle");
+  EXPECT_EQ(collector.beats.back().last_firing_id, 7);
+  EXPECT_EQ(collector.beats.front().last_firing_id, -1);
 }
 
 TEST(LiveRunner, WaitsForInputsThenFiresAnyway) {
