@@ -116,7 +116,7 @@ LaunchSpec loadLaunchFile(const std::string& path, const std::map<std::string, s
       }
     }
     if (const char* g = e->Attribute("group")) p.group = g;
-    if (const char* h = e->Attribute("host")) p.host = h;
+    if (const char* h = e->Attribute("host")) p.host = substitute(h, spec.args, path, p.line);
     if (const char* r = e->Attribute("restart")) {
       const std::string policy = r;
       if (policy == "never") p.restart = RestartPolicy::Never;

@@ -138,6 +138,26 @@ TEST(Supervisor, ExceptAndOtherHostsAreNotStarted) {
   EXPECT_NE(log.find("not starting remote: it runs on host 'robot2'"), std::string::npos) << log;
 }
 
+TEST(Supervisor, HostsCanBeLaunchArguments) {
+  TempDir dir;
+  const std::string marker = dir.path + "/ran";
+  const auto file = dir.write("run.xml", R"(<launch>
+  <arg name="expert_host" default="local"/>
+  <process name="expert" command="touch" args=")" + marker + R"(" host="${expert_host}" lcm_url="0"/>
+  <process name="arbiter" command="sleep" args="0.3" role="arbiter" lcm_url="0"/>
+</launch>)");
+  SupervisorOptions options;
+  options.quiet_children = true;
+  options.output_file = dir.path + "/out.log";
+  const auto moved = loadLaunchFile(file, {{"expert_host", "robot"}});
+  EXPECT_EQ(moved.processes[0].host, "robot");
+  supervise(moved, options);
+  EXPECT_NE(access(marker.c_str(), F_OK), 0) << "started on the wrong host";
+  EXPECT_NE(readAll(options.output_file).find("not starting expert: it runs on host 'robot'"), std::string::npos);
+  supervise(loadLaunchFile(file, {}), options);  // the default: this machine
+  EXPECT_EQ(access(marker.c_str(), F_OK), 0);
+}
+
 TEST(Supervisor, ReportsAFailedArbiter) {
   TempDir dir;
   const auto file = dir.write("run.xml",

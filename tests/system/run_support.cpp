@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <poll.h>
 #include <fcntl.h>
 #include <stdexcept>
@@ -81,6 +82,40 @@ nlohmann::json readJson(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path);
   return nlohmann::json::parse(in);
+}
+
+std::map<DataKey, std::vector<uint8_t>> dataMessages(const std::vector<LoggedMessage>& log) {
+  static const std::set<std::string> kDataChannels = {
+      "GT_OBJECTS",      "ROBOT_STATE",     "CAMERA_COLOR", "CAMERA_DEPTH",    "CAMERA_INSTANCE", "GEOMETRY",
+      "VISION",          "OBSTACLE_MAP",    "AUDIO",        "LABELS_VISUAL",   "LABELS_ACOUSTIC", "HYPOTHESES",
+      "DYNAMIC_WEIGHTS", "TASK_STACK",      "TASK_COMMAND", "ROBOT_CMD",       "PLAN_REQUEST"};
+  std::map<DataKey, std::vector<uint8_t>> messages;
+  std::map<std::pair<std::string, int64_t>, int> count;
+  for (const auto& event : log) {
+    if (!kDataChannels.count(event.channel) || event.data.size() < 16) continue;
+    int64_t utime = 0;  // the first field after the 8-byte fingerprint, big-endian
+    for (int i = 8; i < 16; ++i) utime = (utime << 8) | event.data[i];
+    const int order = count[{event.channel, utime}]++;
+    messages[{event.channel, utime, order}] = event.data;
+  }
+  return messages;
+}
+
+DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected_log,
+                                   const std::vector<LoggedMessage>& actual_log) {
+  const auto expected = dataMessages(expected_log);
+  const auto actual = dataMessages(actual_log);
+  DataComparison result;
+  result.expected = expected.size();
+  for (const auto& [key, data] : expected) {
+    const auto it = actual.find(key);
+    if (it == actual.end()) continue;
+    ++result.compared;
+    if (it->second == data) continue;
+    if (++result.differing == 1)
+      result.first_difference = std::get<0>(key) + " at t = " + std::to_string(std::get<1>(key) * 1e-6) + " s";
+  }
+  return result;
 }
 
 std::string lineAfter(const std::string& output, const std::string& prefix) {

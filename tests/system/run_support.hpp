@@ -6,6 +6,7 @@
 
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace beft::system_test {
@@ -45,6 +46,18 @@ std::vector<Message> messagesOn(const std::vector<LoggedMessage>& log, const std
 }
 
 nlohmann::json readJson(const std::string& path);
+
+// What two runs are compared by: every message of the data channels (the
+// world's, the experts', the task stack's), keyed by (channel, utime, order
+// within that utime), so a datagram one recorder lost shifts nothing.
+using DataKey = std::tuple<std::string, int64_t, int>;
+std::map<DataKey, std::vector<uint8_t>> dataMessages(const std::vector<LoggedMessage>& log);
+
+struct DataComparison {
+  std::size_t expected = 0, compared = 0, differing = 0;
+  std::string first_difference;  // "CHANNEL at t = S s", or ""
+};
+DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected, const std::vector<LoggedMessage>& actual);
 
 // The first line of `output` that starts with `prefix`, without it; "" if none.
 std::string lineAfter(const std::string& output, const std::string& prefix);
