@@ -3,6 +3,7 @@
 // objects, for each render method, with brute force as the baseline.
 #include <time.h>
 
+#include <chrono>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -88,6 +89,23 @@ double framesPerSecond(const BenchScene& scene, RenderMethod method, double seco
   return frames / elapsed;
 }
 
+// Frames per wall-clock second on `threads` threads (their CPU time would hide the gain).
+double wallFramesPerSecond(const BenchScene& scene, int threads, double seconds) {
+  RayCaster caster;
+  caster.setThreads(threads);
+  RenderedFrame frame;
+  caster.render(scene.geometry, scene.cameras[0], frame);
+  const auto start = std::chrono::steady_clock::now();
+  int frames = 0;
+  double elapsed = 0;
+  while (frames < 3 || elapsed < seconds) {
+    caster.render(scene.geometry, scene.cameras[frames % scene.cameras.size()], frame);
+    ++frames;
+    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return frames / elapsed;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -149,6 +167,17 @@ int main(int argc, char** argv) {
     const BenchScene scene = randomScene(count, width, height, 160, 120, seed);
     std::printf("%8d objects: %10.1f frames/s\n", count,
                 framesPerSecond(scene, RenderMethod::Projection, seconds, 3, true, fixed_frames));
+  }
+  std::printf("\nProjection render over threads (frames per wall-clock second, 1 and 2 threads alternately;\n"
+              "the ratio is what the world gains when a second core is free), 160x120:\n");
+  for (int count : object_counts) {
+    const BenchScene scene = randomScene(count, width, height, 160, 120, seed);
+    double best[2] = {0, 0};
+    for (int round = 0; round < 3; ++round)
+      for (int threads = 1; threads <= 2; ++threads)
+        best[threads - 1] = std::max(best[threads - 1], wallFramesPerSecond(scene, threads, seconds / 3));
+    std::printf("%8d objects: %10.1f/s on 1 thread, %10.1f/s on 2, ratio %.2f\n", count, best[0], best[1],
+                best[1] / best[0]);
   }
   return 0;
 }

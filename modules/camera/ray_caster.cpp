@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 
 #include <Eigen/Geometry>
 
@@ -88,12 +90,11 @@ void RayCaster::prepareCamera(const Camera& camera) {
   }
 }
 
-void RayCaster::prepareRays(const Camera& camera) {
-  prepareCamera(camera);
+void RayCaster::prepareRayRows(int first_row, int end_row) {
   const CameraFrame& f = camera_frame_;
   // Locals and raw pointers: stores to the arrays cannot alias them, so the
   // compiler keeps them in registers.
-  const double range = camera.intrinsics.range;
+  const double range = camera_.intrinsics.range;
   const double oz = f.origin.z();
   const double left_x = f.left.x(), left_y = f.left.y();
   const double* column_a = column_a_.data();
@@ -105,7 +106,7 @@ void RayCaster::prepareRays(const Camera& camera) {
   double* nearest_t = nearest_t_.data();
   uint8_t* hits_ground = hits_ground_.data();
   int32_t* nearest_solid = nearest_solid_.data();
-  for (int v = 0; v < height_; ++v) {
+  for (int v = first_row; v < end_row; ++v) {
     // Same summation order as imagePointRay: (forward + b up) + a left.
     const double b = row_b_[v];
     const double row_x = f.forward.x() + b * f.up.x(), row_y = f.forward.y() + b * f.up.y(),
@@ -205,7 +206,7 @@ bool RayCaster::projectSolid(const Solid& solid, SolidFootprint& footprint) cons
   return footprint.u0 <= footprint.u1 && footprint.v0 <= footprint.v1;
 }
 
-void RayCaster::castProjection(const SceneGeometry& scene) {
+std::vector<RayCaster::SolidFootprint> RayCaster::visibleFootprints(const SceneGeometry& scene) const {
   const std::vector<Solid>& solids = scene.solids();
   std::vector<SolidFootprint> visible;
   visible.reserve(solids.size());
@@ -218,11 +219,18 @@ void RayCaster::castProjection(const SceneGeometry& scene) {
   std::sort(visible.begin(), visible.end(), [](const SolidFootprint& a, const SolidFootprint& b) {
     return a.min_depth < b.min_depth || (a.min_depth == b.min_depth && a.solid < b.solid);
   });
+  return visible;
+}
+
+void RayCaster::castProjectionRows(const SceneGeometry& scene, const std::vector<SolidFootprint>& visible,
+                                   int first_row, int end_row) {
+  const std::vector<Solid>& solids = scene.solids();
   const Eigen::Vector3d& o = camera_frame_.origin;
   LineInterval interval;
   for (const SolidFootprint& footprint : visible) {
     const Solid& solid = solids[footprint.solid];
-    for (int v = footprint.v0; v <= footprint.v1; ++v) {
+    const int v_end = std::min(footprint.v1 + 1, end_row);
+    for (int v = std::max(footprint.v0, first_row); v < v_end; ++v) {
       for (int u = footprint.u0; u <= footprint.u1; ++u) {
         const size_t p = static_cast<size_t>(v) * width_ + u;
         if (nearest_t_[p] < footprint.min_depth) continue;  // something nearer covers it
@@ -256,7 +264,7 @@ void RayCaster::castPerRay(const SceneGeometry& scene, bool use_grid) {
   }
 }
 
-void RayCaster::shade(const SceneGeometry& scene, RenderedFrame& frame) const {
+void RayCaster::prepareFrame(const SceneGeometry& scene, RenderedFrame& frame) {
   const size_t pixels = static_cast<size_t>(width_) * height_;
   frame.camera = camera_;
   frame.width = width_;
@@ -264,12 +272,18 @@ void RayCaster::shade(const SceneGeometry& scene, RenderedFrame& frame) const {
   frame.depth.resize(pixels);
   frame.object.resize(pixels);
   frame.rgb.resize(3 * pixels);
+  // The solid colours once, not per pixel.
+  solid_colours_.clear();
+  solid_colours_.reserve(scene.solids().size());
+  for (const Solid& solid : scene.solids()) {
+    const Rgb colour = unpack(solid.color_rgb);
+    solid_colours_.push_back({colour.r, colour.g, colour.b});
+  }
+}
+
+void RayCaster::shadeRows(const SceneGeometry& scene, RenderedFrame& frame, int first_row, int end_row) const {
   const Eigen::Vector3d& o = camera_frame_.origin;
   const float inv_range = static_cast<float>(1.0 / camera_.intrinsics.range);
-  // The solid colours once, not per pixel.
-  std::vector<Rgb> colours;
-  colours.reserve(scene.solids().size());
-  for (const Solid& solid : scene.solids()) colours.push_back(unpack(solid.color_rgb));
 
   // Locals and raw pointers: the byte stores below may alias anything, so
   // without them every member would be reloaded per pixel.
@@ -283,7 +297,7 @@ void RayCaster::shade(const SceneGeometry& scene, RenderedFrame& frame) const {
   const double* nearest_t = nearest_t_.data();
   const Face* nearest_face = nearest_face_.data();
   const Solid* solids = scene.solids().data();
-  const Rgb* solid_colours = colours.data();
+  const auto* solid_colours = solid_colours_.data();
   float* depth = frame.depth.data();
   int32_t* object = frame.object.data();
   uint8_t* rgb = frame.rgb.data();
@@ -293,7 +307,8 @@ void RayCaster::shade(const SceneGeometry& scene, RenderedFrame& frame) const {
     rgb[3 * p + 1] = static_cast<uint8_t>(std::min(g, 255.0f) + 0.5f);
     rgb[3 * p + 2] = static_cast<uint8_t>(std::min(b, 255.0f) + 0.5f);
   };
-  for (size_t p = 0; p < pixels; ++p) {
+  const size_t first_pixel = static_cast<size_t>(first_row) * width_, end_pixel = static_cast<size_t>(end_row) * width_;
+  for (size_t p = first_pixel; p < end_pixel; ++p) {
     const int s = nearest_solid[p];
     if (s < 0 && !hits_ground[p]) {
       // Sky: haze at and below the horizon, bluer towards the zenith.
@@ -317,7 +332,7 @@ void RayCaster::shade(const SceneGeometry& scene, RenderedFrame& frame) const {
       const double facing = -normal.dot(d) * inverse_length[p];
       light = kAmbient + kSun * static_cast<float>(std::max(0.0, normal.dot(kLight))) +
               kHeadlight * static_cast<float>(std::max(0.0, facing));
-      colour = solid_colours[s];
+      colour = {solid_colours[s][0], solid_colours[s][1], solid_colours[s][2]};
       object[p] = solid.object_index;
     } else {
       // Ground with a faint 1 m checker, so motion over it shows.
@@ -335,24 +350,35 @@ void RayCaster::shade(const SceneGeometry& scene, RenderedFrame& frame) const {
 
 void RayCaster::render(const SceneGeometry& scene, const Camera& camera, RenderedFrame& frame,
                        RenderMethod method) {
-  prepareRays(camera);
-  switch (method) {
-    case RenderMethod::Projection:
-      castProjection(scene);
-      break;
-    case RenderMethod::GridTraversal:
-      castPerRay(scene, true);
-      break;
-    case RenderMethod::BruteForce:
-      castPerRay(scene, false);
-      break;
+  prepareCamera(camera);
+  prepareFrame(scene, frame);
+  if (method == RenderMethod::Projection) {
+    // Bands of rows at once: each stage of a pixel needs only that pixel.
+    const std::vector<SolidFootprint> visible = visibleFootprints(scene);
+    const std::function<void(int, int)> band = [&](int first_row, int end_row) {
+      prepareRayRows(first_row, end_row);
+      castProjectionRows(scene, visible, first_row, end_row);
+      shadeRows(scene, frame, first_row, end_row);
+    };
+    if (workers_) workers_->run(height_, band);
+    else band(0, height_);
+    return;
   }
-  shade(scene, frame);
+  prepareRayRows(0, height_);
+  castPerRay(scene, method == RenderMethod::GridTraversal);
+  shadeRows(scene, frame, 0, height_);
 }
+
+void RayCaster::setThreads(int threads) {
+  if (threads <= 1) workers_.reset();
+  else if (!workers_ || workers_->threads() != threads) workers_ = std::make_unique<RowWorkers>(threads);
+}
+
+int RayCaster::threads() const { return workers_ ? workers_->threads() : 1; }
 
 std::vector<int> RayCaster::expectedPixelsPerObject(const SceneGeometry& scene, const Camera& camera) {
   // Rays only inside each solid's footprint, by the same formula (and order
-  // of operations) as prepareRays, so the counts are those of full rays.
+  // of operations) as prepareRayRows, so the counts are those of full rays.
   prepareCamera(camera);
   std::vector<int> counts(std::max(scene.objectCount(), 0), 0);
   const CameraFrame& f = camera_frame_;

@@ -16,10 +16,13 @@
 // - BruteForce: every solid for every ray (the baseline).
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "camera_model.hpp"
+#include "row_workers.hpp"
 #include "scene_geometry.hpp"
 
 namespace beft::camera {
@@ -39,11 +42,16 @@ struct RenderedFrame {
   // Pixels are row-major, row 0 at the top: pixel (u, v) is element v * width + u.
 };
 
-// Keeps per-pixel buffers between frames; one instance per thread.
+// Keeps per-pixel buffers between frames; one instance per thread (it may
+// use helper threads of its own, see setThreads).
 class RayCaster {
  public:
   void render(const SceneGeometry& scene, const Camera& camera, RenderedFrame& frame,
               RenderMethod method = RenderMethod::Projection);
+  // Threads a Projection render splits its rows over (1: the caller's only).
+  // The image is the same for any count.
+  void setThreads(int threads);
+  int threads() const;
   // For each object index, the number of pixels whose ray meets that object
   // within range if every other object were absent (the denominator of the
   // visual occlusion O_v). Objects without a solid get 0.
@@ -53,12 +61,17 @@ class RayCaster {
   struct SolidFootprint;  // a solid's covered pixel rectangle and nearest depth
   // The camera's frame, frustum and per-intrinsics tables.
   void prepareCamera(const Camera& camera);
-  // prepareCamera, then every pixel's ray and distance limit.
-  void prepareRays(const Camera& camera);
+  // Every pixel's ray and distance limit, for rows [first_row, end_row).
+  void prepareRayRows(int first_row, int end_row);
   bool projectSolid(const Solid& solid, SolidFootprint& footprint) const;
-  void castProjection(const SceneGeometry& scene);
+  // The solids in view, nearest first, with the pixels they can cover.
+  std::vector<SolidFootprint> visibleFootprints(const SceneGeometry& scene) const;
+  void castProjectionRows(const SceneGeometry& scene, const std::vector<SolidFootprint>& visible, int first_row,
+                          int end_row);
   void castPerRay(const SceneGeometry& scene, bool use_grid);
-  void shade(const SceneGeometry& scene, RenderedFrame& frame) const;
+  // The frame's size and buffers, and the solids' colours.
+  void prepareFrame(const SceneGeometry& scene, RenderedFrame& frame);
+  void shadeRows(const SceneGeometry& scene, RenderedFrame& frame, int first_row, int end_row) const;
 
   Camera camera_;
   CameraFrame camera_frame_{Camera{}};
@@ -76,6 +89,8 @@ class RayCaster {
   std::vector<double> nearest_t_;
   std::vector<int32_t> nearest_solid_;
   std::vector<Face> nearest_face_;
+  std::vector<std::array<float, 3>> solid_colours_;  // RGB per solid of the frame being rendered
+  std::unique_ptr<RowWorkers> workers_;  // none: one thread
 };
 
 // One-off helpers (allocate a RayCaster each call).

@@ -45,7 +45,7 @@ int runFreeRunning(int argc, char** argv, beft::world::WorldExpert& world) {
   app.add_option("--ticks", options.last_tick, "stop after this tick (default: the scenario's end)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--lcm-url", options.lcm_url, "LCM URL (env BEFT_LCM_URL)")->capture_default_str();
-  app.add_option("--param", parameter_args, "parameter NAME=VALUE (repeatable): depth_noise");
+  app.add_option("--param", parameter_args, "parameter NAME=VALUE (repeatable): depth_noise, render_threads");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -58,7 +58,7 @@ int runFreeRunning(int argc, char** argv, beft::world::WorldExpert& world) {
   for (const std::string& arg : parameter_args) {
     const auto eq = arg.find('=');
     if (eq == std::string::npos || eq == 0 || !known.count(arg.substr(0, eq))) {
-      beft::log::error("--param '", arg, "' is not NAME=VALUE with a known NAME (known: depth_noise)");
+      beft::log::error("--param '", arg, "' is not NAME=VALUE with a known NAME (known: depth_noise, render_threads)");
       return 2;
     }
     parameters.set(arg.substr(0, eq), arg.substr(eq + 1));

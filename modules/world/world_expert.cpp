@@ -31,7 +31,8 @@ std::vector<beft::expert::ChannelSpec> WorldExpert::writes() const {
 
 std::vector<std::vector<std::string>> WorldExpert::parameterHelp() const {
   return {{"depth_noise", "0",
-           "depth noise: standard deviation depth_noise * depth^2 [m], seeded by --seed and the tick"}};
+           "depth noise: standard deviation depth_noise * depth^2 [m], seeded by --seed and the tick"},
+          {"render_threads", "2", "threads the camera renders on (1 to 16); the images are the same for any count"}};
 }
 
 void WorldExpert::onStartUp(const beft::expert::Parameters& parameters) {
@@ -41,6 +42,9 @@ void WorldExpert::onStartUp(const beft::expert::Parameters& parameters) {
   if (!(options.depth_noise >= 0) || !std::isfinite(options.depth_noise)) {
     throw std::invalid_argument("depth_noise must be finite and >= 0");
   }
+  const int64_t threads = parameters.getInt("render_threads", 2);
+  if (threads < 1 || threads > 16) throw std::invalid_argument("render_threads must be from 1 to 16");
+  options.render_threads = static_cast<int>(threads);
   try {
     scenario_ = std::make_unique<scenario::Scenario>(scenario::loadScenario(scenario_path));
   } catch (const scenario::ScenarioError& e) {

@@ -57,6 +57,7 @@ WorldSimulation::WorldSimulation(const scenario::Scenario& scenario, const World
       timeline_(std::make_unique<SceneTimeline>(scenario_)),
       robot_(scenario_.robot, scenario_.world) {
   for (const scenario::Object& object : scenario_.objects) object_ids_.push_back(object.id);
+  caster_.setThreads(options_.render_threads);
   geometry_ = camera::SceneGeometry::fromObjects(timeline_->objects());
   notes_ = timeline_->startupNotes();
   for (const std::string& change : timeline_->changes()) notes_.push_back(change);

@@ -33,6 +33,9 @@ struct WorldOptions {
   // Depth noise: Gaussian with standard deviation depth_noise * depth^2 [m]
   // (grows with the square of depth, like structured-light sensors); 0 = exact.
   double depth_noise = 0;
+  // Threads the camera renders on: the world steps while every expert waits
+  // for it, so a second core is mostly free then.
+  int render_threads = 2;
 };
 
 class WorldSimulation {

@@ -182,6 +182,35 @@ TEST(Camera, RenderMethodsGiveIdenticalImages) {
   }
 }
 
+TEST(Camera, ThreadCountDoesNotChangeTheImage) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> position(0.0, 30.0), size(0.2, 3.0), angle(0.0, 360.0);
+  SceneGeometry scene;
+  for (int i = 0; i < 60; ++i)
+    scene.addBox(i, position(random), position(random), 0.0, angle(random), size(random), size(random), size(random));
+  scene.buildIndex();
+  RayCaster one, two, three;
+  two.setThreads(2);
+  three.setThreads(3);
+  EXPECT_EQ(one.threads(), 1);
+  EXPECT_EQ(two.threads(), 2);
+  for (int view = 0; view < 8; ++view) {
+    Camera camera = levelCamera(position(random), position(random), 1.6, angle(random), view * 4.0 - 14.0);
+    if (view == 7) camera.intrinsics.height = 5;  // fewer rows than a band each would need: one thread
+    RenderedFrame a, b, c, brute;
+    one.render(scene, camera, a);
+    two.render(scene, camera, b);
+    three.render(scene, camera, c);
+    one.render(scene, camera, brute, RenderMethod::BruteForce);
+    EXPECT_EQ(a.object, b.object) << "view " << view;
+    EXPECT_EQ(a.depth, b.depth) << "view " << view;
+    EXPECT_EQ(a.rgb, b.rgb) << "view " << view;
+    EXPECT_EQ(a.rgb, c.rgb) << "view " << view;
+    EXPECT_EQ(b.object, brute.object) << "view " << view;
+    EXPECT_EQ(b.depth, brute.depth) << "view " << view;
+  }
+}
+
 TEST(SceneGeometry, SegmentsAreBlockedBySolidsTheyCross) {
   SceneGeometry scene;
   scene.setObjectCount(3);
