@@ -149,22 +149,35 @@ TEST(Camera, BackProjectionInvertsTheRenderer) {
   EXPECT_GT(pixelRay(levelCamera(0, 0, 1, 0), 0, 60).y(), 0);
 }
 
-TEST(Camera, RenderMethodsGiveIdenticalImages) {
-  std::mt19937 random(42);
-  std::uniform_real_distribution<double> position(0.0, 30.0), size(0.2, 3.0), angle(0.0, 360.0);
+// Random cylinders and boxes (some raised) over a 30 m yard, and random views of it.
+struct RandomYard {
+  std::mt19937 random;
+  std::uniform_real_distribution<double> position{0.0, 30.0}, size{0.2, 3.0}, angle{0.0, 360.0};
   SceneGeometry scene;
-  for (int i = 0; i < 120; ++i) {
-    if (i % 3 == 0) {
-      scene.addCylinder(i, position(random), position(random), 0.0, 0.5 * size(random), 2 * size(random));
-    } else {
-      scene.addBox(i, position(random), position(random), i % 7 == 0 ? 1.0 : 0.0, angle(random), size(random),
-                   size(random), size(random));
+
+  RandomYard(unsigned seed, int objects) : random(seed) {
+    for (int i = 0; i < objects; ++i) {
+      if (i % 3 == 0) {
+        scene.addCylinder(i, position(random), position(random), 0.0, 0.5 * size(random), 2 * size(random));
+      } else {
+        scene.addBox(i, position(random), position(random), i % 7 == 0 ? 1.0 : 0.0, angle(random), size(random),
+                     size(random), size(random));
+      }
     }
+    scene.buildIndex();
   }
-  scene.buildIndex();
+  Camera view(double pitch_deg) {
+    const double x = position(random), y = position(random);
+    return levelCamera(x, y, 1.6, angle(random), pitch_deg);
+  }
+};
+
+TEST(Camera, RenderMethodsGiveIdenticalImages) {
+  RandomYard yard(42, 120);
+  const SceneGeometry& scene = yard.scene;
   RayCaster caster;
   for (int view = 0; view < 6; ++view) {
-    const Camera camera = levelCamera(position(random), position(random), 1.6, angle(random), view * 5.0 - 12.0);
+    const Camera camera = yard.view(view * 5.0 - 12.0);
     RenderedFrame projection, grid, brute;
     caster.render(scene, camera, projection, RenderMethod::Projection);
     caster.render(scene, camera, grid, RenderMethod::GridTraversal);
@@ -183,19 +196,15 @@ TEST(Camera, RenderMethodsGiveIdenticalImages) {
 }
 
 TEST(Camera, ThreadCountDoesNotChangeTheImage) {
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> position(0.0, 30.0), size(0.2, 3.0), angle(0.0, 360.0);
-  SceneGeometry scene;
-  for (int i = 0; i < 60; ++i)
-    scene.addBox(i, position(random), position(random), 0.0, angle(random), size(random), size(random), size(random));
-  scene.buildIndex();
+  RandomYard yard(7, 60);
+  const SceneGeometry& scene = yard.scene;
   RayCaster one, two, three;
   two.setThreads(2);
   three.setThreads(3);
   EXPECT_EQ(one.threads(), 1);
   EXPECT_EQ(two.threads(), 2);
   for (int view = 0; view < 8; ++view) {
-    Camera camera = levelCamera(position(random), position(random), 1.6, angle(random), view * 4.0 - 14.0);
+    Camera camera = yard.view(view * 4.0 - 14.0);
     if (view == 7) camera.intrinsics.height = 5;  // fewer rows than a band each would need: one thread
     RenderedFrame a, b, c, brute;
     one.render(scene, camera, a);
