@@ -94,40 +94,58 @@ std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal) {
 std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal, GridCell start, double slack,
                                         double margin) {
   const int w = grid.width();
-  const size_t n = static_cast<size_t>(w) * grid.height();
-  std::vector<double> dist(n, kInfinity);
+  const int h = grid.height();
+  std::vector<double> dist(static_cast<size_t>(w) * h, kInfinity);
   if (grid.blocked(goal.x, goal.y)) return dist;
+  // The wavefront runs on a copy framed by a ring of blocked cells: no
+  // bounds check in the inner loop, and a move is a fixed index offset.
+  const int pw = w + 2;
+  const size_t padded_cells = static_cast<size_t>(pw) * (h + 2);
+  const auto padded = [pw](int x, int y) { return static_cast<int32_t>((y + 1) * pw + x + 1); };
+  std::vector<uint8_t> open(padded_cells, 0);  // 1 = free
+  const std::vector<uint8_t>& cells = grid.cells();
+  for (int y = 0; y < h; ++y) {
+    const uint8_t* row = cells.data() + static_cast<size_t>(y) * w;
+    uint8_t* out = open.data() + padded(0, y);
+    for (int x = 0; x < w; ++x) out[x] = row[x] == 0;
+  }
+  int32_t offset[8], side_x[8], side_y[8];
+  for (int m = 0; m < 8; ++m) {
+    offset[m] = kMoves[m].dx + kMoves[m].dy * pw;
+    // A diagonal passes between the cells beside it; a straight move checks its target twice.
+    side_x[m] = kMoves[m].dy != 0 && kMoves[m].dx != 0 ? kMoves[m].dx : offset[m];
+    side_y[m] = kMoves[m].dy != 0 && kMoves[m].dx != 0 ? kMoves[m].dy * pw : offset[m];
+  }
+  std::vector<double> field(padded_cells, kInfinity);
   // Dial's algorithm: buckets one cell wide. Every step costs at least 1, so
   // expanding bucket k only fills later buckets and the labels in bucket k
   // are final when it is expanded. A label lies within sqrt(2) of its
   // parent's, so a ring of 4 buckets suffices.
   constexpr int kRing = 4;
   std::vector<std::vector<int32_t>> ring(kRing);
-  std::vector<uint8_t> done(n, 0);
-  const int32_t goal_index = static_cast<int32_t>(grid.index(goal.x, goal.y));
-  dist[goal_index] = 0;
+  std::vector<uint8_t> done(padded_cells, 0);
+  const int32_t goal_index = padded(goal.x, goal.y);
+  field[goal_index] = 0;
   ring[0].push_back(goal_index);
   size_t queued = 1;
-  const int32_t start_index = grid.inside(start.x, start.y) ? static_cast<int32_t>(grid.index(start.x, start.y)) : -1;
+  const int32_t start_index = grid.inside(start.x, start.y) ? padded(start.x, start.y) : -1;
   double limit = kInfinity;
   for (int64_t k = 0; queued > 0 && k <= limit; ++k) {
-    std::vector<int32_t>& bucket = ring[k % kRing];
+    std::vector<int32_t>& bucket = ring[k & (kRing - 1)];
     for (size_t i = 0; i < bucket.size(); ++i) {
       const int32_t index = bucket[i];
       // Skip cells finished already or since moved to an earlier bucket.
-      if (done[index] || static_cast<int64_t>(dist[index]) != k) continue;
+      if (done[index] || static_cast<int64_t>(field[index]) != k) continue;
       done[index] = 1;
-      if (index == start_index) limit = slack * dist[index] + margin;
-      const int x = index % w;
-      const int y = index / w;
-      for (const Move& m : kMoves) {
+      if (index == start_index) limit = slack * field[index] + margin;
+      for (int m = 0; m < 8; ++m) {
         // Moves are symmetric, so distances to the goal equal distances from it.
-        if (!moveAllowed(grid, x, y, m)) continue;
-        const int32_t next = static_cast<int32_t>(grid.index(x + m.dx, y + m.dy));
-        const double cost = dist[index] + m.cost;
-        if (cost < dist[next]) {
-          dist[next] = cost;
-          ring[static_cast<int64_t>(cost) % kRing].push_back(next);
+        const int32_t next = index + offset[m];
+        if (!(open[next] & open[index + side_x[m]] & open[index + side_y[m]])) continue;
+        const double cost = field[index] + kMoves[m].cost;
+        if (cost < field[next]) {
+          field[next] = cost;
+          ring[static_cast<int64_t>(cost) & (kRing - 1)].push_back(next);
           ++queued;
         }
       }
@@ -135,6 +153,8 @@ std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal, Grid
     queued -= bucket.size();
     bucket.clear();
   }
+  for (int y = 0; y < h; ++y)
+    std::copy_n(field.data() + padded(0, y), w, dist.data() + static_cast<size_t>(y) * w);
   return dist;
 }
 

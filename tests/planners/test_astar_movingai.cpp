@@ -9,6 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <cmath>
+#include <limits>
+#include <queue>
 #include <random>
 
 #include <unistd.h>
@@ -109,6 +112,89 @@ TEST(OctileSearch, DistanceFieldEqualsAStarCosts) {
     }
   }
   EXPECT_GT(reachable, 250);
+}
+
+// Plain Dijkstra over the same moves (a diagonal only between two free
+// cells), the reference for the wavefront.
+std::vector<double> referenceField(const GridMap& grid, GridCell goal) {
+  const int w = grid.width();
+  std::vector<double> dist(static_cast<size_t>(w) * grid.height(), std::numeric_limits<double>::infinity());
+  if (grid.blocked(goal.x, goal.y)) return dist;
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  dist[grid.index(goal.x, goal.y)] = 0;
+  open.push({0.0, static_cast<int>(grid.index(goal.x, goal.y))});
+  while (!open.empty()) {
+    const auto [d, index] = open.top();
+    open.pop();
+    if (d > dist[index]) continue;
+    const int x = index % w, y = index / w;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        if ((dx == 0 && dy == 0) || grid.blocked(x + dx, y + dy)) continue;
+        if (dx != 0 && dy != 0 && (grid.blocked(x + dx, y) || grid.blocked(x, y + dy))) continue;
+        const double cost = d + (dx != 0 && dy != 0 ? std::sqrt(2.0) : 1.0);
+        const size_t next = grid.index(x + dx, y + dy);
+        if (cost < dist[next]) {
+          dist[next] = cost;
+          open.push({cost, static_cast<int>(next)});
+        }
+      }
+  }
+  return dist;
+}
+
+TEST(OctileSearch, DistanceFieldMatchesDijkstraUpToTheGridsEdges) {
+  std::mt19937 rng(11);
+  const std::pair<int, int> sizes[] = {{1, 1}, {1, 9}, {9, 1}, {2, 2}, {17, 5}, {40, 33}, {64, 64}};
+  int compared = 0;
+  for (const auto& [w, h] : sizes) {
+    for (int trial = 0; trial < 6; ++trial) {
+      GridMap grid(w, h);
+      const int obstacles = (w * h) / 4;
+      for (int i = 0; i < obstacles; ++i) grid.setBlocked(rng() % w, rng() % h);
+      // Goals on corners and edges too: the field must neither wrap around nor leave the grid.
+      const GridCell goal{trial % 2 == 0 ? 0 : static_cast<int>(rng() % w), trial % 3 == 0 ? h - 1 : static_cast<int>(rng() % h)};
+      grid.setBlocked(goal.x, goal.y, false);
+      const auto field = octileDistanceField(grid, goal);
+      const auto reference = referenceField(grid, goal);
+      ASSERT_EQ(field.size(), reference.size());
+      for (size_t i = 0; i < field.size(); ++i) {
+        if (std::isinf(reference[i])) {
+          EXPECT_TRUE(std::isinf(field[i])) << w << "x" << h << " cell " << i;
+        } else {
+          EXPECT_NEAR(field[i], reference[i], 1e-9) << w << "x" << h << " cell " << i;
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 5000);
+}
+
+TEST(OctileSearch, BoundedFieldIsTheFullFieldWithinItsLimit) {
+  std::mt19937 rng(3);
+  GridMap grid(80, 50);
+  for (int i = 0; i < 900; ++i) grid.setBlocked(rng() % 80, rng() % 50);
+  const GridCell goal{70, 40}, start{5, 6};
+  grid.setBlocked(goal.x, goal.y, false);
+  grid.setBlocked(start.x, start.y, false);
+  const auto full = octileDistanceField(grid, goal);
+  const double to_start = full[grid.index(start.x, start.y)];
+  ASSERT_TRUE(std::isfinite(to_start));
+  const double slack = 1.2, margin = 5.0;
+  const auto bounded = octileDistanceField(grid, goal, start, slack, margin);
+  int beyond = 0;
+  for (size_t i = 0; i < full.size(); ++i) {
+    if (full[i] <= slack * to_start + margin) {
+      EXPECT_EQ(bounded[i], full[i]) << "cell " << i;
+    } else if (std::isinf(bounded[i])) {
+      ++beyond;
+    } else {
+      EXPECT_EQ(bounded[i], full[i]) << "cell " << i;  // a finished bucket beyond the limit is still exact
+    }
+  }
+  EXPECT_GT(beyond, 0) << "the bound cut nothing off";
 }
 
 class MovingAiFiles : public ::testing::Test {
