@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace beft::planners {
 namespace {
@@ -26,14 +27,23 @@ void checkCellValues(const std::vector<uint8_t>& cells) {
 std::vector<uint8_t> encodeRle(const std::vector<uint8_t>& cells) {
   std::vector<uint8_t> out;
   out.reserve(4096);
+  const uint8_t* data = cells.data();
+  const size_t count = cells.size();
   size_t i = 0;
-  while (i < cells.size()) {
-    const uint8_t value = cells[i];
-    size_t run = 1;
-    while (i + run < cells.size() && cells[i + run] == value && run < kMaxRun) ++run;
-    out.push_back(static_cast<uint8_t>(run));
+  while (i < count) {
+    const uint8_t value = data[i];
+    const size_t limit = std::min(count, i + kMaxRun);
+    size_t end = i + 1;
+    // Eight cells at a time while they all hold the value: maps are long runs.
+    const uint64_t eight = 0x0101010101010101ull * value;
+    for (uint64_t word; end + 8 <= limit; end += 8) {
+      std::memcpy(&word, data + end, 8);
+      if (word != eight) break;
+    }
+    while (end < limit && data[end] == value) ++end;
+    out.push_back(static_cast<uint8_t>(end - i));
     out.push_back(value);
-    i += run;
+    i = end;
   }
   return out;
 }

@@ -1,5 +1,6 @@
 #include "camera_messages.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace beft::camera {
@@ -25,7 +26,7 @@ void fillHeader(const RenderedFrame& frame, int64_t utime, int64_t tick, int8_t 
   message.instance_ids.clear();
 }
 
-inline void putUint16(std::vector<uint8_t>& data, size_t pixel, uint16_t value) {
+inline void putUint16(uint8_t* data, size_t pixel, uint16_t value) {
   data[2 * pixel] = static_cast<uint8_t>(value & 0xFF);
   data[2 * pixel + 1] = static_cast<uint8_t>(value >> 8);
 }
@@ -47,11 +48,15 @@ void encodeCameraMessages(const RenderedFrame& frame, int64_t utime, int64_t tic
 
   fillHeader(frame, utime, tick, beft::camera_frame_t::ENCODING_DEPTH_MM16, out.depth);
   out.depth.data.resize(2 * pixels);
+  // Raw pointers: byte stores through the vector would make the compiler
+  // reload its data pointer for every pixel.
+  uint8_t* depth_bytes = out.depth.data.data();
+  const float* depth = frame.depth.data();
   for (size_t p = 0; p < pixels; ++p) {
     // Rounded to the nearest millimetre (depths are never negative).
-    const double millimetres = static_cast<double>(frame.depth[p]) * 1000.0 + 0.5;
+    const double millimetres = static_cast<double>(depth[p]) * 1000.0 + 0.5;
     const uint16_t value = (millimetres >= 1 && millimetres < 65536) ? static_cast<uint16_t>(millimetres) : 0;
-    putUint16(out.depth.data, p, value);
+    putUint16(depth_bytes, p, value);
   }
   out.depth.data_size = static_cast<int32_t>(out.depth.data.size());
 
@@ -59,10 +64,12 @@ void encodeCameraMessages(const RenderedFrame& frame, int64_t utime, int64_t tic
   out.instance.instance_ids = object_ids;
   out.instance.num_ids = static_cast<int32_t>(object_ids.size());
   out.instance.data.resize(2 * pixels);
+  uint8_t* instance_bytes = out.instance.data.data();
+  const int32_t* objects = frame.object.data();
+  const int32_t id_count = static_cast<int32_t>(std::min<size_t>(object_ids.size(), 65535));
   for (size_t p = 0; p < pixels; ++p) {
-    const int32_t object = frame.object[p];
-    const bool valid = object >= 0 && object < static_cast<int32_t>(object_ids.size()) && object < 65535;
-    putUint16(out.instance.data, p, valid ? static_cast<uint16_t>(object + 1) : 0);
+    const int32_t object = objects[p];
+    putUint16(instance_bytes, p, object >= 0 && object < id_count ? static_cast<uint16_t>(object + 1) : 0);
   }
   out.instance.data_size = static_cast<int32_t>(out.instance.data.size());
 }

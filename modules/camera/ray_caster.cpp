@@ -71,14 +71,6 @@ void RayCaster::prepareCamera(const Camera& camera) {
       for (int u = 0; u < width_; ++u)
         inverse_length_[static_cast<size_t>(v) * width_ + u] =
             1.0 / std::sqrt(1.0 + column_a_[u] * column_a_[u] + row_b_[v] * row_b_[v]);
-    ray_x_.resize(pixels);
-    ray_y_.resize(pixels);
-    ray_z_.resize(pixels);
-    t_limit_.resize(pixels);
-    hits_ground_.resize(pixels);
-    nearest_t_.resize(pixels);
-    nearest_solid_.resize(pixels);
-    nearest_face_.resize(pixels);
   }
   // Frustum side planes from the rays through the image corners.
   const Eigen::Vector3d corners[4] = {imagePointRay(f, 0, 0), imagePointRay(f, width_, 0),
@@ -90,7 +82,26 @@ void RayCaster::prepareCamera(const Camera& camera) {
   }
 }
 
-void RayCaster::prepareRayRows(int first_row, int end_row) {
+// Kept per thread between frames: a row's worth of scratch stays in the
+// nearest cache, where whole-image arrays of every stage did not.
+struct RayCaster::RowRays {
+  std::vector<double> ray_x, ray_y, t_limit, nearest_t;  // per column
+  std::vector<int32_t> nearest_solid;
+  std::vector<Face> nearest_face;
+  std::vector<uint8_t> hits_ground;
+  double ray_z = 0;  // shared by the row (the camera has no roll)
+  void resize(int width) {
+    ray_x.resize(width);
+    ray_y.resize(width);
+    t_limit.resize(width);
+    nearest_t.resize(width);
+    nearest_solid.resize(width);
+    nearest_face.resize(width);
+    hits_ground.resize(width);
+  }
+};
+
+void RayCaster::prepareRow(int v, RowRays& row) const {
   const CameraFrame& f = camera_frame_;
   // Locals and raw pointers: stores to the arrays cannot alias them, so the
   // compiler keeps them in registers.
@@ -98,38 +109,32 @@ void RayCaster::prepareRayRows(int first_row, int end_row) {
   const double oz = f.origin.z();
   const double left_x = f.left.x(), left_y = f.left.y();
   const double* column_a = column_a_.data();
-  const double* inverse_length = inverse_length_.data();
-  double* ray_x = ray_x_.data();
-  double* ray_y = ray_y_.data();
-  double* ray_z = ray_z_.data();
-  double* t_limits = t_limit_.data();
-  double* nearest_t = nearest_t_.data();
-  uint8_t* hits_ground = hits_ground_.data();
-  int32_t* nearest_solid = nearest_solid_.data();
-  for (int v = first_row; v < end_row; ++v) {
-    // Same summation order as imagePointRay: (forward + b up) + a left.
-    const double b = row_b_[v];
-    const double row_x = f.forward.x() + b * f.up.x(), row_y = f.forward.y() + b * f.up.y(),
-                 row_z = f.forward.z() + b * f.up.z();
-    // Without roll the camera's left axis is horizontal (left.z == 0), so a
-    // whole row shares its rays' z component and its ground distance.
-    const double dz = row_z;
-    const double t_ground = (dz < 0 && oz > 0) ? -oz / dz : SceneGeometry::kInfinity;
-    const size_t row = static_cast<size_t>(v) * width_;
-    for (int u = 0; u < width_; ++u) {
-      const size_t p = row + u;
-      const double a = column_a[u];
-      ray_x[p] = row_x + a * left_x;
-      ray_y[p] = row_y + a * left_y;
-      ray_z[p] = dz;
-      const double t_range = range * inverse_length[p];
-      const bool ground = t_ground <= t_range;
-      const double t_limit = ground ? t_ground : t_range;
-      t_limits[p] = t_limit;
-      hits_ground[p] = ground;
-      nearest_t[p] = t_limit;
-      nearest_solid[p] = -1;
-    }
+  const double* inverse_length = inverse_length_.data() + static_cast<size_t>(v) * width_;
+  double* ray_x = row.ray_x.data();
+  double* ray_y = row.ray_y.data();
+  double* t_limits = row.t_limit.data();
+  double* nearest_t = row.nearest_t.data();
+  uint8_t* hits_ground = row.hits_ground.data();
+  int32_t* nearest_solid = row.nearest_solid.data();
+  // Same summation order as imagePointRay: (forward + b up) + a left.
+  const double b = row_b_[v];
+  const double row_x = f.forward.x() + b * f.up.x(), row_y = f.forward.y() + b * f.up.y(),
+               row_z = f.forward.z() + b * f.up.z();
+  // Without roll the camera's left axis is horizontal (left.z == 0), so a
+  // whole row shares its rays' z component and its ground distance.
+  row.ray_z = row_z;
+  const double t_ground = (row_z < 0 && oz > 0) ? -oz / row_z : SceneGeometry::kInfinity;
+  for (int u = 0; u < width_; ++u) {
+    const double a = column_a[u];
+    ray_x[u] = row_x + a * left_x;
+    ray_y[u] = row_y + a * left_y;
+    const double t_range = range * inverse_length[u];
+    const bool ground = t_ground <= t_range;
+    const double t_limit = ground ? t_ground : t_range;
+    t_limits[u] = t_limit;
+    hits_ground[u] = ground;
+    nearest_t[u] = t_limit;
+    nearest_solid[u] = -1;
   }
 }
 
@@ -222,44 +227,40 @@ std::vector<RayCaster::SolidFootprint> RayCaster::visibleFootprints(const SceneG
   return visible;
 }
 
-void RayCaster::castProjectionRows(const SceneGeometry& scene, const std::vector<SolidFootprint>& visible,
-                                   int first_row, int end_row) {
+void RayCaster::castProjectionRow(const SceneGeometry& scene, const std::vector<SolidFootprint>& visible, int v,
+                                  RowRays& row) const {
   const std::vector<Solid>& solids = scene.solids();
   const Eigen::Vector3d& o = camera_frame_.origin;
   LineInterval interval;
   for (const SolidFootprint& footprint : visible) {
+    if (v < footprint.v0 || v > footprint.v1) continue;
     const Solid& solid = solids[footprint.solid];
-    const int v_end = std::min(footprint.v1 + 1, end_row);
-    for (int v = std::max(footprint.v0, first_row); v < v_end; ++v) {
-      for (int u = footprint.u0; u <= footprint.u1; ++u) {
-        const size_t p = static_cast<size_t>(v) * width_ + u;
-        if (nearest_t_[p] < footprint.min_depth) continue;  // something nearer covers it
-        const Eigen::Vector3d d(ray_x_[p], ray_y_[p], ray_z_[p]);
-        if (!intersectLine(solid, o, d, interval) || interval.enter < kMinDepth) continue;
-        // Same order as the per-ray methods: nearest, then lower solid index.
-        const double t = interval.enter;
-        if (t < nearest_t_[p] ||
-            (t == nearest_t_[p] && (nearest_solid_[p] < 0 || footprint.solid < nearest_solid_[p]))) {
-          nearest_t_[p] = t;
-          nearest_solid_[p] = footprint.solid;
-          nearest_face_[p] = interval.enter_face;
-        }
+    for (int u = footprint.u0; u <= footprint.u1; ++u) {
+      if (row.nearest_t[u] < footprint.min_depth) continue;  // something nearer covers it
+      const Eigen::Vector3d d(row.ray_x[u], row.ray_y[u], row.ray_z);
+      if (!intersectLine(solid, o, d, interval) || interval.enter < kMinDepth) continue;
+      // Same order as the per-ray methods: nearest, then lower solid index.
+      const double t = interval.enter;
+      if (t < row.nearest_t[u] ||
+          (t == row.nearest_t[u] && (row.nearest_solid[u] < 0 || footprint.solid < row.nearest_solid[u]))) {
+        row.nearest_t[u] = t;
+        row.nearest_solid[u] = footprint.solid;
+        row.nearest_face[u] = interval.enter_face;
       }
     }
   }
 }
 
-void RayCaster::castPerRay(const SceneGeometry& scene, bool use_grid) {
+void RayCaster::castPerRayRow(const SceneGeometry& scene, bool use_grid, RowRays& row) const {
   const Eigen::Vector3d& o = camera_frame_.origin;
-  const size_t pixels = static_cast<size_t>(width_) * height_;
-  for (size_t p = 0; p < pixels; ++p) {
-    const Eigen::Vector3d d(ray_x_[p], ray_y_[p], ray_z_[p]);
-    const SceneGeometry::RayHit hit = use_grid ? scene.firstHit(o, d, kMinDepth, t_limit_[p])
-                                               : scene.firstHitBruteForce(o, d, kMinDepth, t_limit_[p]);
+  for (int u = 0; u < width_; ++u) {
+    const Eigen::Vector3d d(row.ray_x[u], row.ray_y[u], row.ray_z);
+    const SceneGeometry::RayHit hit = use_grid ? scene.firstHit(o, d, kMinDepth, row.t_limit[u])
+                                               : scene.firstHitBruteForce(o, d, kMinDepth, row.t_limit[u]);
     if (hit.solid >= 0) {
-      nearest_t_[p] = hit.t;
-      nearest_solid_[p] = hit.solid;
-      nearest_face_[p] = hit.face;
+      row.nearest_t[u] = hit.t;
+      row.nearest_solid[u] = hit.solid;
+      row.nearest_face[u] = hit.face;
     }
   }
 }
@@ -281,38 +282,38 @@ void RayCaster::prepareFrame(const SceneGeometry& scene, RenderedFrame& frame) {
   }
 }
 
-void RayCaster::shadeRows(const SceneGeometry& scene, RenderedFrame& frame, int first_row, int end_row) const {
+void RayCaster::shadeRow(const SceneGeometry& scene, const RowRays& row, int v, RenderedFrame& frame) const {
   const Eigen::Vector3d& o = camera_frame_.origin;
   const float inv_range = static_cast<float>(1.0 / camera_.intrinsics.range);
 
   // Locals and raw pointers: the byte stores below may alias anything, so
   // without them every member would be reloaded per pixel.
   const double ox = o.x(), oy = o.y();
-  const int32_t* nearest_solid = nearest_solid_.data();
-  const uint8_t* hits_ground = hits_ground_.data();
-  const double* ray_x = ray_x_.data();
-  const double* ray_y = ray_y_.data();
-  const double* ray_z = ray_z_.data();
-  const double* inverse_length = inverse_length_.data();
-  const double* nearest_t = nearest_t_.data();
-  const Face* nearest_face = nearest_face_.data();
+  const size_t first_pixel = static_cast<size_t>(v) * width_;
+  const int32_t* nearest_solid = row.nearest_solid.data();
+  const uint8_t* hits_ground = row.hits_ground.data();
+  const double* ray_x = row.ray_x.data();
+  const double* ray_y = row.ray_y.data();
+  const double ray_z = row.ray_z;
+  const double* inverse_length = inverse_length_.data() + first_pixel;
+  const double* nearest_t = row.nearest_t.data();
+  const Face* nearest_face = row.nearest_face.data();
   const Solid* solids = scene.solids().data();
   const auto* solid_colours = solid_colours_.data();
-  float* depth = frame.depth.data();
-  int32_t* object = frame.object.data();
-  uint8_t* rgb = frame.rgb.data();
+  float* depth = frame.depth.data() + first_pixel;
+  int32_t* object = frame.object.data() + first_pixel;
+  uint8_t* rgb = frame.rgb.data() + 3 * first_pixel;
   const auto store = [rgb](size_t p, float r, float g, float b) {
     // Never negative; at most slightly above 255 where lights add up.
     rgb[3 * p] = static_cast<uint8_t>(std::min(r, 255.0f) + 0.5f);
     rgb[3 * p + 1] = static_cast<uint8_t>(std::min(g, 255.0f) + 0.5f);
     rgb[3 * p + 2] = static_cast<uint8_t>(std::min(b, 255.0f) + 0.5f);
   };
-  const size_t first_pixel = static_cast<size_t>(first_row) * width_, end_pixel = static_cast<size_t>(end_row) * width_;
-  for (size_t p = first_pixel; p < end_pixel; ++p) {
+  for (int p = 0; p < width_; ++p) {
     const int s = nearest_solid[p];
     if (s < 0 && !hits_ground[p]) {
       // Sky: haze at and below the horizon, bluer towards the zenith.
-      const float elevation = std::clamp(static_cast<float>(ray_z[p] * inverse_length[p]), 0.0f, 1.0f);
+      const float elevation = std::clamp(static_cast<float>(ray_z * inverse_length[p]), 0.0f, 1.0f);
       const float w = elevation * (2.0f - elevation);
       store(p, kHaze.r + (kSkyZenith.r - kHaze.r) * w, kHaze.g + (kSkyZenith.g - kHaze.g) * w,
             kHaze.b + (kSkyZenith.b - kHaze.b) * w);
@@ -327,7 +328,7 @@ void RayCaster::shadeRows(const SceneGeometry& scene, RenderedFrame& frame, int 
     Rgb colour;
     if (s >= 0) {
       const Solid& solid = solids[s];
-      const Eigen::Vector3d d(ray_x[p], ray_y[p], ray_z[p]);
+      const Eigen::Vector3d d(ray_x[p], ray_y[p], ray_z);
       const Eigen::Vector3d normal = entryNormal(solid, o + t * d, d, nearest_face[p]);
       const double facing = -normal.dot(d) * inverse_length[p];
       light = kAmbient + kSun * static_cast<float>(std::max(0.0, normal.dot(kLight))) +
@@ -352,21 +353,22 @@ void RayCaster::render(const SceneGeometry& scene, const Camera& camera, Rendere
                        RenderMethod method) {
   prepareCamera(camera);
   prepareFrame(scene, frame);
-  if (method == RenderMethod::Projection) {
-    // Bands of rows at once: each stage of a pixel needs only that pixel.
-    const std::vector<SolidFootprint> visible = visibleFootprints(scene);
-    const std::function<void(int, int)> band = [&](int first_row, int end_row) {
-      prepareRayRows(first_row, end_row);
-      castProjectionRows(scene, visible, first_row, end_row);
-      shadeRows(scene, frame, first_row, end_row);
-    };
-    if (workers_) workers_->run(height_, band);
-    else band(0, height_);
-    return;
-  }
-  prepareRayRows(0, height_);
-  castPerRay(scene, method == RenderMethod::GridTraversal);
-  shadeRows(scene, frame, 0, height_);
+  const bool projection = method == RenderMethod::Projection;
+  const std::vector<SolidFootprint> visible = projection ? visibleFootprints(scene) : std::vector<SolidFootprint>{};
+  // Row by row, each pixel through every stage while its row is in cache;
+  // bands of rows on the threads (a pixel needs nothing outside its row).
+  const std::function<void(int, int)> band = [&](int first_row, int end_row) {
+    thread_local RowRays row;  // one per thread; a band uses it only while it runs
+    row.resize(width_);
+    for (int v = first_row; v < end_row; ++v) {
+      prepareRow(v, row);
+      if (projection) castProjectionRow(scene, visible, v, row);
+      else castPerRayRow(scene, method == RenderMethod::GridTraversal, row);
+      shadeRow(scene, row, v, frame);
+    }
+  };
+  if (workers_ && projection) workers_->run(height_, band);
+  else band(0, height_);
 }
 
 void RayCaster::setThreads(int threads) {

@@ -59,19 +59,20 @@ class RayCaster {
 
  private:
   struct SolidFootprint;  // a solid's covered pixel rectangle and nearest depth
+  struct RowRays;         // one image row's rays and nearest hits (per thread, reused)
   // The camera's frame, frustum and per-intrinsics tables.
   void prepareCamera(const Camera& camera);
-  // Every pixel's ray and distance limit, for rows [first_row, end_row).
-  void prepareRayRows(int first_row, int end_row);
+  // Row v's rays and distance limits; nothing hit yet.
+  void prepareRow(int v, RowRays& row) const;
   bool projectSolid(const Solid& solid, SolidFootprint& footprint) const;
   // The solids in view, nearest first, with the pixels they can cover.
   std::vector<SolidFootprint> visibleFootprints(const SceneGeometry& scene) const;
-  void castProjectionRows(const SceneGeometry& scene, const std::vector<SolidFootprint>& visible, int first_row,
-                          int end_row);
-  void castPerRay(const SceneGeometry& scene, bool use_grid);
+  void castProjectionRow(const SceneGeometry& scene, const std::vector<SolidFootprint>& visible, int v,
+                         RowRays& row) const;
+  void castPerRayRow(const SceneGeometry& scene, bool use_grid, RowRays& row) const;
   // The frame's size and buffers, and the solids' colours.
   void prepareFrame(const SceneGeometry& scene, RenderedFrame& frame);
-  void shadeRows(const SceneGeometry& scene, RenderedFrame& frame, int first_row, int end_row) const;
+  void shadeRow(const SceneGeometry& scene, const RowRays& row, int v, RenderedFrame& frame) const;
 
   Camera camera_;
   CameraFrame camera_frame_{Camera{}};
@@ -81,14 +82,6 @@ class RayCaster {
   std::vector<double> column_a_, row_b_, inverse_length_;
   // Inward unit normals of the view frustum's four side planes.
   Eigen::Vector3d frustum_normals_[4];
-  // Per-pixel ray (direction with forward component 1) and the farthest ray
-  // parameter with a return (range or ground, whichever is nearer).
-  std::vector<double> ray_x_, ray_y_, ray_z_, t_limit_;
-  std::vector<uint8_t> hits_ground_;
-  // Nearest solid per pixel so far.
-  std::vector<double> nearest_t_;
-  std::vector<int32_t> nearest_solid_;
-  std::vector<Face> nearest_face_;
   std::vector<std::array<float, 3>> solid_colours_;  // RGB per solid of the frame being rendered
   std::unique_ptr<RowWorkers> workers_;  // none: one thread
 };

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,30 @@ TEST(ObstacleMapCodec, RoundTripBothEncodings) {
     EXPECT_EQ(back.at(7, 2), kOccupied);
     EXPECT_EQ(back.at(8, 2), kUnknown);
   }
+}
+
+TEST(ObstacleMapCodec, RleEncodesEveryRunLengthAsTheBytewiseDefinition) {
+  // Runs of every length around the 8-cell words the encoder compares and the 255-cell limit.
+  std::mt19937 rng(9);
+  std::vector<uint8_t> cells;
+  std::vector<std::pair<size_t, uint8_t>> runs;
+  for (int i = 0; i < 400; ++i) {
+    const size_t length = 1 + rng() % (i % 4 == 0 ? 600 : 20);
+    const uint8_t value = static_cast<uint8_t>((runs.empty() ? 0 : runs.back().second + 1 + rng() % 2) % 3);
+    runs.push_back({length, value});
+    cells.insert(cells.end(), length, value);
+  }
+  std::vector<uint8_t> expected;  // (count, value) pairs, a new pair after 255 cells or a change
+  for (size_t i = 0; i < cells.size();) {
+    size_t run = 1;
+    while (i + run < cells.size() && cells[i + run] == cells[i] && run < 255) ++run;
+    expected.push_back(static_cast<uint8_t>(run));
+    expected.push_back(cells[i]);
+    i += run;
+  }
+  EXPECT_EQ(encodeRle(cells), expected);
+  EXPECT_EQ(decodeRle(encodeRle(cells), cells.size()), cells);
+  EXPECT_TRUE(encodeRle({}).empty());
 }
 
 TEST(ObstacleMapCodec, RleIsSmallForTypicalMaps) {
