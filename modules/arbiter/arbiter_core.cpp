@@ -279,6 +279,7 @@ void ArbiterCore::step(const std::string& event) {
   const int tick_transition = net_.tick_transition;
   const Transition& tick = net_.transitions[tick_transition];
   int64_t silent_firings = 0;
+  bool tick_opened = false;
   while (true) {
     // After the last tick, nothing new starts once the tick transition is enabled.
     if (endingAtTickEnd() && isEnabled(tick, marking_)) break;
@@ -306,7 +307,7 @@ void ArbiterCore::step(const std::string& event) {
       ++stats_.ticks_completed;
       ++silent_firings;
       note("tick " + std::to_string(tick_));
-      sendStatus(beft::run_status_t::STATE_RUNNING, "tick " + std::to_string(tick_));
+      tick_opened = true;
       progress = true;
     }
     if (silent_firings > config_.max_silent_firings_per_step) {
@@ -317,6 +318,8 @@ void ArbiterCore::step(const std::string& event) {
     }
     if (!progress) break;
   }
+  // The new tick's status after its first FIREs: they are what the experts wait for.
+  if (tick_opened) sendStatus(beft::run_status_t::STATE_RUNNING, "tick " + std::to_string(tick_));
   publishMarking(text);
   if (anyRunning()) return;
   if (endingAtTickEnd() && isEnabled(tick, marking_)) {

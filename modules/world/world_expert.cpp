@@ -84,9 +84,11 @@ void WorldExpert::logNotes() {
 }
 
 void WorldExpert::publishState(beft::expert::Output& out) {
+  // Render first: each publish wakes every process that reads the channel,
+  // and they would take the cores from the rendering threads.
+  simulation_->cameraMessages(camera_messages_);
   out.publish(channels::kGroundTruth, simulation_->groundTruth());
   out.publish(channels::kRobotState, simulation_->robotState());
-  simulation_->cameraMessages(camera_messages_);
   out.publish(channels::kCameraColor, camera_messages_.color);
   out.publish(channels::kCameraDepth, camera_messages_.depth);
   out.publish(channels::kCameraInstance, camera_messages_.instance);
