@@ -7,13 +7,9 @@
 
 namespace beft::vision {
 
-DepthImage depthRays(const camera_frame_t& depth) {
-  DepthImage image;
-  depthRays(depth, image);
-  return image;
-}
+namespace {
 
-void depthRays(const camera_frame_t& depth, DepthImage& image) {
+const camera_frame_t& checkedDepthFrame(const camera_frame_t& depth) {
   if (depth.encoding != camera_frame_t::ENCODING_DEPTH_MM16)
     throw std::invalid_argument("depth frame has encoding " + std::to_string(depth.encoding) +
                                 ", expected DEPTH_MM16");
@@ -22,22 +18,39 @@ void depthRays(const camera_frame_t& depth, DepthImage& image) {
   if (depth.data.size() != 2 * pixels)
     throw std::invalid_argument("depth frame holds " + std::to_string(depth.data.size()) + " bytes, expected " +
                                 std::to_string(2 * pixels));
-  const camera::CameraFrame frame(camera::cameraOfFrame(depth));
+  return depth;
+}
+
+}  // namespace
+
+DepthFrameRays::DepthFrameRays(const camera_frame_t& depth)
+    : depth_(checkedDepthFrame(depth)), frame_(camera::cameraOfFrame(depth)) {
   // pixelRay is affine in (u, v): ray(u, v) = ray(0, v) + (ray(u, 0) - ray(0, 0)).
-  const Eigen::Vector3d corner = camera::pixelRay(frame, 0, 0);
-  std::vector<Eigen::Vector3d> column_step(depth.width);
-  for (int u = 0; u < depth.width; ++u) column_step[u] = camera::pixelRay(frame, u, 0) - corner;
-  image.width = depth.width;
-  image.height = depth.height;
-  image.level = depth.cam_pitch == 0.0;  // the camera model has no roll
-  image.rays.resize(pixels);
-  for (int v = 0; v < depth.height; ++v) {
-    const Eigen::Vector3d row_start = camera::pixelRay(frame, 0, v);
-    for (int u = 0; u < depth.width; ++u) {
-      const std::size_t p = static_cast<std::size_t>(v) * depth.width + u;
-      const unsigned millimetres = depth.data[2 * p] | (static_cast<unsigned>(depth.data[2 * p + 1]) << 8);
-      image.rays[p].direction = row_start + column_step[u];
-      image.rays[p].t = millimetres * 1e-3;
+  corner_ = camera::pixelRay(frame_, 0, 0);
+  column_step_.resize(depth.width);
+  for (int u = 0; u < depth.width; ++u) column_step_[u] = camera::pixelRay(frame_, u, 0) - corner_;
+}
+
+Eigen::Vector3d DepthFrameRays::rowStart(int v) const { return camera::pixelRay(frame_, 0, v); }
+
+DepthImage depthRays(const camera_frame_t& depth) {
+  DepthImage image;
+  depthRays(depth, image);
+  return image;
+}
+
+void depthRays(const camera_frame_t& depth, DepthImage& image) {
+  const DepthFrameRays rays(depth);
+  image.width = rays.width();
+  image.height = rays.height();
+  image.level = rays.level();
+  image.rays.resize(static_cast<std::size_t>(image.width) * image.height);
+  for (int v = 0; v < image.height; ++v) {
+    const Eigen::Vector3d row_start = rays.rowStart(v);
+    for (int u = 0; u < image.width; ++u) {
+      DepthRay& ray = image.rays[static_cast<std::size_t>(v) * image.width + u];
+      ray.direction = row_start + rays.columnStep(u);
+      ray.t = rays.depth(u, v);
     }
   }
 }

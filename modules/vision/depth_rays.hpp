@@ -3,13 +3,43 @@
 // convention) with the z-depth of its return.
 #pragma once
 
+#include <cstddef>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include <beft/camera_frame_t.hpp>
 
+#include "camera_model.hpp"
 #include "obstacle_mapper.hpp"
 
 namespace beft::vision {
+
+// The rays of a DEPTH_MM16 frame, computed when asked for (a whole image of
+// rays is 32 bytes a pixel): ray (u, v) = rowStart(v) + columnStep(u), the
+// same sum depthRays stores. Throws std::invalid_argument on a frame that is
+// not DEPTH_MM16 or has a wrong size. Keeps a reference to the frame.
+class DepthFrameRays {
+ public:
+  explicit DepthFrameRays(const camera_frame_t& depth);
+  int width() const { return depth_.width; }
+  int height() const { return depth_.height; }
+  bool level() const { return depth_.cam_pitch == 0.0; }  // the camera model has no roll
+  Eigen::Vector3d origin() const { return {depth_.cam_x, depth_.cam_y, depth_.cam_z}; }
+  Eigen::Vector3d rowStart(int v) const;
+  const Eigen::Vector3d& columnStep(int u) const { return column_step_[u]; }
+  // Depth of pixel (u, v) in metres, 0 = no return.
+  double depth(int u, int v) const {
+    const std::size_t p = static_cast<std::size_t>(v) * depth_.width + u;
+    return (depth_.data[2 * p] | (static_cast<unsigned>(depth_.data[2 * p + 1]) << 8)) * 1e-3;
+  }
+
+ private:
+  const camera_frame_t& depth_;
+  camera::CameraFrame frame_;
+  Eigen::Vector3d corner_;
+  std::vector<Eigen::Vector3d> column_step_;
+};
 
 // The frame's rays; t = depth in metres (0: no return). Throws
 // std::invalid_argument on a frame that is not DEPTH_MM16 or has a wrong size.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "depth_rays.hpp"
 #include "obstacle_map_codec.hpp"  // beft_obstacle_map
 
 namespace beft::vision {
@@ -59,6 +60,27 @@ void ObstacleMapper::integrate(const Eigen::Vector3d& origin, const DepthImage& 
       image.rays.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height))
     throw std::invalid_argument("depth image of " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                                 " holds " + std::to_string(image.rays.size()) + " rays");
+  integrateRays(origin, image.width, image.height, image.level,
+                [&image](int u, int v) -> const DepthRay& { return image.rays[static_cast<std::size_t>(v) * image.width + u]; });
+}
+
+void ObstacleMapper::integrate(const DepthFrameRays& rays) {
+  int row_of_start = -1;
+  Eigen::Vector3d row_start = Eigen::Vector3d::Zero();
+  DepthRay ray;
+  integrateRays(rays.origin(), rays.width(), rays.height(), rays.level(), [&](int u, int v) -> const DepthRay& {
+    if (v != row_of_start) {
+      row_start = rays.rowStart(v);
+      row_of_start = v;
+    }
+    ray.direction = row_start + rays.columnStep(u);
+    ray.t = rays.depth(u, v);
+    return ray;
+  });
+}
+
+template <typename RayAt>
+void ObstacleMapper::integrateRays(const Eigen::Vector3d& origin, int width, int height, bool level, RayAt&& ray_at) {
   ++frame_;
   auto hasReturn = [](const DepthRay& ray) { return ray.t > 0 && std::isfinite(ray.t); };
 
@@ -68,16 +90,15 @@ void ObstacleMapper::integrate(const Eigen::Vector3d& origin, const DepthImage& 
   // high), nearly in order of reach.
   std::vector<std::size_t>& obstacle_cells = obstacle_cells_;
   obstacle_cells.clear();
-  columns_.resize(static_cast<std::size_t>(image.width));
+  columns_.resize(static_cast<std::size_t>(width));
   for (auto& column : columns_) {
-    column.farthest = nullptr;
+    column.has_return = false;
     column.farthest_reach = 0;
     column.floor_rays.clear();
   }
-  for (int v = image.height - 1; v >= 0; --v) {
-    const DepthRay* row = &image.rays[static_cast<std::size_t>(v) * image.width];
-    for (int u = 0; u < image.width; ++u) {
-      const DepthRay& ray = row[u];
+  for (int v = height - 1; v >= 0; --v) {
+    for (int u = 0; u < width; ++u) {
+      const DepthRay& ray = ray_at(u, v);
       if (!hasReturn(ray)) continue;
       const double hit_x = origin.x() + ray.t * ray.direction.x();
       const double hit_y = origin.y() + ray.t * ray.direction.y();
@@ -87,10 +108,11 @@ void ObstacleMapper::integrate(const Eigen::Vector3d& origin, const DepthImage& 
       const double reach = ray.t * horizontal;
       if (reach > column.farthest_reach) {
         column.farthest_reach = reach;
-        column.farthest = &ray;
+        column.farthest = ray;
+        column.has_return = true;
       }
       if (hit_z <= config_.obstacle_min_height) {
-        column.floor_rays.push_back({reach, horizontal, &ray});
+        column.floor_rays.push_back({reach, horizontal, ray});
         continue;
       }
       int cell_column = 0, cell_row = 0;
@@ -101,15 +123,15 @@ void ObstacleMapper::integrate(const Eigen::Vector3d& origin, const DepthImage& 
     }
   }
   for (auto& column : columns_) {
-    if (column.farthest == nullptr) continue;
+    if (!column.has_return) continue;
     // Insertion sort: the bottom rows reach nearest, so this is nearly in order already.
     auto& rays = column.floor_rays;
     for (std::size_t i = 1; i < rays.size(); ++i)
       for (std::size_t k = i; k > 0 && rays[k].reach < rays[k - 1].reach; --k) std::swap(rays[k], rays[k - 1]);
-    if (image.level)
-      walkLevelColumn(origin, *column.farthest, column.farthest_reach, column.floor_rays);
+    if (level)
+      walkLevelColumn(origin, column.farthest, column.farthest_reach, column.floor_rays);
     else
-      traceColumnRays(origin, *column.farthest, column.floor_rays);
+      traceColumnRays(origin, column.farthest, column.floor_rays);
   }
   for (std::size_t index : obstacle_cells) set(index, kOccupied);
 }
@@ -173,7 +195,7 @@ void ObstacleMapper::walkLevelColumn(const Eigen::Vector3d& origin, const DepthR
       while (lowest < floor_rays.size() && floor_rays[lowest].reach <= s_exit) ++lowest;
       if (lowest < floor_rays.size()) {
         const ColumnRay& r = floor_rays[lowest];
-        const double height = origin.z() + s_enter * r.ray->direction.z() / r.horizontal;
+        const double height = origin.z() + s_enter * r.ray.direction.z() / r.horizontal;
         if (height < threshold) set(index, kFree);
       }
     }
@@ -193,7 +215,7 @@ void ObstacleMapper::traceColumnRays(const Eigen::Vector3d& origin, const DepthR
   for (const ColumnRay& c : floor_rays) {
     if (covered >= 0 && c.reach < covered + config_.resolution) continue;
     const double t_from = covered > 0 && c.horizontal > 0 ? std::max(0.0, (covered - cell_diagonal) / c.horizontal) : 0.0;
-    clearBelowThreshold(origin, *c.ray, t_from);
+    clearBelowThreshold(origin, c.ray, t_from);
     covered = c.reach;
   }
 }

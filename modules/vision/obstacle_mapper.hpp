@@ -46,6 +46,8 @@ struct DepthImage {
   bool level = false;
 };
 
+class DepthFrameRays;  // depth_rays.hpp
+
 struct ObstacleMapConfig {
   double resolution = 0.1;           // cell edge [m]
   double obstacle_min_height = 0.15; // returns above this are obstacles [m]
@@ -59,6 +61,9 @@ class ObstacleMapper {
   // Adds one frame seen from camera position origin. Throws
   // std::invalid_argument if the image's size does not match its rays.
   void integrate(const Eigen::Vector3d& origin, const DepthImage& image);
+  // The same for a depth frame's rays, computed pixel by pixel on the way
+  // (the same map as integrating depthRays(frame) from the frame's camera).
+  void integrate(const DepthFrameRays& rays);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -82,6 +87,10 @@ class ObstacleMapper {
 
  private:
   bool cellOf(double x, double y, int& column, int& row) const;
+  // Both integrate()s: ray_at(u, v) gives pixel (u, v)'s DepthRay; it is
+  // asked bottom row first, each row left to right.
+  template <typename RayAt>
+  void integrateRays(const Eigen::Vector3d& origin, int width, int height, bool level, RayAt&& ray_at);
   // Walks the cells under o + t d for t in [t_begin, t_end) (Amanatides-Woo);
   // visit(index, t_enter, t_exit) for each, then ends at the cell of t_end
   // (not visited).
@@ -97,7 +106,7 @@ class ObstacleMapper {
   struct ColumnRay {
     double reach;       // horizontal distance to the return [m]
     double horizontal;  // horizontal length of the direction
-    const DepthRay* ray;
+    DepthRay ray;
   };
   void walkLevelColumn(const Eigen::Vector3d& origin, const DepthRay& farthest, double reach,
                        const std::vector<ColumnRay>& floor_rays);
@@ -117,7 +126,8 @@ class ObstacleMapper {
   uint64_t version_ = 0;
   // Scratch, kept between frames.
   struct ColumnScan {
-    const DepthRay* farthest = nullptr;
+    bool has_return = false;
+    DepthRay farthest;
     double farthest_reach = 0;
     std::vector<ColumnRay> floor_rays;
   };

@@ -162,9 +162,7 @@ void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t&
   // The same image from the same pose adds nothing (integrating is
   // idempotent): a robot standing in a still scene costs no mapping.
   if (sameView(depth, last_depth_)) return;
-  const Eigen::Vector3d origin(depth.cam_x, depth.cam_y, depth.cam_z);
-  depthRays(depth, depth_image_);
-  mapper_->integrate(origin, depth_image_);
+  mapper_->integrate(DepthFrameRays(depth));
   last_depth_ = depth;
 }
 

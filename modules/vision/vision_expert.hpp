@@ -43,7 +43,6 @@ class VisionExpert : public expert::Expert {
   double mapped_world_width_ = 0, mapped_world_height_ = 0;
   int64_t last_mapped_tick_ = -1;
   std::optional<obstacle_map_t> resume_map_;  // a map published before this process started
-  DepthImage depth_image_;             // reused between frames
   camera_frame_t last_depth_{};        // the depth frame last added to the map
   obstacle_map_t map_message_;         // the map as last encoded
   uint64_t map_message_version_ = 0;   // mapper version it encodes (0: none yet)

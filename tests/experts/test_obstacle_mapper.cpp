@@ -211,3 +211,27 @@ TEST(ObstacleMapper, RefusesABadGridOrImage) {
   config.resolution = -1;
   EXPECT_THROW(vision::ObstacleMapper(10, 10, config), std::invalid_argument);
 }
+
+TEST(ObstacleMapper, FrameRaysGiveTheMapOfTheStoredRays) {
+  // Level and tilted frames, one after the other, so clearing is exercised too.
+  const camera_frame_t frames[] = {wallDepthImage(7.05), wallDepthImage(6.35, -12), wallDepthImage(9.25),
+                                   wallDepthImage(5.15, 8)};
+  vision::ObstacleMapper from_stored(30, 10, {}), from_frame(30, 10, {});
+  for (const camera_frame_t& depth : frames) {
+    from_stored.integrate({depth.cam_x, depth.cam_y, depth.cam_z}, vision::depthRays(depth));
+    from_frame.integrate(vision::DepthFrameRays(depth));
+    EXPECT_EQ(from_frame.cells(), from_stored.cells()) << "wall frame with pitch " << depth.cam_pitch;
+    EXPECT_EQ(from_frame.version(), from_stored.version());
+  }
+  EXPECT_GT(from_frame.countCells(kOccupied), 0);
+  EXPECT_GT(from_frame.countCells(kFree), 0);
+}
+
+TEST(ObstacleMapper, FrameRaysRefuseAFrameThatIsNotDepth) {
+  camera_frame_t colour = wallDepthImage(7.05);
+  colour.encoding = camera_frame_t::ENCODING_RGB8;
+  EXPECT_THROW(vision::DepthFrameRays{colour}, std::invalid_argument);
+  camera_frame_t short_frame = wallDepthImage(7.05);
+  short_frame.data.pop_back();
+  EXPECT_THROW(vision::DepthFrameRays{short_frame}, std::invalid_argument);
+}
