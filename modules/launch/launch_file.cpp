@@ -131,9 +131,15 @@ LaunchSpec loadLaunchFile(const std::string& path, const std::map<std::string, s
       p.is_arbiter = true;
     }
     if (const char* append = e->Attribute("lcm_url")) p.append_lcm_url = std::string(append) != "0";
+    if (const char* priority = e->Attribute("priority")) {
+      const std::string value = priority;
+      if (value == "normal") p.priority = Priority::Normal;
+      else if (value == "background") p.priority = Priority::Background;
+      else throw LaunchError(where(path, p.line) + "priority must be 'normal' or 'background', not '" + value + "'");
+    }
     for (const auto* attr = e->FirstAttribute(); attr; attr = attr->Next()) {
       static const std::set<std::string> known = {"name", "command", "args", "group", "host",
-                                                  "restart", "max_restarts", "role", "lcm_url"};
+                                                  "restart", "max_restarts", "role", "lcm_url", "priority"};
       if (!known.count(attr->Name()))
         throw LaunchError(where(path, p.line) + "unknown attribute '" + attr->Name() + "' on <process>");
     }

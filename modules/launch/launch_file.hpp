@@ -3,7 +3,8 @@
 //   <launch name="mission">
 //     <arg name="planner" default="pf"/>
 //     <process name="planner" command="beft-planner" args="--planner ${planner}"
-//              group="infra" restart="on-failure" max_restarts="3" host="local"/>
+//              group="infra" restart="on-failure" max_restarts="3" host="local"
+//              priority="background"/>
 //     <process name="arbiter" command="beft-arbiter" args="..." role="arbiter"/>
 //   </launch>
 //
@@ -21,6 +22,13 @@ namespace beft::launch {
 
 enum class RestartPolicy { Never, OnFailure };
 
+// How a process competes for the CPUs. Background: nice 10 and SCHED_BATCH,
+// so that waking up (a message arrived) never preempts a running process and
+// it takes about a tenth of a normal process's share when the cores are
+// contended: for processes off the control loop (the recorder, the
+// blackboard), which catch up whenever a core is free.
+enum class Priority { Normal, Background };
+
 struct ProcessSpec {
   std::string name;
   std::string command;            // a program in the build's bin/ or on PATH
@@ -31,6 +39,7 @@ struct ProcessSpec {
   std::string host = "local";     // host label: where this process runs
   bool is_arbiter = false;        // the run ends when it exits
   bool append_lcm_url = true;
+  Priority priority = Priority::Normal;
   int line = 0;
 };
 

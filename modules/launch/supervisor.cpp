@@ -2,12 +2,15 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sched.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -27,6 +30,20 @@ std::atomic<bool> g_interrupted{false};
 void onSignal(int) { g_interrupted = true; }
 
 using Clock = std::chrono::steady_clock;
+
+// In the child, before exec: the threads the program starts inherit both.
+// Lowering a priority needs no privilege; a failure is said and run through.
+void applyPriority(Priority priority) {
+  if (priority != Priority::Background) return;
+  constexpr int kBackgroundNice = 10;
+  errno = 0;
+  const int nice_now = getpriority(PRIO_PROCESS, 0);
+  if (errno == 0 && nice_now < kBackgroundNice && setpriority(PRIO_PROCESS, 0, kBackgroundNice) != 0)
+    std::fprintf(stderr, "cannot lower the priority to nice %d: %s\n", kBackgroundNice, std::strerror(errno));
+  const sched_param no_priority{};
+  if (sched_setscheduler(0, SCHED_BATCH, &no_priority) != 0)
+    std::fprintf(stderr, "cannot set SCHED_BATCH: %s\n", std::strerror(errno));
+}
 
 struct Child {
   ProcessSpec spec;
@@ -99,6 +116,7 @@ bool start(Child& child, Printer& printer) {
     dup2(fds[1], STDERR_FILENO);
     close(fds[0]);
     close(fds[1]);
+    applyPriority(child.spec.priority);
     std::vector<char*> argv;
     for (auto& arg : child.argv) argv.push_back(arg.data());
     argv.push_back(nullptr);
@@ -230,6 +248,8 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
     std::filesystem::remove(options.record_log, error);
     Child logger;
     logger.spec.name = kRecorderName;
+    // Off the control loop: it never preempts the run and catches up when a core is free.
+    logger.spec.priority = Priority::Background;
     logger.argv = {resolveCommand("beft-record", options.bin_dir), "--force", "--quiet"};
     if (!options.lcm_url.empty()) logger.argv.push_back("--lcm-url=" + options.lcm_url);
     if (!options.record_exclude_regex.empty()) logger.argv.push_back("--exclude=" + options.record_exclude_regex);

@@ -1,11 +1,15 @@
 // Launch files and the process supervisor, with small shell processes.
 #include <gtest/gtest.h>
+#include <sched.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "free_port.hpp"
 #include "launch_file.hpp"
@@ -86,6 +90,21 @@ TEST(LaunchFile, ErrorsNameFileAndLine) {
   EXPECT_NE(errorOf(f7, {{"undeclared", "1"}}).find("declares no <arg name=\"undeclared\">"), std::string::npos);
 }
 
+TEST(LaunchFile, ReadsPriorities) {
+  TempDir dir;
+  const auto file = dir.write("run.xml", R"(<launch>
+  <process name="store" command="true" priority="background"/>
+  <process name="loop" command="true" priority="normal"/>
+  <process name="plain" command="true"/>
+</launch>)");
+  const LaunchSpec spec = loadLaunchFile(file, {});
+  EXPECT_EQ(spec.processes[0].priority, Priority::Background);
+  EXPECT_EQ(spec.processes[1].priority, Priority::Normal);
+  EXPECT_EQ(spec.processes[2].priority, Priority::Normal);
+  const auto bad = dir.write("bad.xml", "<launch>\n  <process name=\"a\" command=\"true\" priority=\"high\"/>\n</launch>");
+  EXPECT_EQ(errorOf(bad), bad + ":2: priority must be 'normal' or 'background', not 'high'");
+}
+
 TEST(LaunchFile, SplitsQuotedArguments) {
   EXPECT_EQ(splitArguments("  a  'b c' \"d e\" f'g h'  "),
             (std::vector<std::string>{"a", "b c", "d e", "fg h"}));
@@ -156,6 +175,40 @@ TEST(Supervisor, HostsCanBeLaunchArguments) {
   EXPECT_NE(readAll(options.output_file).find("not starting expert: it runs on host 'robot'"), std::string::npos);
   supervise(loadLaunchFile(file, {}), options);  // the default: this machine
   EXPECT_EQ(access(marker.c_str(), F_OK), 0);
+}
+
+namespace {
+
+// Fields of /proc/PID/stat after the command name: nice is field 19, policy field 41.
+std::vector<std::string> statFields(const std::string& stat) {
+  std::vector<std::string> fields;
+  std::istringstream rest(stat.substr(stat.rfind(')') + 2));
+  for (std::string field; rest >> field;) fields.push_back(field);
+  return fields;
+}
+
+}  // namespace
+
+TEST(Supervisor, BackgroundProcessesRunNicedAndBatch) {
+  TempDir dir;
+  const std::string background = dir.path + "/background", normal = dir.path + "/normal";
+  const auto file = dir.write("run.xml", R"(<launch>
+  <process name="store" command="sh" args="-c 'cat /proc/$$/stat > )" + background + R"('" priority="background" lcm_url="0"/>
+  <process name="loop" command="sh" args="-c 'cat /proc/$$/stat > )" + normal + R"('" lcm_url="0"/>
+  <process name="arbiter" command="sleep" args="0.5" role="arbiter" lcm_url="0"/>
+</launch>)");
+  SupervisorOptions options;
+  options.quiet_children = true;
+  options.output_file = dir.path + "/out.log";
+  supervise(loadLaunchFile(file, {}), options);
+  const auto lowered = statFields(readAll(background)), plain = statFields(readAll(normal));
+  ASSERT_GE(lowered.size(), 39u) << readAll(options.output_file);
+  ASSERT_GE(plain.size(), 39u);
+  // Counted from field 3 (state): nice is field 19, policy field 41.
+  EXPECT_GE(std::stoi(lowered[19 - 3]), 10);
+  EXPECT_EQ(std::stoi(lowered[41 - 3]), SCHED_BATCH);
+  EXPECT_EQ(std::stoi(plain[41 - 3]), SCHED_OTHER);
+  EXPECT_EQ(std::stoi(plain[19 - 3]), getpriority(PRIO_PROCESS, 0));
 }
 
 TEST(Supervisor, ReportsAFailedArbiter) {
