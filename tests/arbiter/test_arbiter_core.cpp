@@ -384,7 +384,7 @@ TEST(ArbiterCore, FollowsTheDefaultNetOrder) {
   const auto low = std::find_if(sim.markings().begin(), sim.markings().end(),
                                 [](const beft::marking_t& m) { return m.num_running == 3; });
   ASSERT_NE(low, sim.markings().end());
-  EXPECT_EQ(low->running, (std::vector<std::string>{"geometry", "vision", "audio"}));
+  EXPECT_EQ(low->running, (std::vector<std::string>{"vision", "geometry", "audio"}));
 }
 
 TEST(ArbiterCore, SequentialNetRunsOneExpertAtATime) {
