@@ -7,16 +7,15 @@ namespace beft::camera {
 
 namespace {
 
-void fillHeader(const RenderedFrame& frame, int64_t utime, int64_t tick, int8_t encoding,
-                beft::camera_frame_t& message) {
-  const CameraPose& pose = frame.camera.pose;
+void fillHeader(const Camera& camera, int64_t utime, int64_t tick, int8_t encoding, beft::camera_frame_t& message) {
+  const CameraPose& pose = camera.pose;
   message.utime = utime;
   message.tick = tick;
   message.encoding = encoding;
-  message.width = frame.width;
-  message.height = frame.height;
-  message.fov = frame.camera.intrinsics.fov_deg;
-  message.range = frame.camera.intrinsics.range;
+  message.width = std::max(camera.intrinsics.width, 0);
+  message.height = std::max(camera.intrinsics.height, 0);
+  message.fov = camera.intrinsics.fov_deg;
+  message.range = camera.intrinsics.range;
   message.cam_x = pose.x;
   message.cam_y = pose.y;
   message.cam_z = pose.z;
@@ -36,42 +35,73 @@ inline uint16_t getUint16(const beft::camera_frame_t& frame, int u, int v) {
   return static_cast<uint16_t>(frame.data[2 * pixel] | (frame.data[2 * pixel + 1] << 8));
 }
 
+// The headers and data sizes of a frame's three messages.
+void prepareMessages(const Camera& camera, int64_t utime, int64_t tick, const std::vector<std::string>& object_ids,
+                     CameraMessages& out) {
+  fillHeader(camera, utime, tick, beft::camera_frame_t::ENCODING_RGB8, out.color);
+  fillHeader(camera, utime, tick, beft::camera_frame_t::ENCODING_DEPTH_MM16, out.depth);
+  fillHeader(camera, utime, tick, beft::camera_frame_t::ENCODING_INSTANCE16, out.instance);
+  const size_t pixels = static_cast<size_t>(out.color.width) * out.color.height;
+  out.color.data.resize(3 * pixels);
+  out.depth.data.resize(2 * pixels);
+  out.instance.data.resize(2 * pixels);
+  out.color.data_size = static_cast<int32_t>(out.color.data.size());
+  out.depth.data_size = static_cast<int32_t>(out.depth.data.size());
+  out.instance.data_size = static_cast<int32_t>(out.instance.data.size());
+  out.instance.instance_ids = object_ids;
+  out.instance.num_ids = static_cast<int32_t>(object_ids.size());
+}
+
+// Pixels [first, first + count) of the three messages. Raw pointers: byte
+// stores through the vectors would make the compiler reload their data
+// pointers for every pixel.
+void encodePixels(size_t first, size_t count, const float* depth, const int32_t* object, const uint8_t* rgb,
+                  CameraMessages& out) {
+  std::copy_n(rgb, 3 * count, out.color.data.data() + 3 * first);
+  uint8_t* depth_bytes = out.depth.data.data();
+  for (size_t i = 0; i < count; ++i) {
+    // Rounded to the nearest millimetre (depths are never negative).
+    const double millimetres = static_cast<double>(depth[i]) * 1000.0 + 0.5;
+    const uint16_t value = (millimetres >= 1 && millimetres < 65536) ? static_cast<uint16_t>(millimetres) : 0;
+    putUint16(depth_bytes, first + i, value);
+  }
+  uint8_t* instance_bytes = out.instance.data.data();
+  const int32_t id_count = std::min(out.instance.num_ids, 65535);
+  for (size_t i = 0; i < count; ++i) {
+    const int32_t index = object[i];
+    putUint16(instance_bytes, first + i, index >= 0 && index < id_count ? static_cast<uint16_t>(index + 1) : 0);
+  }
+}
+
+class MessageRowWriter : public FrameRowWriter {
+ public:
+  explicit MessageRowWriter(CameraMessages& out) : out_(out) {}
+  void writeRow(int v, const float* depth, const int32_t* object, const uint8_t* rgb) override {
+    const size_t width = static_cast<size_t>(out_.color.width);
+    encodePixels(static_cast<size_t>(v) * width, width, depth, object, rgb, out_);
+  }
+
+ private:
+  CameraMessages& out_;
+};
+
 }  // namespace
 
 void encodeCameraMessages(const RenderedFrame& frame, int64_t utime, int64_t tick,
                           const std::vector<std::string>& object_ids, CameraMessages& out) {
-  const size_t pixels = static_cast<size_t>(frame.width) * frame.height;
+  Camera camera = frame.camera;
+  camera.intrinsics.width = frame.width;
+  camera.intrinsics.height = frame.height;
+  prepareMessages(camera, utime, tick, object_ids, out);
+  encodePixels(0, static_cast<size_t>(frame.width) * frame.height, frame.depth.data(), frame.object.data(),
+               frame.rgb.data(), out);
+}
 
-  fillHeader(frame, utime, tick, beft::camera_frame_t::ENCODING_RGB8, out.color);
-  out.color.data.assign(frame.rgb.begin(), frame.rgb.begin() + 3 * pixels);
-  out.color.data_size = static_cast<int32_t>(out.color.data.size());
-
-  fillHeader(frame, utime, tick, beft::camera_frame_t::ENCODING_DEPTH_MM16, out.depth);
-  out.depth.data.resize(2 * pixels);
-  // Raw pointers: byte stores through the vector would make the compiler
-  // reload its data pointer for every pixel.
-  uint8_t* depth_bytes = out.depth.data.data();
-  const float* depth = frame.depth.data();
-  for (size_t p = 0; p < pixels; ++p) {
-    // Rounded to the nearest millimetre (depths are never negative).
-    const double millimetres = static_cast<double>(depth[p]) * 1000.0 + 0.5;
-    const uint16_t value = (millimetres >= 1 && millimetres < 65536) ? static_cast<uint16_t>(millimetres) : 0;
-    putUint16(depth_bytes, p, value);
-  }
-  out.depth.data_size = static_cast<int32_t>(out.depth.data.size());
-
-  fillHeader(frame, utime, tick, beft::camera_frame_t::ENCODING_INSTANCE16, out.instance);
-  out.instance.instance_ids = object_ids;
-  out.instance.num_ids = static_cast<int32_t>(object_ids.size());
-  out.instance.data.resize(2 * pixels);
-  uint8_t* instance_bytes = out.instance.data.data();
-  const int32_t* objects = frame.object.data();
-  const int32_t id_count = static_cast<int32_t>(std::min<size_t>(object_ids.size(), 65535));
-  for (size_t p = 0; p < pixels; ++p) {
-    const int32_t object = objects[p];
-    putUint16(instance_bytes, p, object >= 0 && object < id_count ? static_cast<uint16_t>(object + 1) : 0);
-  }
-  out.instance.data_size = static_cast<int32_t>(out.instance.data.size());
+void renderCameraMessages(RayCaster& caster, const SceneGeometry& scene, const Camera& camera, int64_t utime,
+                          int64_t tick, const std::vector<std::string>& object_ids, CameraMessages& out) {
+  prepareMessages(camera, utime, tick, object_ids, out);
+  MessageRowWriter writer(out);
+  caster.render(scene, camera, writer);
 }
 
 bool validCameraFrame(const beft::camera_frame_t& frame, std::string* why) {

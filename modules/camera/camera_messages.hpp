@@ -26,6 +26,11 @@ struct CameraMessages {
 void encodeCameraMessages(const RenderedFrame& frame, int64_t utime, int64_t tick,
                           const std::vector<std::string>& object_ids, CameraMessages& out);
 
+// Renders straight into the three messages, row by row (no whole-image
+// frame in between): the same messages as render + encodeCameraMessages.
+void renderCameraMessages(RayCaster& caster, const SceneGeometry& scene, const Camera& camera, int64_t utime,
+                          int64_t tick, const std::vector<std::string>& object_ids, CameraMessages& out);
+
 // Whether a received frame is self-consistent (known encoding, positive size,
 // data_size matching width * height * bytes per pixel). why says what is not.
 bool validCameraFrame(const beft::camera_frame_t& frame, std::string* why = nullptr);

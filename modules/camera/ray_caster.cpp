@@ -31,6 +31,9 @@ const Eigen::Vector3d kLight = Eigen::Vector3d(0.35, 0.55, 0.76).normalized();
 constexpr float kAmbient = 0.45f, kSun = 0.35f, kHeadlight = 0.25f;
 constexpr float kFogAtRange = 0.4f;  // haze mixed in at the range limit (quadratic in distance)
 
+// 1 / |forward + a left + b up| for a pixel's ray (a, b as in column_a_, row_b_).
+inline double inverseRayLength(double a, double b) { return 1.0 / std::sqrt(1.0 + a * a + b * b); }
+
 }  // namespace
 
 const char* renderMethodName(RenderMethod method) {
@@ -53,24 +56,18 @@ struct RayCaster::SolidFootprint {
 
 void RayCaster::prepareCamera(const Camera& camera) {
   const bool same_intrinsics = width_ == camera.intrinsics.width && height_ == camera.intrinsics.height &&
-                               camera_.intrinsics.fov_deg == camera.intrinsics.fov_deg &&
-                               !inverse_length_.empty();
+                               camera_.intrinsics.fov_deg == camera.intrinsics.fov_deg && tables_ready_;
   camera_ = camera;
   camera_frame_ = CameraFrame(camera);
   width_ = std::max(camera.intrinsics.width, 0);
   height_ = std::max(camera.intrinsics.height, 0);
-  const size_t pixels = static_cast<size_t>(width_) * height_;
   const CameraFrame& f = camera_frame_;
   if (!same_intrinsics) {
     column_a_.resize(width_);
     row_b_.resize(height_);
-    inverse_length_.resize(pixels);
     for (int u = 0; u < width_; ++u) column_a_[u] = (f.cx - (u + 0.5)) / f.focal;
     for (int v = 0; v < height_; ++v) row_b_[v] = (f.cy - (v + 0.5)) / f.focal;
-    for (int v = 0; v < height_; ++v)
-      for (int u = 0; u < width_; ++u)
-        inverse_length_[static_cast<size_t>(v) * width_ + u] =
-            1.0 / std::sqrt(1.0 + column_a_[u] * column_a_[u] + row_b_[v] * row_b_[v]);
+    tables_ready_ = true;
   }
   // Frustum side planes from the rays through the image corners.
   const Eigen::Vector3d corners[4] = {imagePointRay(f, 0, 0), imagePointRay(f, width_, 0),
@@ -86,13 +83,22 @@ void RayCaster::prepareCamera(const Camera& camera) {
 // nearest cache, where whole-image arrays of every stage did not.
 struct RayCaster::RowRays {
   std::vector<double> ray_x, ray_y, t_limit, nearest_t;  // per column
+  std::vector<double> inverse_length;                     // 1 / |ray|
   std::vector<int32_t> nearest_solid;
   std::vector<Face> nearest_face;
   std::vector<uint8_t> hits_ground;
   double ray_z = 0;  // shared by the row (the camera has no roll)
+  // The shaded row.
+  std::vector<float> depth;
+  std::vector<int32_t> object;
+  std::vector<uint8_t> rgb;
   void resize(int width) {
+    depth.resize(width);
+    object.resize(width);
+    rgb.resize(3 * static_cast<size_t>(width));
     ray_x.resize(width);
     ray_y.resize(width);
+    inverse_length.resize(width);
     t_limit.resize(width);
     nearest_t.resize(width);
     nearest_solid.resize(width);
@@ -109,7 +115,7 @@ void RayCaster::prepareRow(int v, RowRays& row) const {
   const double oz = f.origin.z();
   const double left_x = f.left.x(), left_y = f.left.y();
   const double* column_a = column_a_.data();
-  const double* inverse_length = inverse_length_.data() + static_cast<size_t>(v) * width_;
+  double* inverse_length = row.inverse_length.data();
   double* ray_x = row.ray_x.data();
   double* ray_y = row.ray_y.data();
   double* t_limits = row.t_limit.data();
@@ -128,6 +134,7 @@ void RayCaster::prepareRow(int v, RowRays& row) const {
     const double a = column_a[u];
     ray_x[u] = row_x + a * left_x;
     ray_y[u] = row_y + a * left_y;
+    inverse_length[u] = inverseRayLength(a, b);
     const double t_range = range * inverse_length[u];
     const bool ground = t_ground <= t_range;
     const double t_limit = ground ? t_ground : t_range;
@@ -265,14 +272,7 @@ void RayCaster::castPerRayRow(const SceneGeometry& scene, bool use_grid, RowRays
   }
 }
 
-void RayCaster::prepareFrame(const SceneGeometry& scene, RenderedFrame& frame) {
-  const size_t pixels = static_cast<size_t>(width_) * height_;
-  frame.camera = camera_;
-  frame.width = width_;
-  frame.height = height_;
-  frame.depth.resize(pixels);
-  frame.object.resize(pixels);
-  frame.rgb.resize(3 * pixels);
+void RayCaster::prepareColours(const SceneGeometry& scene) {
   // The solid colours once, not per pixel.
   solid_colours_.clear();
   solid_colours_.reserve(scene.solids().size());
@@ -282,27 +282,26 @@ void RayCaster::prepareFrame(const SceneGeometry& scene, RenderedFrame& frame) {
   }
 }
 
-void RayCaster::shadeRow(const SceneGeometry& scene, const RowRays& row, int v, RenderedFrame& frame) const {
+void RayCaster::shadeRow(const SceneGeometry& scene, RowRays& row) const {
   const Eigen::Vector3d& o = camera_frame_.origin;
   const float inv_range = static_cast<float>(1.0 / camera_.intrinsics.range);
 
   // Locals and raw pointers: the byte stores below may alias anything, so
   // without them every member would be reloaded per pixel.
   const double ox = o.x(), oy = o.y();
-  const size_t first_pixel = static_cast<size_t>(v) * width_;
   const int32_t* nearest_solid = row.nearest_solid.data();
   const uint8_t* hits_ground = row.hits_ground.data();
   const double* ray_x = row.ray_x.data();
   const double* ray_y = row.ray_y.data();
   const double ray_z = row.ray_z;
-  const double* inverse_length = inverse_length_.data() + first_pixel;
+  const double* inverse_length = row.inverse_length.data();
   const double* nearest_t = row.nearest_t.data();
   const Face* nearest_face = row.nearest_face.data();
   const Solid* solids = scene.solids().data();
   const auto* solid_colours = solid_colours_.data();
-  float* depth = frame.depth.data() + first_pixel;
-  int32_t* object = frame.object.data() + first_pixel;
-  uint8_t* rgb = frame.rgb.data() + 3 * first_pixel;
+  float* depth = row.depth.data();
+  int32_t* object = row.object.data();
+  uint8_t* rgb = row.rgb.data();
   const auto store = [rgb](size_t p, float r, float g, float b) {
     // Never negative; at most slightly above 255 where lights add up.
     rgb[3 * p] = static_cast<uint8_t>(std::min(r, 255.0f) + 0.5f);
@@ -349,10 +348,42 @@ void RayCaster::shadeRow(const SceneGeometry& scene, const RowRays& row, int v, 
   }
 }
 
+namespace {
+
+// Rows into a RenderedFrame's whole-image buffers.
+class WholeFrameWriter : public FrameRowWriter {
+ public:
+  explicit WholeFrameWriter(RenderedFrame& frame) : frame_(frame) {}
+  void writeRow(int v, const float* depth, const int32_t* object, const uint8_t* rgb) override {
+    const size_t first = static_cast<size_t>(v) * frame_.width;
+    std::copy_n(depth, frame_.width, frame_.depth.data() + first);
+    std::copy_n(object, frame_.width, frame_.object.data() + first);
+    std::copy_n(rgb, 3 * static_cast<size_t>(frame_.width), frame_.rgb.data() + 3 * first);
+  }
+
+ private:
+  RenderedFrame& frame_;
+};
+
+}  // namespace
+
 void RayCaster::render(const SceneGeometry& scene, const Camera& camera, RenderedFrame& frame,
                        RenderMethod method) {
+  frame.camera = camera;
+  frame.width = std::max(camera.intrinsics.width, 0);
+  frame.height = std::max(camera.intrinsics.height, 0);
+  const size_t pixels = static_cast<size_t>(frame.width) * frame.height;
+  frame.depth.resize(pixels);
+  frame.object.resize(pixels);
+  frame.rgb.resize(3 * pixels);
+  WholeFrameWriter writer(frame);
+  render(scene, camera, writer, method);
+}
+
+void RayCaster::render(const SceneGeometry& scene, const Camera& camera, FrameRowWriter& writer,
+                       RenderMethod method) {
   prepareCamera(camera);
-  prepareFrame(scene, frame);
+  prepareColours(scene);
   const bool projection = method == RenderMethod::Projection;
   const std::vector<SolidFootprint> visible = projection ? visibleFootprints(scene) : std::vector<SolidFootprint>{};
   // Row by row, each pixel through every stage while its row is in cache;
@@ -364,7 +395,8 @@ void RayCaster::render(const SceneGeometry& scene, const Camera& camera, Rendere
       prepareRow(v, row);
       if (projection) castProjectionRow(scene, visible, v, row);
       else castPerRayRow(scene, method == RenderMethod::GridTraversal, row);
-      shadeRow(scene, row, v, frame);
+      shadeRow(scene, row);
+      writer.writeRow(v, row.depth.data(), row.object.data(), row.rgb.data());
     }
   };
   if (workers_ && projection) workers_->run(height_, band);
@@ -400,10 +432,9 @@ std::vector<int> RayCaster::expectedPixelsPerObject(const SceneGeometry& scene, 
                    row_z = f.forward.z() + b * f.up.z();
       const double t_ground = (row_z < 0 && o.z() > 0) ? -o.z() / row_z : SceneGeometry::kInfinity;
       for (int u = footprint.u0; u <= footprint.u1; ++u) {
-        const size_t p = static_cast<size_t>(v) * width_ + u;
         const double a = column_a_[u];
         const Eigen::Vector3d d(row_x + a * f.left.x(), row_y + a * f.left.y(), row_z);
-        const double t_range = range * inverse_length_[p];
+        const double t_range = range * inverseRayLength(a, b);
         const double t_limit = t_ground <= t_range ? t_ground : t_range;
         if (intersectLine(solid, o, d, interval) && interval.enter >= kMinDepth && interval.enter <= t_limit) {
           ++count;

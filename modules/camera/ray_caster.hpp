@@ -42,11 +42,24 @@ struct RenderedFrame {
   // Pixels are row-major, row 0 at the top: pixel (u, v) is element v * width + u.
 };
 
-// Keeps per-pixel buffers between frames; one instance per thread (it may
-// use helper threads of its own, see setThreads).
+// Where a render puts its pixels, one finished row at a time (rows may come
+// from several threads at once, never the same row twice).
+class FrameRowWriter {
+ public:
+  virtual ~FrameRowWriter() = default;
+  // Row v: width z-depths [m] (0 = no return), object indices (-1 = none)
+  // and 3 * width RGB bytes.
+  virtual void writeRow(int v, const float* depth, const int32_t* object, const uint8_t* rgb) = 0;
+};
+
+// Keeps its tables between frames; one instance per thread (it may use
+// helper threads of its own, see setThreads).
 class RayCaster {
  public:
   void render(const SceneGeometry& scene, const Camera& camera, RenderedFrame& frame,
+              RenderMethod method = RenderMethod::Projection);
+  // The same pixels, handed to a writer row by row (no whole-image buffer).
+  void render(const SceneGeometry& scene, const Camera& camera, FrameRowWriter& writer,
               RenderMethod method = RenderMethod::Projection);
   // Threads a Projection render splits its rows over (1: the caller's only).
   // The image is the same for any count.
@@ -70,16 +83,18 @@ class RayCaster {
   void castProjectionRow(const SceneGeometry& scene, const std::vector<SolidFootprint>& visible, int v,
                          RowRays& row) const;
   void castPerRayRow(const SceneGeometry& scene, bool use_grid, RowRays& row) const;
-  // The frame's size and buffers, and the solids' colours.
-  void prepareFrame(const SceneGeometry& scene, RenderedFrame& frame);
-  void shadeRow(const SceneGeometry& scene, const RowRays& row, int v, RenderedFrame& frame) const;
+  // The solids' colours of this frame.
+  void prepareColours(const SceneGeometry& scene);
+  // Depth, object and colour of row v's pixels into the row's own buffers.
+  void shadeRow(const SceneGeometry& scene, RowRays& row) const;
 
   Camera camera_;
   CameraFrame camera_frame_{Camera{}};
   int width_ = 0, height_ = 0;
   // Depend on the intrinsics only: per column a = (cx - (u + 0.5)) / f, per
-  // row b likewise, per pixel 1 / |forward + a left + b up|.
-  std::vector<double> column_a_, row_b_, inverse_length_;
+  // row b likewise.
+  std::vector<double> column_a_, row_b_;
+  bool tables_ready_ = false;
   // Inward unit normals of the view frustum's four side planes.
   Eigen::Vector3d frustum_normals_[4];
   std::vector<std::array<float, 3>> solid_colours_;  // RGB per solid of the frame being rendered

@@ -57,12 +57,18 @@ class Output {
   virtual ~Output() = default;
   virtual void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) = 0;
 
+  // publishEncoded gets bytes valid only during the call.
   template <typename Message>
   void publish(const std::string& channel, const Message& message) {
-    std::vector<uint8_t> bytes(message.getEncodedSize());
-    message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-    publishEncoded(channel, bytes);
+    // One buffer for every message: camera frames are tens of kB, and a
+    // fresh buffer each time costs an allocation, zeroing and page faults.
+    encoded_.resize(message.getEncodedSize());
+    message.encode(encoded_.data(), 0, static_cast<int>(encoded_.size()));
+    publishEncoded(channel, encoded_);
   }
+
+ private:
+  std::vector<uint8_t> encoded_;
 };
 
 class Expert {

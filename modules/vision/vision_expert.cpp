@@ -106,7 +106,7 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
       last_scene_ = *scene;
     }
     const std::vector<int> visible = countVisiblePixels(*instance, *scene);
-    out.publish(channels::kVision, estimateVisualOcclusion(*scene, visible, expected_));
+    const visual_percepts_t percepts = estimateVisualOcclusion(*scene, visible, expected_);
     updateMap(*scene, *depth, firing.tick);
     // Re-encoded only when a cell changed (a robot standing still sees no change).
     if (map_message_version_ == 0 || mapper_->version() != map_message_version_) {
@@ -115,6 +115,8 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     }
     map_message_.utime = scene->utime;
     map_message_.tick = firing.tick;
+    // Both at the end: a publish wakes the readers, who would take the cores from the mapping.
+    out.publish(channels::kVision, percepts);
     out.publish(channels::kObstacleMap, map_message_);
   } catch (const std::exception& e) {
     return expert::Outcome::failure("tick " + std::to_string(firing.tick) + ": " + e.what());

@@ -164,8 +164,12 @@ void WorldSimulation::renderCamera(camera::RenderedFrame& frame) {
 }
 
 void WorldSimulation::cameraMessages(camera::CameraMessages& messages) {
-  renderCamera(frame_);
-  camera::encodeCameraMessages(frame_, utime(), tick(), object_ids_, messages);
+  if (options_.depth_noise > 0) {  // the noise goes on the rendered depths, before encoding
+    renderCamera(frame_);
+    camera::encodeCameraMessages(frame_, utime(), tick(), object_ids_, messages);
+    return;
+  }
+  camera::renderCameraMessages(caster_, geometry_, camera(), utime(), tick(), object_ids_, messages);
 }
 
 }  // namespace beft::world

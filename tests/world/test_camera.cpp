@@ -283,3 +283,34 @@ TEST(CameraMessages, FramesFitInOneUdpDatagramAndValidate) {
   EXPECT_FALSE(validCameraFrame(broken, &why));
   EXPECT_NE(why.find("data_size"), std::string::npos);
 }
+
+TEST(CameraMessages, RenderingStraightIntoMessagesGivesTheEncodedFrame) {
+  RandomYard yard(11, 60);
+  std::vector<std::string> ids;
+  for (int i = 0; i < 40; ++i) ids.push_back("object_" + std::to_string(i));  // objects 40.. have no id: instance 0
+  RayCaster one, two;
+  two.setThreads(2);
+  int with_objects = 0;
+  for (int view = 0; view < 6; ++view) {
+    const Camera camera = yard.view(view * 4.0 - 10.0);
+    RenderedFrame frame;
+    one.render(yard.scene, camera, frame);
+    CameraMessages encoded, direct, direct_two;
+    encodeCameraMessages(frame, 5000, 3, ids, encoded);
+    renderCameraMessages(one, yard.scene, camera, 5000, 3, ids, direct);
+    renderCameraMessages(two, yard.scene, camera, 5000, 3, ids, direct_two);
+    for (const CameraMessages* m : {&direct, &direct_two}) {
+      const auto bytes = [](const beft::camera_frame_t& f) {
+        std::vector<uint8_t> out(f.getEncodedSize());
+        f.encode(out.data(), 0, static_cast<int>(out.size()));
+        return out;
+      };
+      EXPECT_EQ(bytes(m->color), bytes(encoded.color)) << "view " << view;
+      EXPECT_EQ(bytes(m->depth), bytes(encoded.depth)) << "view " << view;
+      EXPECT_EQ(bytes(m->instance), bytes(encoded.instance)) << "view " << view;
+    }
+    for (int v = 0; v < frame.height; v += 7)
+      for (int u = 0; u < frame.width; u += 7) with_objects += objectAt(direct.instance, u, v) >= 0;
+  }
+  EXPECT_GT(with_objects, 0) << "no view saw an object with an id";
+}
