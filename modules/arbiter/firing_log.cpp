@@ -48,7 +48,11 @@ std::string formatFiringCsvRow(const FiringRecord& record) {
          csvField(record.action) + "," + csvField(record.message);
 }
 
-FiringLog::FiringLog(std::FILE* lines, const std::string& csv_path) : lines_(lines) {
+FiringLog::FiringLog(std::FILE* lines, const std::string& csv_path, double flush_period_s)
+    : lines_(lines),
+      flush_period_(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+          std::chrono::duration<double>(flush_period_s))),
+      last_flush_(std::chrono::steady_clock::now()) {
   if (csv_path.empty()) return;
   csv_.open(csv_path, std::ios::out | std::ios::trunc);
   if (!csv_) throw std::runtime_error(csv_path + ": cannot write the firing log: " + std::strerror(errno));
@@ -61,11 +65,13 @@ void FiringLog::write(const FiringRecord& record) {
     std::fprintf(lines_, "%s\n", line.c_str());
   }
   if (csv_.is_open()) csv_ << formatFiringCsvRow(record) << '\n';
+  if (std::chrono::steady_clock::now() - last_flush_ >= flush_period_) flush();
 }
 
 void FiringLog::flush() {
   if (lines_) std::fflush(lines_);
   if (csv_.is_open()) csv_.flush();
+  last_flush_ = std::chrono::steady_clock::now();
 }
 
 }  // namespace beft::arbiter

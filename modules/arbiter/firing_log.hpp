@@ -2,6 +2,7 @@
 // optionally a CSV file (one row per attempt) for analysis.
 #pragma once
 
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -20,14 +21,19 @@ std::string formatFiringCsvRow(const FiringRecord& record);
 class FiringLog {
  public:
   // lines: where readable lines go (nullptr: none). csv_path: "" for no CSV.
+  // Lines reach lines at the latest flush_period_s after they were written
+  // (and at flush()): a write per firing would cost the lockstep loop a
+  // system call and wake whoever reads the output ten times a tick.
   // Throws std::runtime_error when the CSV file cannot be written.
-  FiringLog(std::FILE* lines, const std::string& csv_path);
+  FiringLog(std::FILE* lines, const std::string& csv_path, double flush_period_s = 0.25);
   void write(const FiringRecord& record);
   void flush();
 
  private:
   std::FILE* lines_;
   std::ofstream csv_;
+  std::chrono::steady_clock::duration flush_period_;
+  std::chrono::steady_clock::time_point last_flush_;
 };
 
 }  // namespace beft::arbiter

@@ -32,6 +32,7 @@ void setLevel(Level level) {
 void write(Level level, const std::string& message) {
   std::lock_guard<std::mutex> lock(g_mutex);
   if (level < g_level) return;
+  std::fflush(stdout);  // what a program printed before this line stays before it in a shared pipe
   std::fprintf(stderr, "[%s] %s: %s\n", g_name.c_str(), levelName(level), message.c_str());
   std::fflush(stderr);
 }
