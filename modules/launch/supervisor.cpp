@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -33,8 +34,11 @@ using Clock = std::chrono::steady_clock;
 
 // In the child, before exec: the threads the program starts inherit both.
 // Lowering a priority needs no privilege; a failure is said and run through.
+// BEFT_BACKGROUND=0 keeps every process at the normal priority (to measure
+// what the background costs or saves).
 void applyPriority(Priority priority) {
   if (priority != Priority::Background) return;
+  if (const char* setting = std::getenv("BEFT_BACKGROUND"); setting && std::string(setting) == "0") return;
   constexpr int kBackgroundNice = 10;
   errno = 0;
   const int nice_now = getpriority(PRIO_PROCESS, 0);

@@ -209,6 +209,15 @@ TEST(Supervisor, BackgroundProcessesRunNicedAndBatch) {
   EXPECT_EQ(std::stoi(lowered[41 - 3]), SCHED_BATCH);
   EXPECT_EQ(std::stoi(plain[41 - 3]), SCHED_OTHER);
   EXPECT_EQ(std::stoi(plain[19 - 3]), getpriority(PRIO_PROCESS, 0));
+
+  // BEFT_BACKGROUND=0: everything at the normal priority.
+  setenv("BEFT_BACKGROUND", "0", 1);
+  supervise(loadLaunchFile(file, {}), options);
+  unsetenv("BEFT_BACKGROUND");
+  const auto kept = statFields(readAll(background));
+  ASSERT_GE(kept.size(), 39u);
+  EXPECT_EQ(std::stoi(kept[41 - 3]), SCHED_OTHER);
+  EXPECT_EQ(std::stoi(kept[19 - 3]), getpriority(PRIO_PROCESS, 0));
 }
 
 TEST(Supervisor, ReportsAFailedArbiter) {
