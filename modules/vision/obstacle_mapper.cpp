@@ -15,6 +15,11 @@ namespace {
 constexpr uint8_t kUnknown = obstacle_map_t::CELL_UNKNOWN;
 constexpr uint8_t kFree = obstacle_map_t::CELL_FREE;
 constexpr uint8_t kOccupied = obstacle_map_t::CELL_OCCUPIED;
+
+// Length of a ray direction's horizontal part (one formula wherever it is needed, so it is the same number).
+inline double horizontalLength(const DepthRay& ray) {
+  return std::sqrt(ray.direction.x() * ray.direction.x() + ray.direction.y() * ray.direction.y());
+}
 }  // namespace
 
 ObstacleMapper::ObstacleMapper(double world_width, double world_height, const ObstacleMapConfig& config)
@@ -26,7 +31,7 @@ ObstacleMapper::ObstacleMapper(double world_width, double world_height, const Ob
   width_ = static_cast<int>(std::ceil(world_width / config.resolution - 1e-9));
   height_ = static_cast<int>(std::ceil(world_height / config.resolution - 1e-9));
   cells_.assign(static_cast<std::size_t>(width_) * height_, kUnknown);
-  hit_in_frame_.assign(cells_.size(), 0);
+  hit_this_frame_.assign(cells_.size(), 0);
 }
 
 bool ObstacleMapper::cellOf(double x, double y, int& column, int& row) const {
@@ -81,7 +86,6 @@ void ObstacleMapper::integrate(const DepthFrameRays& rays) {
 
 template <typename RayAt>
 void ObstacleMapper::integrateRays(const Eigen::Vector3d& origin, int width, int height, bool level, RayAt&& ray_at) {
-  ++frame_;
   auto hasReturn = [](const DepthRay& ray) { return ray.t > 0 && std::isfinite(ray.t); };
 
   // One pass over the rays, bottom row first: obstacle returns (marked
@@ -92,7 +96,7 @@ void ObstacleMapper::integrateRays(const Eigen::Vector3d& origin, int width, int
   obstacle_cells.clear();
   columns_.resize(static_cast<std::size_t>(width));
   for (auto& column : columns_) {
-    column.has_return = false;
+    column.farthest_v = -1;
     column.farthest_reach = 0;
     column.floor_rays.clear();
   }
@@ -103,37 +107,38 @@ void ObstacleMapper::integrateRays(const Eigen::Vector3d& origin, int width, int
       const double hit_x = origin.x() + ray.t * ray.direction.x();
       const double hit_y = origin.y() + ray.t * ray.direction.y();
       const double hit_z = origin.z() + ray.t * ray.direction.z();
-      const double horizontal = std::sqrt(ray.direction.x() * ray.direction.x() + ray.direction.y() * ray.direction.y());
+      const double reach = ray.t * horizontalLength(ray);
       ColumnScan& column = columns_[u];
-      const double reach = ray.t * horizontal;
       if (reach > column.farthest_reach) {
         column.farthest_reach = reach;
-        column.farthest = ray;
-        column.has_return = true;
+        column.farthest_v = v;
       }
       if (hit_z <= config_.obstacle_min_height) {
-        column.floor_rays.push_back({reach, horizontal, ray});
+        column.floor_rays.push_back({reach, v});
         continue;
       }
       int cell_column = 0, cell_row = 0;
       if (!cellOf(hit_x, hit_y, cell_column, cell_row)) continue;
       const std::size_t index = static_cast<std::size_t>(cell_row) * width_ + cell_column;
-      hit_in_frame_[index] = frame_;
+      hit_this_frame_[index] = 1;
       obstacle_cells.push_back(index);
     }
   }
-  for (auto& column : columns_) {
-    if (!column.has_return) continue;
+  for (int u = 0; u < width; ++u) {
+    ColumnScan& column = columns_[u];
+    if (column.farthest_v < 0) continue;
     // Insertion sort: the bottom rows reach nearest, so this is nearly in order already.
     auto& rays = column.floor_rays;
     for (std::size_t i = 1; i < rays.size(); ++i)
       for (std::size_t k = i; k > 0 && rays[k].reach < rays[k - 1].reach; --k) std::swap(rays[k], rays[k - 1]);
+    const DepthRay farthest = ray_at(u, column.farthest_v);  // a copy: ray_at may reuse its result
     if (level)
-      walkLevelColumn(origin, column.farthest, column.farthest_reach, column.floor_rays);
+      walkLevelColumn(origin, u, farthest, column.farthest_reach, column.floor_rays, ray_at);
     else
-      traceColumnRays(origin, column.farthest, column.floor_rays);
+      traceColumnRays(origin, u, farthest, column.floor_rays, ray_at);
   }
   for (std::size_t index : obstacle_cells) set(index, kOccupied);
+  for (std::size_t index : obstacle_cells) hit_this_frame_[index] = 0;
 }
 
 template <typename Visit>
@@ -179,10 +184,10 @@ void ObstacleMapper::traverse(const Eigen::Vector3d& o, const Eigen::Vector3d& d
 // and each cell is checked against the lowest floor ray over it: the one
 // whose return is nearest beyond the cell (it descends, so it is highest
 // where it enters the cell).
-void ObstacleMapper::walkLevelColumn(const Eigen::Vector3d& origin, const DepthRay& farthest, double reach,
-                                     const std::vector<ColumnRay>& floor_rays) {
-  const double horizontal = std::sqrt(farthest.direction.x() * farthest.direction.x() +
-                                      farthest.direction.y() * farthest.direction.y());
+template <typename RayAt>
+void ObstacleMapper::walkLevelColumn(const Eigen::Vector3d& origin, int u, const DepthRay& farthest, double reach,
+                                     const std::vector<ColumnRay>& floor_rays, RayAt& ray_at) {
+  const double horizontal = horizontalLength(farthest);
   if (!(horizontal > 0)) return;
   const Eigen::Vector3d along(farthest.direction.x() / horizontal, farthest.direction.y() / horizontal, 0.0);
   const double threshold = config_.obstacle_min_height;
@@ -191,11 +196,11 @@ void ObstacleMapper::walkLevelColumn(const Eigen::Vector3d& origin, const DepthR
     const uint8_t c = cells_[index];
     if (c == kUnknown) {
       set(index, kFree);
-    } else if (c == kOccupied && hit_in_frame_[index] != frame_) {
+    } else if (c == kOccupied && !hit_this_frame_[index]) {
       while (lowest < floor_rays.size() && floor_rays[lowest].reach <= s_exit) ++lowest;
       if (lowest < floor_rays.size()) {
-        const ColumnRay& r = floor_rays[lowest];
-        const double height = origin.z() + s_enter * r.ray.direction.z() / r.horizontal;
+        const DepthRay& r = ray_at(u, floor_rays[lowest].v);
+        const double height = origin.z() + s_enter * r.direction.z() / horizontalLength(r);
         if (height < threshold) set(index, kFree);
       }
     }
@@ -207,15 +212,18 @@ void ObstacleMapper::walkLevelColumn(const Eigen::Vector3d& origin, const DepthR
 // along the farthest ray; then each floor ray's stretch below the obstacle
 // height, nearest first, from where the nearer one ended. Returns closer than
 // a cell to the last one used add nothing.
-void ObstacleMapper::traceColumnRays(const Eigen::Vector3d& origin, const DepthRay& farthest,
-                                     const std::vector<ColumnRay>& floor_rays) {
+template <typename RayAt>
+void ObstacleMapper::traceColumnRays(const Eigen::Vector3d& origin, int u, const DepthRay& farthest,
+                                     const std::vector<ColumnRay>& floor_rays, RayAt& ray_at) {
   markSeen(origin, farthest);
   const double cell_diagonal = config_.resolution * M_SQRT2;
   double covered = -1;  // horizontal distance up to which a nearer ray ran low
   for (const ColumnRay& c : floor_rays) {
     if (covered >= 0 && c.reach < covered + config_.resolution) continue;
-    const double t_from = covered > 0 && c.horizontal > 0 ? std::max(0.0, (covered - cell_diagonal) / c.horizontal) : 0.0;
-    clearBelowThreshold(origin, c.ray, t_from);
+    const DepthRay ray = ray_at(u, c.v);
+    const double horizontal = horizontalLength(ray);
+    const double t_from = covered > 0 && horizontal > 0 ? std::max(0.0, (covered - cell_diagonal) / horizontal) : 0.0;
+    clearBelowThreshold(origin, ray, t_from);
     covered = c.reach;
   }
 }
@@ -255,7 +263,7 @@ void ObstacleMapper::clearBelowThreshold(const Eigen::Vector3d& origin, const De
     const uint8_t c = cells_[index];
     if (c == kUnknown) {
       set(index, kFree);
-    } else if (c == kOccupied && !first_cell && hit_in_frame_[index] != frame_) {
+    } else if (c == kOccupied && !first_cell && !hit_this_frame_[index]) {
       const double highest = origin.z() + std::max(t_enter * ray.direction.z(), t_exit * ray.direction.z());
       if (highest < threshold) set(index, kFree);
     }

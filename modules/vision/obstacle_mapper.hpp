@@ -103,15 +103,18 @@ class ObstacleMapper {
       ++version_;
     }
   }
+  // A floor return of an image column: its ray is asked again by row when
+  // needed (16 bytes here instead of the ray's 32).
   struct ColumnRay {
-    double reach;       // horizontal distance to the return [m]
-    double horizontal;  // horizontal length of the direction
-    DepthRay ray;
+    double reach;  // horizontal distance to the return [m]
+    int32_t v;     // image row
   };
-  void walkLevelColumn(const Eigen::Vector3d& origin, const DepthRay& farthest, double reach,
-                       const std::vector<ColumnRay>& floor_rays);
-  void traceColumnRays(const Eigen::Vector3d& origin, const DepthRay& farthest,
-                       const std::vector<ColumnRay>& floor_rays);
+  template <typename RayAt>
+  void walkLevelColumn(const Eigen::Vector3d& origin, int u, const DepthRay& farthest, double reach,
+                       const std::vector<ColumnRay>& floor_rays, RayAt& ray_at);
+  template <typename RayAt>
+  void traceColumnRays(const Eigen::Vector3d& origin, int u, const DepthRay& farthest,
+                       const std::vector<ColumnRay>& floor_rays, RayAt& ray_at);
   void markSeen(const Eigen::Vector3d& origin, const DepthRay& ray);
   void markReturnCellSeen(const Eigen::Vector3d& origin, const DepthRay& ray);
   // From ray parameter t_from on (earlier cells were covered by a lower ray).
@@ -121,13 +124,13 @@ class ObstacleMapper {
   int width_ = 0;
   int height_ = 0;
   std::vector<uint8_t> cells_;
-  std::vector<uint32_t> hit_in_frame_;  // frame number of the last obstacle return per cell
-  uint32_t frame_ = 0;
+  // 1 for the cells with an obstacle return in the frame being integrated
+  // (cleared again at its end through obstacle_cells_).
+  std::vector<uint8_t> hit_this_frame_;
   uint64_t version_ = 0;
   // Scratch, kept between frames.
   struct ColumnScan {
-    bool has_return = false;
-    DepthRay farthest;
+    int farthest_v = -1;  // row of the farthest-reaching return, -1: none
     double farthest_reach = 0;
     std::vector<ColumnRay> floor_rays;
   };
