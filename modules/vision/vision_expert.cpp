@@ -69,11 +69,14 @@ bool VisionExpert::inputsReady(const expert::Firing& firing) const {
   return scene_.has(firing.tick) && depth_.has(firing.tick) && instance_.has(firing.tick);
 }
 
-// Two frames show the same view: same camera pose and intrinsics, same pixels.
-bool VisionExpert::sameView(const camera_frame_t& a, const camera_frame_t& b) {
+bool VisionExpert::samePose(const camera_frame_t& a, const camera_frame_t& b) {
   return a.encoding == b.encoding && a.width == b.width && a.height == b.height && a.fov == b.fov &&
          a.range == b.range && a.cam_x == b.cam_x && a.cam_y == b.cam_y && a.cam_z == b.cam_z &&
-         a.cam_yaw == b.cam_yaw && a.cam_pitch == b.cam_pitch && a.data == b.data;
+         a.cam_yaw == b.cam_yaw && a.cam_pitch == b.cam_pitch;
+}
+
+bool VisionExpert::sameView(const camera_frame_t& a, const camera_frame_t& b) {
+  return samePose(a, b) && a.data == b.data;
 }
 
 // Two scenes hold the same solids: same objects with the same shapes and poses.
@@ -99,11 +102,21 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
         " for tick " + std::to_string(firing.tick));
   try {
     // Expected pixels only change with the camera or the objects' shapes and poses.
-    if (!sameView(*instance, last_instance_) || !sameSolids(*scene, last_scene_)) {
+    if (expected_pose_.width == 0 || !samePose(*instance, expected_pose_) || !sameSolids(*scene, expected_scene_)) {
       const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
       expected_ = ray_caster_.expectedPixelsPerObject(solids, camera::cameraOfFrame(*instance));
-      last_instance_ = *instance;
-      last_scene_ = *scene;
+      expected_pose_ = camera_frame_t{};
+      expected_pose_.encoding = instance->encoding;
+      expected_pose_.width = instance->width;
+      expected_pose_.height = instance->height;
+      expected_pose_.fov = instance->fov;
+      expected_pose_.range = instance->range;
+      expected_pose_.cam_x = instance->cam_x;
+      expected_pose_.cam_y = instance->cam_y;
+      expected_pose_.cam_z = instance->cam_z;
+      expected_pose_.cam_yaw = instance->cam_yaw;
+      expected_pose_.cam_pitch = instance->cam_pitch;
+      expected_scene_ = *scene;
     }
     const std::vector<int> visible = countVisiblePixels(*instance, *scene);
     const visual_percepts_t percepts = estimateVisualOcclusion(*scene, visible, expected_);

@@ -35,6 +35,9 @@ class VisionExpert : public expert::Expert {
  private:
   void updateMap(const scene_objects_t& scene, const camera_frame_t& depth, int64_t tick);
   void resumeMap(int64_t first_tick);
+  // Same camera pose and intrinsics (the pixels aside).
+  static bool samePose(const camera_frame_t& a, const camera_frame_t& b);
+  // The same pose and the same pixels.
   static bool sameView(const camera_frame_t& a, const camera_frame_t& b);
   static bool sameSolids(const scene_objects_t& a, const scene_objects_t& b);
 
@@ -47,9 +50,9 @@ class VisionExpert : public expert::Expert {
   obstacle_map_t map_message_;         // the map as last encoded
   uint64_t map_message_version_ = 0;   // mapper version it encodes (0: none yet)
   camera::RayCaster ray_caster_;
-  std::vector<int> expected_;          // expected pixels per object for the view below
-  camera_frame_t last_instance_{};
-  scene_objects_t last_scene_{};
+  std::vector<int> expected_;          // expected pixels per object for the pose and solids below
+  camera_frame_t expected_pose_{};     // header only: the pixels do not matter to it
+  scene_objects_t expected_scene_{};
   expert::TickChannel<scene_objects_t> scene_;
   expert::TickChannel<camera_frame_t> depth_{4};
   expert::TickChannel<camera_frame_t> instance_{4};
