@@ -101,6 +101,19 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
         std::string("no ") + (scene == nullptr ? "GT_OBJECTS" : depth == nullptr ? "CAMERA_DEPTH" : "CAMERA_INSTANCE") +
         " for tick " + std::to_string(firing.tick));
   try {
+    // The map and the percepts need nothing of each other: the map is built
+    // on the helper thread meanwhile (it touches only the mapper's state).
+    mapping_.start([&] {
+      updateMap(*scene, *depth, firing.tick);
+      // Re-encoded only when a cell changed (a robot standing still sees no change).
+      if (map_message_version_ == 0 || mapper_->version() != map_message_version_) {
+        map_message_ = mapper_->toMessage(scene->utime, firing.tick);
+        map_message_version_ = mapper_->version();
+      }
+      map_message_.utime = scene->utime;
+      map_message_.tick = firing.tick;
+    });
+    expert::WaitOnExit mapped(mapping_);  // also when the percepts throw
     // Expected pixels only change with the camera or the objects' shapes and poses.
     if (expected_pose_.width == 0 || !samePose(*instance, expected_pose_) || !sameSolids(*scene, expected_scene_)) {
       const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
@@ -120,15 +133,8 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     }
     const std::vector<int> visible = countVisiblePixels(*instance, *scene);
     const visual_percepts_t percepts = estimateVisualOcclusion(*scene, visible, expected_);
-    updateMap(*scene, *depth, firing.tick);
-    // Re-encoded only when a cell changed (a robot standing still sees no change).
-    if (map_message_version_ == 0 || mapper_->version() != map_message_version_) {
-      map_message_ = mapper_->toMessage(scene->utime, firing.tick);
-      map_message_version_ = mapper_->version();
-    }
-    map_message_.utime = scene->utime;
-    map_message_.tick = firing.tick;
-    // Both at the end: a publish wakes the readers, who would take the cores from the mapping.
+    mapping_.wait();  // a mapping error ends up below
+    // Both at the end: a publish wakes the readers, who would take the cores from the work.
     out.publish(channels::kVision, percepts);
     out.publish(channels::kObstacleMap, map_message_);
   } catch (const std::exception& e) {

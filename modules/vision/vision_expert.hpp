@@ -14,6 +14,7 @@
 #include <beft/scene_objects_t.hpp>
 
 #include "expert.hpp"
+#include "helper_task.hpp"
 #include "obstacle_mapper.hpp"
 #include "ray_caster.hpp"
 #include "tick_channel.hpp"
@@ -56,6 +57,7 @@ class VisionExpert : public expert::Expert {
   expert::TickChannel<scene_objects_t> scene_;
   expert::TickChannel<camera_frame_t> depth_{4};
   expert::TickChannel<camera_frame_t> instance_{4};
+  expert::HelperTask mapping_;  // last: its thread ends before the state it works on goes
 };
 
 }  // namespace beft::vision

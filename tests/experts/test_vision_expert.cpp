@@ -145,3 +145,28 @@ TEST(VisionExpert, AMapForAnotherGridIsNotResumed) {
   EXPECT_EQ(map.width, 200);
   EXPECT_EQ(map.at(10, 90), obstacle_map_t::CELL_UNKNOWN);
 }
+
+TEST(VisionExpert, ABadDepthFrameFailsTheFiringAndTheNextTickWorks) {
+  // The map is built beside the percepts: its error must still reach the outcome.
+  vision::VisionExpert vision;
+  vision.onStartUp({});
+  feedTick(vision, 0);
+  camera_frame_t broken{};
+  broken.tick = 0;
+  broken.utime = 0;
+  broken.encoding = camera_frame_t::ENCODING_RGB8;
+  broken.width = 4;
+  broken.height = 2;
+  broken.data.assign(24, 0);
+  broken.data_size = 24;
+  ASSERT_TRUE(feed(vision, channels::kCameraDepth, broken));
+  Collected out;
+  const expert::Outcome failed = vision.fire(firingFor(0, 1), out);
+  EXPECT_FALSE(failed.ok);
+  EXPECT_NE(failed.message.find("DEPTH_MM16"), std::string::npos) << failed.message;
+  EXPECT_TRUE(out.latest.empty()) << "published after a failure";
+  feedTick(vision, 1);
+  ASSERT_TRUE(vision.fire(firingFor(1, 2), out).ok);
+  EXPECT_EQ(out.get<visual_percepts_t>(channels::kVision).num_percepts, 1);
+  EXPECT_EQ(planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap)).width, 200);
+}
