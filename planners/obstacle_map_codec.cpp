@@ -53,19 +53,21 @@ std::vector<uint8_t> decodeRle(const std::vector<uint8_t>& data, size_t expected
     throw ObstacleMapError("RLE data has an odd length (" + std::to_string(data.size()) +
                            " bytes); it must be (count, value) pairs");
   }
-  std::vector<uint8_t> cells;
-  cells.reserve(expected_cells);
+  std::vector<uint8_t> cells(expected_cells);
+  uint8_t* out = cells.data();
+  size_t filled = 0;
   for (size_t i = 0; i < data.size(); i += 2) {
     const size_t count = data[i];
     if (count == 0) throw ObstacleMapError("RLE pair at byte " + std::to_string(i) + " has count 0");
-    if (cells.size() + count > expected_cells) {
+    if (filled + count > expected_cells) {
       throw ObstacleMapError("RLE data holds more than the " + std::to_string(expected_cells) +
                              " cells of the map");
     }
-    cells.insert(cells.end(), count, data[i + 1]);
+    std::memset(out + filled, data[i + 1], count);
+    filled += count;
   }
-  if (cells.size() != expected_cells) {
-    throw ObstacleMapError("RLE data holds " + std::to_string(cells.size()) + " cells, the map has " +
+  if (filled != expected_cells) {
+    throw ObstacleMapError("RLE data holds " + std::to_string(filled) + " cells, the map has " +
                            std::to_string(expected_cells));
   }
   return cells;

@@ -228,19 +228,27 @@ bool Executor::pathBlocked(const Run& run) const {
   const int reach = static_cast<int>(std::ceil(clearance / map.resolution));
   const double step = map.resolution / 2;
   const auto& goal = run.path.back();
+  // The cells within the clearance, once for every sample.
+  std::vector<std::pair<int, int>> disc;
+  for (int dy = -reach; dy <= reach; ++dy)
+    for (int dx = -reach; dx <= reach; ++dx)
+      if (!((dx * dx + dy * dy) * map.resolution * map.resolution > clearance * clearance)) disc.emplace_back(dx, dy);
   const auto occupiedNear = [&](double px, double py) {
-    if (std::hypot(px - r.x, py - r.y) < 0.15) return false;  // where it stands now
-    if (std::hypot(px - goal.x, py - goal.y) < r.radius) return false;  // the goal's own surroundings
     const int cx = static_cast<int>(std::floor((px - map.origin_x) / map.resolution));
     const int cy = static_cast<int>(std::floor((py - map.origin_y) / map.resolution));
-    for (int dy = -reach; dy <= reach; ++dy)
-      for (int dx = -reach; dx <= reach; ++dx) {
-        const int x = cx + dx, y = cy + dy;
-        if (x < 0 || y < 0 || x >= map.width || y >= map.height) continue;
-        if ((dx * dx + dy * dy) * map.resolution * map.resolution > clearance * clearance) continue;
-        if (map.at(x, y) == beft::obstacle_map_t::CELL_OCCUPIED) return true;
+    bool occupied = false;
+    for (const auto& [dx, dy] : disc) {
+      const int x = cx + dx, y = cy + dy;
+      if (x < 0 || y < 0 || x >= map.width || y >= map.height) continue;
+      if (map.at(x, y) == beft::obstacle_map_t::CELL_OCCUPIED) {
+        occupied = true;
+        break;
       }
-    return false;
+    }
+    if (!occupied) return false;
+    if (std::hypot(px - r.x, py - r.y) < 0.15) return false;  // where it stands now
+    if (std::hypot(px - goal.x, py - goal.y) < r.radius) return false;  // the goal's own surroundings
+    return true;
   };
   double ax = r.x, ay = r.y;
   for (std::size_t i = run.next_waypoint; i < run.path.size(); ++i) {
