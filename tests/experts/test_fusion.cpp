@@ -249,7 +249,8 @@ TEST(Fusion, RestoredHypothesesKeepTheirVerdictsUntilNewEvidence) {
   // New acoustic evidence: the radio stays falsified; its published fused
   // confidences stand in for the visual side it has not seen again.
   after.update(Tick(objects, 4).heard("radio", "person", 0.5, 12, 6).evidence());
-  const hypothesis_t* radio = find(after.hypotheses(400000, 4), "radio");
+  const hypotheses_t latest = after.hypotheses(400000, 4);  // find() points into it
+  const hypothesis_t* radio = find(latest, "radio");
   ASSERT_NE(radio, nullptr);
   EXPECT_TRUE(radio->falsified);
   EXPECT_EQ(radio->seen_as, "siren");
