@@ -75,6 +75,21 @@ bool VisionExpert::samePose(const camera_frame_t& a, const camera_frame_t& b) {
          a.cam_yaw == b.cam_yaw && a.cam_pitch == b.cam_pitch;
 }
 
+camera_frame_t VisionExpert::poseOf(const camera_frame_t& frame) {
+  camera_frame_t pose{};
+  pose.encoding = frame.encoding;
+  pose.width = frame.width;
+  pose.height = frame.height;
+  pose.fov = frame.fov;
+  pose.range = frame.range;
+  pose.cam_x = frame.cam_x;
+  pose.cam_y = frame.cam_y;
+  pose.cam_z = frame.cam_z;
+  pose.cam_yaw = frame.cam_yaw;
+  pose.cam_pitch = frame.cam_pitch;
+  return pose;
+}
+
 bool VisionExpert::sameView(const camera_frame_t& a, const camera_frame_t& b) {
   return samePose(a, b) && a.data == b.data;
 }
@@ -118,17 +133,7 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     if (expected_pose_.width == 0 || !samePose(*instance, expected_pose_) || !sameSolids(*scene, expected_scene_)) {
       const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
       expected_ = ray_caster_.expectedPixelsPerObject(solids, camera::cameraOfFrame(*instance));
-      expected_pose_ = camera_frame_t{};
-      expected_pose_.encoding = instance->encoding;
-      expected_pose_.width = instance->width;
-      expected_pose_.height = instance->height;
-      expected_pose_.fov = instance->fov;
-      expected_pose_.range = instance->range;
-      expected_pose_.cam_x = instance->cam_x;
-      expected_pose_.cam_y = instance->cam_y;
-      expected_pose_.cam_z = instance->cam_z;
-      expected_pose_.cam_yaw = instance->cam_yaw;
-      expected_pose_.cam_pitch = instance->cam_pitch;
+      expected_pose_ = poseOf(*instance);
       expected_scene_ = *scene;
     }
     const std::vector<int> visible = countVisiblePixels(*instance, *scene);

@@ -38,6 +38,8 @@ class VisionExpert : public expert::Expert {
   void resumeMap(int64_t first_tick);
   // Same camera pose and intrinsics (the pixels aside).
   static bool samePose(const camera_frame_t& a, const camera_frame_t& b);
+  // The frame's header, without its pixels: what samePose compares.
+  static camera_frame_t poseOf(const camera_frame_t& frame);
   // The same pose and the same pixels.
   static bool sameView(const camera_frame_t& a, const camera_frame_t& b);
   static bool sameSolids(const scene_objects_t& a, const scene_objects_t& b);

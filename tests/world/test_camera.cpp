@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "camera_messages.hpp"
 #include "camera_model.hpp"
@@ -172,6 +173,17 @@ struct RandomYard {
   }
 };
 
+namespace {
+
+// The same objects, depths and colours in every pixel.
+void expectSameImage(const RenderedFrame& actual, const RenderedFrame& expected, const std::string& what) {
+  EXPECT_EQ(actual.object, expected.object) << what;
+  EXPECT_EQ(actual.depth, expected.depth) << what;
+  EXPECT_EQ(actual.rgb, expected.rgb) << what;
+}
+
+}  // namespace
+
 TEST(Camera, RenderMethodsGiveIdenticalImages) {
   RandomYard yard(42, 120);
   const SceneGeometry& scene = yard.scene;
@@ -182,11 +194,8 @@ TEST(Camera, RenderMethodsGiveIdenticalImages) {
     caster.render(scene, camera, projection, RenderMethod::Projection);
     caster.render(scene, camera, grid, RenderMethod::GridTraversal);
     caster.render(scene, camera, brute, RenderMethod::BruteForce);
-    EXPECT_EQ(projection.object, brute.object) << "view " << view;
-    EXPECT_EQ(grid.object, brute.object) << "view " << view;
-    EXPECT_EQ(projection.depth, brute.depth) << "view " << view;
-    EXPECT_EQ(grid.depth, brute.depth) << "view " << view;
-    EXPECT_EQ(projection.rgb, brute.rgb) << "view " << view;
+    expectSameImage(projection, brute, "projection, view " + std::to_string(view));
+    expectSameImage(grid, brute, "grid, view " + std::to_string(view));
     // Rendered pixels never exceed the unoccluded count.
     const std::vector<int> expected = caster.expectedPixelsPerObject(scene, camera);
     for (int object = 0; object < scene.objectCount(); ++object) {
@@ -211,12 +220,9 @@ TEST(Camera, ThreadCountDoesNotChangeTheImage) {
     two.render(scene, camera, b);
     three.render(scene, camera, c);
     one.render(scene, camera, brute, RenderMethod::BruteForce);
-    EXPECT_EQ(a.object, b.object) << "view " << view;
-    EXPECT_EQ(a.depth, b.depth) << "view " << view;
-    EXPECT_EQ(a.rgb, b.rgb) << "view " << view;
-    EXPECT_EQ(a.rgb, c.rgb) << "view " << view;
-    EXPECT_EQ(b.object, brute.object) << "view " << view;
-    EXPECT_EQ(b.depth, brute.depth) << "view " << view;
+    expectSameImage(b, a, "two threads, view " + std::to_string(view));
+    expectSameImage(c, a, "three threads, view " + std::to_string(view));
+    expectSameImage(b, brute, "two threads against brute force, view " + std::to_string(view));
   }
 }
 
