@@ -4,6 +4,7 @@
 #include <csignal>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "channels.hpp"
 #include "lcm_url.hpp"
 #include "log.hpp"
+#include "message_source.hpp"
 #include "udpm_filter.hpp"
 
 namespace {
@@ -49,26 +51,30 @@ class BlackboardProcess {
  public:
   explicit BlackboardProcess(lcm::LCM& lcm, BlackboardService& service) : lcm_(lcm), service_(service) {}
 
-  // For LCM's subscribeFunction (see main).
-  static void onAnyMessageOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, BlackboardProcess* self) {
-    self->onAnyMessage(buffer, channel);
-  }
-  static void onQueryOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, const beft::bb_query_t* query,
-                        BlackboardProcess* self) {
-    self->onQuery(buffer, channel, query);
+  // Queries by name; everything else is stored (or refused by the service).
+  void onMessage(const beft::lcm_wire::Message& message) {
+    const std::string channel(message.channel);
+    if (channel == beft::channels::kBlackboardQuery) {
+      beft::bb_query_t query;
+      const int size = static_cast<int>(message.size);
+      if (query.decode(message.data, 0, size) == size) onQuery(query);
+      else beft::log::warn("dropped a ", size, "-byte message on ", channel, " that is not a bb_query_t");
+      return;
+    }
+    onAnyMessage(channel, message.data, static_cast<int>(message.size));
   }
 
-  void onAnyMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  void onAnyMessage(const std::string& channel, const void* data, int size) {
     try {
-      const auto verdict = service_.onMessage(channel, buffer->data, static_cast<int>(buffer->data_size));
+      const auto verdict = service_.onMessage(channel, data, size);
       if (verdict == BlackboardService::Verdict::StoredNewChannel) {
-        const std::string type = beft::blackboard::typeNameOf(buffer->data, static_cast<int>(buffer->data_size));
+        const std::string type = beft::blackboard::typeNameOf(data, size);
         if (type.empty())
           beft::log::warn("new channel ", channel, ": unknown type (fingerprint not of any beft type), stored anyway");
         else
           beft::log::info("new channel ", channel, " (", type, ")");
       } else if (verdict == BlackboardService::Verdict::Rejected) {
-        beft::log::warn("dropped a ", buffer->data_size, "-byte message on ", channel,
+        beft::log::warn("dropped a ", size, "-byte message on ", channel,
                         ": too short for a fingerprint and a utime");
       }
     } catch (const std::exception& error) {
@@ -76,7 +82,8 @@ class BlackboardProcess {
     }
   }
 
-  void onQuery(const lcm::ReceiveBuffer*, const std::string&, const beft::bb_query_t* query) {
+  void onQuery(const beft::bb_query_t& query_message) {
+    const beft::bb_query_t* query = &query_message;
     try {
       const auto start = std::chrono::steady_clock::now();
       std::string why_not;
@@ -122,6 +129,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> exclude = options.exclude;
   double status_period = 10.0;
   int queue_capacity = 2000;
+  int batch_ms = 10;
   bool show_interface = false;
 
   CLI::App app(
@@ -147,10 +155,15 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   app.add_option("--queue", queue_capacity,
-                 "LCM queue capacity of the all-channel subscription [messages]; storing is a copy, so the "
-                 "queue only fills during bursts")
+                 "LCM queue capacity of the all-channel subscription, when LCM's own receive thread is used "
+                 "(not udpm, or BEFT_UDPM_RECEIVER=0) [messages]")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
+  app.add_option("--batch-ms", batch_ms,
+                 "milliseconds between reads of the stored traffic on udpm (the kernel queues it meanwhile); "
+                 "a query is answered at once, after everything sent before it is stored")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
   app.add_flag("--interface", show_interface, "print the channels read and written");
   try {
     app.parse(argc, argv);
@@ -178,23 +191,37 @@ int main(int argc, char** argv) {
     return 1;
   }
 
+  // Two sources on udpm: the stored traffic on a socket read every
+  // --batch-ms (one wake-up for many messages), and BB_QUERY on one that
+  // wakes the process at once. Excluded channels named plainly (FIRE, DONE,
+  // ...) are dropped in the kernel.
   BlackboardProcess process(lcm, *service);
-  // subscribeFunction: LCM's member-pointer subscribe crashes under GCC's
-  // -fsanitize=vptr (see the top-level CMakeLists); this form works with any flags.
-  lcm::Subscription* everything = lcm.subscribeFunction(".*", &BlackboardProcess::onAnyMessageOf, &process);
-  // The default 30 would drop messages when a tick's burst (camera frames,
-  // percepts of every expert) arrives while a large snapshot is being sent.
-  everything->setQueueCapacity(queue_capacity);
-  lcm::Subscription* queries =
-      lcm.subscribeFunction(beft::channels::kBlackboardQuery, &BlackboardProcess::onQueryOf, &process);
-  queries->setQueueCapacity(100);
-  // Excluded channels named plainly (FIRE, DONE, ...) are dropped in the kernel.
-  beft::udpm_filter::Spec filter;
-  filter.mode = beft::udpm_filter::Spec::Mode::RejectListed;
+  beft::udpm_filter::Spec stored;
+  stored.mode = beft::udpm_filter::Spec::Mode::RejectListed;
   for (const auto& pattern : options.exclude)
     if (beft::udpm_filter::isPlainChannel(pattern) && pattern != beft::channels::kBlackboardQuery)
-      filter.rules.push_back(beft::udpm_filter::channelRule(pattern));
-  beft::udpm_filter::installAndReport(lcm, lcm_url, filter);
+      stored.rules.push_back(beft::udpm_filter::channelRule(pattern));
+  beft::udpm_filter::Spec queries;
+  queries.rules.push_back(beft::udpm_filter::channelRule(beft::channels::kBlackboardQuery));
+  std::unique_ptr<beft::MessageSource> stored_source, query_source;
+  try {
+    if (beft::directReceiveFor(lcm_url)) {
+      stored.rules.push_back(beft::udpm_filter::channelRule(beft::channels::kBlackboardQuery));
+      stored_source = beft::openMessageSource(lcm, lcm_url, stored, 64);
+      query_source = beft::openMessageSource(lcm, lcm_url, queries, 4);
+      beft::log::info("queries: ", query_source->description());
+    } else {
+      // One LCM subscription takes both; the process tells queries apart.
+      stored_source = beft::openMessageSource(lcm, lcm_url, stored, 64, queue_capacity);
+    }
+  } catch (const std::exception& error) {
+    beft::log::error("cannot receive on ", lcm_url, ": ", error.what());
+    return 1;
+  }
+  beft::log::info("stored: ", stored_source->description());
+  const beft::udpm::MessageHandler handler = [&process](const beft::lcm_wire::Message& message) {
+    process.onMessage(message);
+  };
 
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);
@@ -206,7 +233,11 @@ int main(int argc, char** argv) {
   using Clock = std::chrono::steady_clock;
   auto next_status = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(status_period));
   while (!g_stop) {
-    if (lcm.handleTimeout(200) < 0) {
+    // A query wakes it at once; stored traffic is read at least every batch.
+    std::vector<int> fds{(query_source ? query_source : stored_source)->fd()};
+    beft::udpm::waitReadable(fds, query_source ? batch_ms : 200);
+    // Stored traffic first: a query is answered with everything sent before it.
+    if (stored_source->drain(handler) < 0 || (query_source && query_source->drain(handler) < 0)) {
       if (g_stop) break;  // a signal interrupted the wait
       beft::log::error("LCM failed while waiting for messages");
       return 1;

@@ -123,8 +123,9 @@ void benchLcm(const Net& net, int64_t ticks, const std::string& url) {
   ArbiterConfig config;
   config.max_ticks = ticks;
   ArbiterCore core(net, config, clock, output);
+  ArbiterEventQueue events(lcm, url);
   const auto start = std::chrono::steady_clock::now();
-  runArbiterLoop(lcm, core, clock);
+  runArbiterLoop(events, core, clock);
   stop = true;
   responder.join();
   // The final status is repeated over a few periods: leave that out of the figure.

@@ -13,7 +13,6 @@ namespace beft::arbiter {
 namespace {
 constexpr int kQueueCapacity = 10000;   // LCM 1.3.1 keeps 30 per subscription by default
 constexpr double kLongestWait_s = 0.1;  // so signals are noticed promptly
-constexpr int kMostMessagesPerBatch = 1000;
 }  // namespace
 
 double SteadyClock::now() const {
@@ -38,43 +37,37 @@ std::vector<std::string> ArbiterEventQueue::channelsRead() {
   return {channels::kDone, channels::kHeartbeat, channels::kStopRequest};
 }
 
-ArbiterEventQueue::ArbiterEventQueue(lcm::LCM& lcm) : lcm_(lcm) {
-  subscriptions_.push_back(lcm_.subscribe(channels::kDone, &ArbiterEventQueue::onDone, this));
-  subscriptions_.push_back(lcm_.subscribe(channels::kHeartbeat, &ArbiterEventQueue::onHeartbeat, this));
-  subscriptions_.push_back(
-      lcm_.subscribe(channels::kStopRequest, &ArbiterEventQueue::onStopRequest, this));
-  for (auto* subscription : subscriptions_) subscription->setQueueCapacity(kQueueCapacity);
+ArbiterEventQueue::ArbiterEventQueue(lcm::LCM& lcm, const std::string& url) {
+  udpm_filter::Spec spec;
+  for (const auto& channel : channelsRead()) spec.rules.push_back(udpm_filter::channelRule(channel));
+  source_ = openMessageSource(lcm, url, spec, 16, kQueueCapacity);
 }
 
-ArbiterEventQueue::~ArbiterEventQueue() {
-  for (auto* subscription : subscriptions_) lcm_.unsubscribe(subscription);
+ArbiterEventQueue::~ArbiterEventQueue() = default;
+
+std::string ArbiterEventQueue::description() const { return source_->description(); }
+
+bool ArbiterEventQueue::receive(int timeout_ms) {
+  return source_->receive(timeout_ms, [this](const lcm_wire::Message& message) { onMessage(message); }) >= 0;
 }
 
-// Handlers: queue only, never let an exception reach LCM.
-void ArbiterEventQueue::onDone(const lcm::ReceiveBuffer*, const std::string&, const beft::done_t* done) {
-  try {
-    events_.emplace_back(*done);
-  } catch (const std::exception& e) {
-    log::error("DONE dropped: ", e.what());
+// Queue only; what does not decode is reported and dropped.
+void ArbiterEventQueue::onMessage(const lcm_wire::Message& message) {
+  const int size = static_cast<int>(message.size);
+  if (message.channel == channels::kDone) {
+    beft::done_t done;
+    if (done.decode(message.data, 0, size) == size) return void(events_.emplace_back(std::move(done)));
+  } else if (message.channel == channels::kHeartbeat) {
+    beft::heartbeat_t heartbeat;
+    if (heartbeat.decode(message.data, 0, size) == size) return void(events_.emplace_back(std::move(heartbeat)));
+  } else if (message.channel == channels::kStopRequest) {
+    beft::run_status_t request;
+    if (request.decode(message.data, 0, size) == size)
+      return void(events_.emplace_back(StopRequest{request.message.empty() ? "STOP_REQUEST" : request.message}));
+  } else {
+    return;  // not for the arbiter
   }
-}
-
-void ArbiterEventQueue::onHeartbeat(const lcm::ReceiveBuffer*, const std::string&,
-                                    const beft::heartbeat_t* heartbeat) {
-  try {
-    events_.emplace_back(*heartbeat);
-  } catch (const std::exception& e) {
-    log::error("HEARTBEAT dropped: ", e.what());
-  }
-}
-
-void ArbiterEventQueue::onStopRequest(const lcm::ReceiveBuffer*, const std::string&,
-                                      const beft::run_status_t* request) {
-  try {
-    events_.emplace_back(StopRequest{request->message.empty() ? "STOP_REQUEST" : request->message});
-  } catch (const std::exception& e) {
-    log::error("STOP_REQUEST dropped: ", e.what());
-  }
+  log::warn("dropped a ", size, "-byte message on ", message.channel, " that does not decode");
 }
 
 void ArbiterEventQueue::deliverTo(ArbiterCore& core) {
@@ -86,8 +79,7 @@ void ArbiterEventQueue::deliverTo(ArbiterCore& core) {
   events_.clear();
 }
 
-bool runArbiterLoop(lcm::LCM& lcm, ArbiterCore& core, const Clock& clock, const StopSignals* signals) {
-  ArbiterEventQueue queue(lcm);
+bool runArbiterLoop(ArbiterEventQueue& queue, ArbiterCore& core, const Clock& clock, const StopSignals* signals) {
   int interrupts_seen = 0;
   core.start();
   while (!core.done()) {
@@ -100,11 +92,8 @@ bool runArbiterLoop(lcm::LCM& lcm, ArbiterCore& core, const Clock& clock, const 
     }
     const double wait_s = std::clamp(core.nextDeadline() - clock.now(), 0.0, kLongestWait_s);
     const int wait_ms = static_cast<int>(std::ceil(wait_s * 1e3));
-    int handled = lcm.handleTimeout(wait_ms);
-    // Take whatever else is already there, so one step sees it all.
-    for (int batch = 0; handled > 0 && batch < kMostMessagesPerBatch; ++batch)
-      handled = lcm.handleTimeout(0);
-    if (handled < 0) {
+    // Everything already there is taken at once, so one step sees it all.
+    if (!queue.receive(wait_ms)) {
       queue.deliverTo(core);
       core.onAbort("LCM receive failed");
       while (!core.done()) {

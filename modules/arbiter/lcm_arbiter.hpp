@@ -1,18 +1,20 @@
 // The arbiter on LCM. The LCM handlers only queue events; the loop, which
 // owns the core and its marking, drains the queue and lets time advance.
-// It never sleeps: it waits in lcm.handleTimeout until a message arrives or
-// the core's next deadline (a re-send, a timeout) is due.
+// It never sleeps: it waits for a message until the core's next deadline (a
+// re-send, a timeout) is due.
 #pragma once
 
 #include <lcm/lcm-cpp.hpp>
 
 #include <atomic>
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "arbiter_core.hpp"
 #include "firing_log.hpp"
+#include "message_source.hpp"
 
 namespace beft::arbiter {
 
@@ -40,28 +42,31 @@ struct StopRequest {
 };
 using ArbiterEvent = std::variant<beft::done_t, beft::heartbeat_t, StopRequest>;
 
-// Subscribes to DONE, HEARTBEAT and STOP_REQUEST and queues what arrives.
+// Receives DONE, HEARTBEAT and STOP_REQUEST (message_source.hpp: on udpm a
+// socket of its own, read in the loop's thread) and queues what arrives.
 class ArbiterEventQueue {
  public:
-  explicit ArbiterEventQueue(lcm::LCM& lcm);
+  // Throws std::runtime_error if it cannot receive on `url`.
+  ArbiterEventQueue(lcm::LCM& lcm, const std::string& url);
   ~ArbiterEventQueue();
   ArbiterEventQueue(const ArbiterEventQueue&) = delete;
   ArbiterEventQueue& operator=(const ArbiterEventQueue&) = delete;
 
-  // The channels it subscribes to: DONE, HEARTBEAT, STOP_REQUEST.
+  // The channels it receives: DONE, HEARTBEAT, STOP_REQUEST.
   static std::vector<std::string> channelsRead();
 
+  // Waits up to `timeout_ms` for messages and queues every one there.
+  // Returns false if receiving failed.
+  bool receive(int timeout_ms);
   // Hands every queued event to the core, in arrival order.
   void deliverTo(ArbiterCore& core);
   bool empty() const { return events_.empty(); }
+  std::string description() const;
 
  private:
-  void onDone(const lcm::ReceiveBuffer*, const std::string&, const beft::done_t* done);
-  void onHeartbeat(const lcm::ReceiveBuffer*, const std::string&, const beft::heartbeat_t* heartbeat);
-  void onStopRequest(const lcm::ReceiveBuffer*, const std::string&, const beft::run_status_t* request);
+  void onMessage(const lcm_wire::Message& message);
 
-  lcm::LCM& lcm_;
-  std::vector<lcm::Subscription*> subscriptions_;
+  std::unique_ptr<MessageSource> source_;
   std::vector<ArbiterEvent> events_;
 };
 
@@ -73,7 +78,7 @@ struct StopSignals {
 
 // Runs the core until it is done (final status sent). Returns false if LCM
 // stopped working (the run is then FAILED).
-bool runArbiterLoop(lcm::LCM& lcm, ArbiterCore& core, const Clock& clock,
+bool runArbiterLoop(ArbiterEventQueue& queue, ArbiterCore& core, const Clock& clock,
                     const StopSignals* signals = nullptr);
 
 }  // namespace beft::arbiter

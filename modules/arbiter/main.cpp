@@ -108,10 +108,14 @@ int main(int argc, char** argv) {
     beft::log::error("cannot open LCM at ", lcm_url);
     return 2;
   }
-  beft::udpm_filter::Spec filter;
-  for (const auto& channel : ArbiterEventQueue::channelsRead())
-    filter.rules.push_back(beft::udpm_filter::channelRule(channel));
-  beft::udpm_filter::installAndReport(lcm, lcm_url, filter);
+  std::unique_ptr<ArbiterEventQueue> events;
+  try {
+    events = std::make_unique<ArbiterEventQueue>(lcm, lcm_url);
+  } catch (const std::exception& e) {
+    beft::log::error("cannot receive on ", lcm_url, ": ", e.what());
+    return 2;
+  }
+  beft::log::info("receiving: ", events->description());
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onTerminate);
   // Fully buffered: the firing log flushes its lines every quarter second (and log lines flush it first).
@@ -122,7 +126,7 @@ int main(int argc, char** argv) {
   ArbiterCore core(std::move(net), config, clock, output);
   beft::log::info("on ", lcm_url, (config.max_ticks > 0 ? ", " + std::to_string(config.max_ticks) + " ticks" : ""),
                   " (Ctrl-C: end after this tick; twice, or SIGTERM: end now)");
-  runArbiterLoop(lcm, core, clock, &g_signals);
+  runArbiterLoop(*events, core, clock, &g_signals);
   firing_log->flush();
 
   const ArbiterStats& s = core.stats();

@@ -128,6 +128,26 @@ std::vector<sock_filter> compile(const Spec& spec) {
   return code;
 }
 
+bool accepts(const Spec& spec, std::string_view channel, const void* data, std::size_t size) {
+  const bool accept_listed = spec.mode == Spec::Mode::AcceptListed;
+  const auto* bytes = static_cast<const char*>(data);
+  for (const auto& rule : spec.rules) {
+    if (channel != rule.channel) continue;
+    if (!rule.field.empty()) {
+      const std::size_t at = kFingerprintBytes + rule.field_offset;
+      if (size < at + rule.field.size() || std::string_view(bytes + at, rule.field.size()) != rule.field) continue;
+    }
+    return accept_listed;
+  }
+  return !accept_listed;
+}
+
+bool attach(int fd, const Spec& spec) {
+  auto code = compile(spec);
+  sock_fprog program{static_cast<unsigned short>(code.size()), code.data()};
+  return setsockopt(fd, SOL_SOCKET, SO_ATTACH_FILTER, &program, sizeof(program)) == 0;
+}
+
 int udpmPort(const std::string& url) {
   const std::string scheme = "udpm://";
   if (url.rfind(scheme, 0) != 0) return -1;
@@ -176,11 +196,19 @@ bool install(lcm::LCM& lcm, const std::string& url, const Spec& spec, std::strin
   if (lcm_get_fileno(lcm.getUnderlyingLCM()) < 0) return fail("LCM has no receive socket");
   const int fd = findReceiveSocket(port);
   if (fd < 0) return fail("no single UDP socket bound to port " + std::to_string(port));
-  auto code = compile(spec);
-  sock_fprog program{static_cast<unsigned short>(code.size()), code.data()};
-  if (setsockopt(fd, SOL_SOCKET, SO_ATTACH_FILTER, &program, sizeof(program)) != 0)
-    return fail("SO_ATTACH_FILTER failed");
+  if (!attach(fd, spec)) return fail("SO_ATTACH_FILTER failed");
   return true;
+}
+
+std::string describe(const Spec& spec) {
+  std::string listed, previous;
+  for (const auto& rule : spec.rules) {
+    const std::string item = rule.channel + (rule.what.empty() ? "" : " (" + rule.what + ")");
+    if (item != previous) listed += (listed.empty() ? "" : ", ") + item;
+    previous = item;
+  }
+  return (spec.mode == Spec::Mode::AcceptListed ? "receiving only " : "dropping ") +
+         (listed.empty() ? std::string("nothing") : listed);
 }
 
 bool installAndReport(lcm::LCM& lcm, const std::string& url, const Spec& spec) {
@@ -189,14 +217,7 @@ bool installAndReport(lcm::LCM& lcm, const std::string& url, const Spec& spec) {
     log::info("every channel reaches this process (no kernel filter: ", why, ")");
     return false;
   }
-  std::string listed, previous;
-  for (const auto& rule : spec.rules) {
-    const std::string item = rule.channel + (rule.what.empty() ? "" : " (" + rule.what + ")");
-    if (item != previous) listed += (listed.empty() ? "" : ", ") + item;
-    previous = item;
-  }
-  log::info(spec.mode == Spec::Mode::AcceptListed ? "kernel filter: receiving only " : "kernel filter: dropping ",
-            listed.empty() ? std::string("nothing") : listed);
+  log::info("kernel filter: ", describe(spec));
   return true;
 }
 

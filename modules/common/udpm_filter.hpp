@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lcm {
@@ -57,10 +58,20 @@ bool isPlainChannel(const std::string& pattern);
 // to jump over (a channel or field of hundreds of bytes).
 std::vector<sock_filter> compile(const Spec& spec);
 
+// What the program decides, for a whole message (channel and encoded bytes):
+// used for fragmented messages, which the program lets through unseen.
+bool accepts(const Spec& spec, std::string_view channel, const void* data, std::size_t size);
+
+// Attaches the program to a socket; false (errno set) if the kernel refuses.
+bool attach(int fd, const Spec& spec);
+
 // Attaches the program to `lcm`'s receive socket when `url` is udpm. Returns
 // false, with the reason in `why`, when it did not (another provider, filtering
 // turned off, the socket not found); LCM then works unfiltered as before.
 bool install(lcm::LCM& lcm, const std::string& url, const Spec& spec, std::string* why = nullptr);
+
+// "receiving only A, B (own firings)" or "dropping A, B": what a spec lets through.
+std::string describe(const Spec& spec);
 
 // install(), with one line in the process's log saying what it did.
 bool installAndReport(lcm::LCM& lcm, const std::string& url, const Spec& spec);

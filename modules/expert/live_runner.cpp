@@ -6,6 +6,7 @@
 #include <chrono>
 #include <csignal>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 
@@ -19,6 +20,7 @@
 #include "channels.hpp"
 #include "heartbeat_thread.hpp"
 #include "log.hpp"
+#include "message_source.hpp"
 #include "udpm_filter.hpp"
 
 namespace beft::expert {
@@ -55,23 +57,26 @@ class Runner {
       : expert_(expert), options_(options), lcm_(lcm), output_(lcm) {}
 
   int run() {
-    for (const auto& spec : expert_.reads()) {
-      auto* sub = lcm_.subscribe(spec.channel, &Runner::onInput, this);
-      sub->setQueueCapacity(1000);  // LCM 1.3.1 keeps 30 by default and drops the rest
-      read_channels_.insert(spec.channel);
-    }
-    lcm_.subscribe(channels::kFire, &Runner::onFire, this)->setQueueCapacity(1000);
-    lcm_.subscribe(channels::kRunStatus, &Runner::onRunStatus, this);
-    if (options_.catch_up) subscribeToSnapshot();
-    installChannelFilter();
+    for (const auto& spec : expert_.reads()) read_channels_.insert(spec.channel);
+    if (options_.catch_up)
+      snapshot_channel_ = std::string(channels::kBlackboardSnapshotPrefix) + options_.process_name + "_" +
+                          std::to_string(getpid());
+    if (!openSources()) return 1;
     if (options_.catch_up) requestSnapshot();
 
     log::info("ready: waiting for FIRE on ", options_.lcm_url);
     heartbeat_.emplace(lcm_, options_.process_name, options_.heartbeat_period_s);
+    const udpm::MessageHandler handler = [this](const lcm_wire::Message& message) { onMessage(message); };
     while (!g_stop_requested && !run_ended_) {
-      // Short waits while a firing waits for its inputs; else 100 ms, so a signal is seen.
-      const int timeout_ms = pending_ && !pending_fired_ ? 5 : 100;
-      if (lcm_.handleTimeout(timeout_ms) < 0) {
+      // Short waits while a firing waits for its inputs (then their socket
+      // wakes it too); else 100 ms, so a signal is seen.
+      const bool waiting_for_inputs = pending_ && !pending_fired_;
+      std::vector<int> fds{control_->fd()};
+      if (inputs_ && waiting_for_inputs) fds.push_back(inputs_->fd());
+      udpm::waitReadable(fds, waiting_for_inputs ? 5 : 100);
+      // Inputs first: what was published before a FIRE is then stored before
+      // the FIRE is served.
+      if ((inputs_ && inputs_->drain(handler) < 0) || control_->drain(handler) < 0) {
         if (g_stop_requested) break;  // the signal interrupted the wait
         log::error("LCM receive failed; stopping");
         return 1;
@@ -85,9 +90,26 @@ class Runner {
   }
 
  private:
-  void onInput(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-    live_channels_.insert(channel);
-    deliver(channel, rbuf->data, static_cast<int>(rbuf->data_size));
+  // One handler for both sources: the control channels by name, then inputs.
+  void onMessage(const lcm_wire::Message& message) {
+    const std::string channel(message.channel);
+    const int size = static_cast<int>(message.size);
+    if (channel == channels::kFire) {
+      beft::fire_t fire;
+      if (decodeMessage(message.data, size, fire)) onFire(fire);
+      else reportUnhandled(channel);
+    } else if (channel == channels::kRunStatus) {
+      beft::run_status_t status;
+      if (decodeMessage(message.data, size, status)) onRunStatus(status);
+      else reportUnhandled(channel);
+    } else if (!snapshot_channel_.empty() && channel == snapshot_channel_) {
+      beft::bb_snapshot_t snapshot;
+      if (decodeMessage(message.data, size, snapshot)) onSnapshot(snapshot);
+      else reportUnhandled(channel);
+    } else if (read_channels_.count(channel)) {
+      live_channels_.insert(channel);
+      deliver(channel, message.data, size);
+    }
   }
 
   void deliver(const std::string& channel, const void* data, int size) {
@@ -103,7 +125,8 @@ class Runner {
       log::warn("message on ", channel, " not understood (", unhandled_[channel], " so far)");
   }
 
-  void onFire(const lcm::ReceiveBuffer*, const std::string&, const beft::fire_t* fire) {
+  void onFire(const beft::fire_t& fire_message) {
+    const beft::fire_t* fire = &fire_message;
     if (fire->expert != options_.process_name) return;
     if (pending_ && pending_->firing_id >= fire->firing_id) {
       if (pending_->firing_id == fire->firing_id && pending_fired_) resendDone();
@@ -119,7 +142,8 @@ class Runner {
     pending_since_ = Clock::now();
   }
 
-  void onRunStatus(const lcm::ReceiveBuffer*, const std::string&, const beft::run_status_t* s) {
+  void onRunStatus(const beft::run_status_t& status) {
+    const beft::run_status_t* s = &status;
     // An arbiter that started after this expert's last heartbeat waits for
     // the next one: answer at once (at most every 50 ms) instead.
     if (s->state == beft::run_status_t::STATE_WAITING && heartbeat_ &&
@@ -177,18 +201,21 @@ class Runner {
 
   void resendDone() { lcm_.publish(channels::kDone, &last_done_); }
 
-  // Only this expert's inputs, its own FIREs, the run status and its snapshot
-  // answer wake it up; everything else is dropped in the kernel.
-  void installChannelFilter() {
-    udpm_filter::Spec spec;
+  // What wakes the expert: its own FIREs, the run's waiting and end, and its
+  // snapshot answer. Its inputs go to a socket of their own that nothing
+  // waits on: the kernel queues them and they are read when a FIRE comes.
+  // Everything else is dropped in the kernel. Without the direct receiver
+  // (another provider, BEFT_UDPM_RECEIVER=0) one LCM subscription takes both.
+  bool openSources() {
+    udpm_filter::Spec control_spec, input_spec;
     for (const auto& channel : read_channels_) {
       if (!udpm_filter::isPlainChannel(channel)) {
-        log::info("every channel reaches this process (it reads the pattern ", channel, ")");
-        return;
+        log::error("reads() names '", channel, "': an expert reads channels by name, not by pattern");
+        return false;
       }
-      spec.rules.push_back(udpm_filter::channelRule(channel));
+      input_spec.rules.push_back(udpm_filter::channelRule(channel));
     }
-    spec.rules.push_back(udpm_filter::fireFor(channels::kFire, options_.process_name));
+    control_spec.rules.push_back(udpm_filter::fireFor(channels::kFire, options_.process_name));
     // Only an arbiter waiting for heartbeats and the end of the run matter
     // here, not the status of every tick: run_status_t's state byte follows
     // utime and tick.
@@ -198,16 +225,26 @@ class Runner {
       rule.field_offset = 16;
       rule.field = std::string(1, static_cast<char>(state));
       rule.what = "waiting and end of run";
-      spec.rules.push_back(rule);
+      control_spec.rules.push_back(rule);
     }
-    if (!snapshot_channel_.empty()) spec.rules.push_back(udpm_filter::channelRule(snapshot_channel_));
-    udpm_filter::installAndReport(lcm_, options_.lcm_url, spec);
-  }
-
-  void subscribeToSnapshot() {
-    snapshot_channel_ = std::string(channels::kBlackboardSnapshotPrefix) + options_.process_name +
-                        "_" + std::to_string(getpid());
-    lcm_.subscribe(snapshot_channel_, &Runner::onSnapshot, this);
+    if (!snapshot_channel_.empty()) control_spec.rules.push_back(udpm_filter::channelRule(snapshot_channel_));
+    try {
+      if (directReceiveFor(options_.lcm_url)) {
+        inputs_ = openMessageSource(lcm_, options_.lcm_url, input_spec);
+        control_ = openMessageSource(lcm_, options_.lcm_url, control_spec, 4);
+        log::info("inputs: ", inputs_->description());
+        log::info("control: ", control_->description());
+      } else {
+        udpm_filter::Spec both = input_spec;
+        both.rules.insert(both.rules.end(), control_spec.rules.begin(), control_spec.rules.end());
+        control_ = openMessageSource(lcm_, options_.lcm_url, both);
+        log::info("receiving: ", control_->description());
+      }
+    } catch (const std::exception& e) {
+      log::error("cannot receive on ", options_.lcm_url, ": ", e.what());
+      return false;
+    }
+    return true;
   }
 
   // Late joiners: ask the blackboard for the latest message of each channel
@@ -222,7 +259,8 @@ class Runner {
     lcm_.publish(channels::kBlackboardQuery, &query);
   }
 
-  void onSnapshot(const lcm::ReceiveBuffer*, const std::string&, const beft::bb_snapshot_t* snap) {
+  void onSnapshot(const beft::bb_snapshot_t& snapshot) {
+    const beft::bb_snapshot_t* snap = &snapshot;
     if (snapshot_received_) return;
     snapshot_received_ = true;
     int used = 0;
@@ -245,6 +283,7 @@ class Runner {
   Clock::time_point pending_since_;
   Clock::time_point last_waiting_answer_;
   int64_t last_fired_id_ = -1;
+  std::unique_ptr<MessageSource> control_, inputs_;  // inputs_ only with the direct receiver
   std::optional<HeartbeatThread> heartbeat_;  // from the start of the loop to its end
   beft::done_t last_done_;
   int64_t firings_run_ = 0;

@@ -10,7 +10,7 @@
 
 namespace beft::record {
 
-Recorder::Recorder(lcm::LCM& lcm, RecordOptions options) : lcm_(lcm), options_(std::move(options)) {
+Recorder::Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options) : options_(std::move(options)) {
   std::error_code error;
   if (!options_.overwrite && std::filesystem::exists(options_.path, error))
     throw std::runtime_error(options_.path + ": exists (--force replaces it)");
@@ -23,52 +23,45 @@ Recorder::Recorder(lcm::LCM& lcm, RecordOptions options) : lcm_(lcm), options_(s
     }
   }
   // Listening before the file appears: whoever waits for the file to start
-  // publishing (the launcher) loses nothing.
-  subscription_ = lcm_.subscribeFunction(".*", &Recorder::onMessageOf, this);
-  subscription_->setQueueCapacity(options_.queue_capacity);
-  lcm_get_fileno(lcm_.getUnderlyingLCM());  // LCM opens its receive socket here at the latest
+  // publishing (the launcher) loses nothing. Every channel: an empty list of
+  // channels to drop.
+  udpm_filter::Spec everything;
+  everything.mode = udpm_filter::Spec::Mode::RejectListed;
+  source_ = openMessageSource(lcm, url, everything, 64, options_.queue_capacity);
+  writer_ = [this](const lcm_wire::Message& message) {
+    try {
+      write(message);
+    } catch (const std::exception& e) {
+      log::error("message on ", message.channel, " not recorded: ", e.what());
+    }
+  };
   log_ = std::make_unique<lcm::LogFile>(options_.path, "w");
-  if (!log_->good()) {
-    lcm_.unsubscribe(subscription_);
-    subscription_ = nullptr;
-    throw std::runtime_error(options_.path + ": cannot be written");
-  }
+  if (!log_->good()) throw std::runtime_error(options_.path + ": cannot be written");
 }
 
-Recorder::~Recorder() {
-  if (subscription_) lcm_.unsubscribe(subscription_);
-  flush();
-}
+Recorder::~Recorder() { flush(); }
 
-void Recorder::onMessageOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, Recorder* self) {
-  try {
-    self->write(buffer, channel);
-  } catch (const std::exception& e) {
-    log::error("message on ", channel, " not recorded: ", e.what());
-  }
-}
-
-void Recorder::write(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+void Recorder::write(const lcm_wire::Message& message) {
+  const std::string channel(message.channel);
   if (has_exclude_ && std::regex_match(channel, exclude_)) return;
   lcm::LogEvent event;
   event.eventnum = 0;  // the log file numbers events itself
-  event.timestamp = buffer->recv_utime;
+  event.timestamp = message.recv_utime;
   event.channel = channel;
-  event.datalen = static_cast<int32_t>(buffer->data_size);
-  event.data = buffer->data;
+  event.datalen = static_cast<int32_t>(message.size);
+  event.data = const_cast<uint8_t*>(message.data);
   if (log_->writeEvent(&event) != 0) throw std::runtime_error("write failed (disk full?)");
   ++events_;
-  bytes_ += buffer->data_size;
+  bytes_ += static_cast<int64_t>(message.size);
 }
 
-bool Recorder::handle(int timeout_ms) { return lcm_.handleTimeout(timeout_ms) >= 0; }
+int Recorder::handle(int timeout_ms) { return source_->receive(timeout_ms, writer_); }
 
 void Recorder::drain(int quiet_ms, int longest_ms) {
   using Clock = std::chrono::steady_clock;
   const auto give_up = Clock::now() + std::chrono::milliseconds(longest_ms);
   while (Clock::now() < give_up) {
-    const int handled = lcm_.handleTimeout(quiet_ms);
-    if (handled <= 0) break;  // quiet for quiet_ms, or an error
+    if (handle(quiet_ms) <= 0) break;  // quiet for quiet_ms, or an error
   }
 }
 

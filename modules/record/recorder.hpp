@@ -6,21 +6,22 @@
 // process each tick: lcm-logger 1.3 keeps LCM's default 30 queued messages per
 // subscription and drops the rest when it falls behind, passes each message
 // through a writer thread (one more wake-up per message), and discards what
-// is still queued when it is stopped. The recorder writes from the handler
-// into a buffered file, keeps a deep queue, and on stop takes everything still
-// arriving before it closes the file.
+// is still queued when it is stopped. The recorder reads with the direct
+// receiver (message_source.hpp: every datagram queued, one system call, the
+// kernel's receive time as the timestamp), writes into a buffered file, and
+// on stop takes everything still arriving before it closes the file.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+
+#include "message_source.hpp"
 #include <regex>
 #include <string>
 
 namespace lcm {
 class LCM;
 class LogFile;
-class ReceiveBuffer;
-class Subscription;
 }  // namespace lcm
 
 namespace beft::record {
@@ -29,36 +30,38 @@ struct RecordOptions {
   std::string path;           // the log file to write
   bool overwrite = false;     // replace an existing file
   std::string exclude_regex;  // channels not recorded (empty: record all)
-  int queue_capacity = 100000;
+  int queue_capacity = 100000;  // LCM's queue, when LCM's own receive thread is used
 };
 
 class Recorder {
  public:
-  // Subscribes, then creates the file (so once the file exists, everything
-  // sent is recorded); throws std::runtime_error with the reason if it cannot.
-  Recorder(lcm::LCM& lcm, RecordOptions options);
+  // Starts receiving on `url` (which `lcm` was opened with), then creates the
+  // file (so once the file exists, everything sent is recorded); throws
+  // std::runtime_error with the reason if it cannot.
+  Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options);
   ~Recorder();
   Recorder(const Recorder&) = delete;
   Recorder& operator=(const Recorder&) = delete;
 
-  // Handles what arrives for up to `timeout_ms`; false if LCM failed.
-  bool handle(int timeout_ms);
+  // Waits up to `timeout_ms` for messages and writes every one there;
+  // returns how many, -1 if receiving failed.
+  int handle(int timeout_ms);
   // Keeps writing until nothing arrived for `quiet_ms` (or `longest_ms` passed).
   void drain(int quiet_ms, int longest_ms);
   void flush();
 
   int64_t events() const { return events_; }
   int64_t bytes() const { return bytes_; }
-
-  static void onMessageOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, Recorder* self);
+  uint64_t kernelDropped() const { return source_->kernelDropped(); }
+  std::string description() const { return source_->description(); }
 
  private:
-  void write(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  void write(const lcm_wire::Message& message);
 
-  lcm::LCM& lcm_;
   RecordOptions options_;
   std::unique_ptr<lcm::LogFile> log_;
-  lcm::Subscription* subscription_ = nullptr;
+  std::unique_ptr<MessageSource> source_;
+  udpm::MessageHandler writer_;
   std::regex exclude_;
   bool has_exclude_ = false;
   int64_t events_ = 0, bytes_ = 0;

@@ -60,7 +60,7 @@ TEST(Recorder, WritesEveryMessageInOrderAndLeavesOutExcludedChannels) {
     beft::record::RecordOptions options;
     options.path = path;
     options.exclude_regex = "HEARTBEAT|FIRE";
-    beft::record::Recorder recorder(lcm, options);
+    beft::record::Recorder recorder(lcm, "memq://", options);
     for (int i = 0; i < 200; ++i) {
       const std::string data = payload(i, i % 50 == 0 ? 60000 : 16);
       lcm.publish(i % 3 == 0 ? "A" : i % 3 == 1 ? "HEARTBEAT" : "B_LONGER_NAME", data.data(),
@@ -87,16 +87,16 @@ TEST(Recorder, RefusesToReplaceAFileOrABadPattern) {
   lcm::LCM lcm("memq://");
   beft::record::RecordOptions options;
   options.path = path;
-  EXPECT_THROW(beft::record::Recorder(lcm, options), std::runtime_error);
+  EXPECT_THROW(beft::record::Recorder(lcm, "memq://", options), std::runtime_error);
   std::stringstream kept;
   kept << std::ifstream(path).rdbuf();
   EXPECT_EQ(kept.str(), "precious");
   options.overwrite = true;
   options.exclude_regex = "(unclosed";
-  EXPECT_THROW(beft::record::Recorder(lcm, options), std::runtime_error);
+  EXPECT_THROW(beft::record::Recorder(lcm, "memq://", options), std::runtime_error);
   options.exclude_regex.clear();
   options.path = tempPath("no/such/folder/x.lcmlog");
-  EXPECT_THROW(beft::record::Recorder(lcm, options), std::runtime_error);
+  EXPECT_THROW(beft::record::Recorder(lcm, "memq://", options), std::runtime_error);
   std::filesystem::remove(path);
 }
 

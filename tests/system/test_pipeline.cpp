@@ -164,19 +164,38 @@ TEST(Pipeline, EachExpertFiresOncePerTickInThePapersOrder) {
 }
 
 TEST(Pipeline, EveryProcessReceivesOnlyWhatItReads) {
-  // The kernel channel filter is on in every process of a udpm run, and an
-  // expert hears its own firings only.
+  // On udpm every process reads a socket of its own with a kernel filter: an
+  // expert's inputs on one (read when a FIRE comes), its own firings and the
+  // run's end on the one it waits on.
   const ShortRun& run = shortYardRun();
   const std::string record = runCommand("cat " + run.dir + "/processes.log", 10).output;
+  auto lineAfter = [&record](const std::string& start) {
+    const auto at = record.find(start);
+    return at == std::string::npos ? std::string() : record.substr(at, record.find('\n', at) - at);
+  };
   for (const std::string process : {"world", "geometry", "vision", "audio", "visual_labels", "acoustic_labels",
-                                    "fusion", "dw", "exploration", "tasks", "arbiter", "planner"}) {
-    const auto line_start = record.find("[" + process + "] [" + process + "] info: kernel filter: receiving only ");
-    EXPECT_NE(line_start, std::string::npos) << process << " has no kernel filter:\n" << record.substr(0, 3000);
-    if (line_start == std::string::npos || process == "arbiter" || process == "planner") continue;
-    const std::string line = record.substr(line_start, record.find('\n', line_start) - line_start);
-    EXPECT_NE(line.find("FIRE (own firings)"), std::string::npos) << line;
+                                    "fusion", "dw", "exploration", "tasks"}) {
+    const std::string prefix = "[" + process + "] [" + process + "] info: ";
+    const std::string inputs = lineAfter(prefix + "inputs: own receive socket");
+    const std::string control = lineAfter(prefix + "control: own receive socket");
+    EXPECT_NE(inputs.find("kernel filter: receiving only "), std::string::npos) << process << ":\n" << inputs;
+    EXPECT_EQ(inputs.find("FIRE"), std::string::npos) << inputs;
+    EXPECT_NE(control.find("kernel filter: receiving only FIRE (own firings), RUN_STATUS (waiting and end of run)"),
+              std::string::npos)
+        << process << ":\n" << control;
   }
-  EXPECT_NE(record.find("[blackboard] [blackboard] info: kernel filter: dropping FIRE, DONE, HEARTBEAT, MARKING"),
+  EXPECT_NE(lineAfter("[vision] [vision] info: inputs: ").find("CAMERA_DEPTH, CAMERA_INSTANCE, GT_OBJECTS"),
+            std::string::npos);
+  EXPECT_NE(lineAfter("[arbiter] [arbiter] info: receiving: own receive socket")
+                .find("kernel filter: receiving only DONE, HEARTBEAT, STOP_REQUEST"),
+            std::string::npos)
+      << record.substr(0, 3000);
+  EXPECT_NE(lineAfter("[planner] [planner] info: kernel filter: receiving only "), "");
+  EXPECT_NE(lineAfter("[blackboard] [blackboard] info: stored: own receive socket")
+                .find("kernel filter: dropping FIRE, DONE, HEARTBEAT, MARKING, BB_QUERY"),
+            std::string::npos);
+  EXPECT_NE(lineAfter("[blackboard] [blackboard] info: queries: own receive socket")
+                .find("kernel filter: receiving only BB_QUERY"),
             std::string::npos);
 }
 

@@ -1,0 +1,117 @@
+#include "message_source.hpp"
+
+#include <cstdlib>
+#include <set>
+#include <stdexcept>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include "log.hpp"
+
+namespace beft {
+
+namespace {
+
+class DirectSource : public MessageSource {
+ public:
+  DirectSource(const udpm::Endpoint& endpoint, const udpm_filter::Spec& spec, std::size_t batch)
+      : receiver_(endpoint, spec, batch), what_(udpm_filter::describe(spec)) {}
+
+  int fd() const override { return receiver_.fd(); }
+  int drain(const udpm::MessageHandler& handler) override { return receiver_.drain(handler); }
+  std::string description() const override {
+    return "own receive socket (" + std::to_string(receiver_.receiveBufferBytes() / 1024) + " KiB buffer), " +
+           (receiver_.countsLosses() ? std::string("every channel, losses counted") : "kernel filter: " + what_);
+  }
+  uint64_t kernelDropped() const override { return receiver_.stats().kernel_dropped; }
+
+ private:
+  udpm::Receiver receiver_;
+  std::string what_;
+};
+
+// LCM's own receive path: subscriptions to the spec's channels (or to every
+// channel when it lists what to drop), checked against the spec here.
+class LcmSource : public MessageSource {
+ public:
+  LcmSource(lcm::LCM& lcm, const std::string& url, udpm_filter::Spec spec, int queue_capacity)
+      : lcm_(lcm), spec_(std::move(spec)) {
+    std::set<std::string> channels;
+    bool everything = spec_.mode == udpm_filter::Spec::Mode::RejectListed;
+    for (const auto& rule : spec_.rules) {
+      if (!udpm_filter::isPlainChannel(rule.channel)) everything = true;
+      channels.insert(rule.channel);
+    }
+    if (everything) channels = {".*"};
+    for (const auto& channel : channels) {
+      // subscribeFunction: the member-pointer form crashes under GCC's -fsanitize=vptr.
+      auto* subscription = lcm_.subscribeFunction(channel, &LcmSource::onMessageOf, this);
+      subscription->setQueueCapacity(queue_capacity);  // LCM 1.3.1 keeps 30 by default
+      subscriptions_.push_back(subscription);
+    }
+    if (udpm_filter::installAndReport(lcm_, url, spec_))
+      what_ = "LCM's receive thread, kernel filter: " + udpm_filter::describe(spec_);
+    else
+      what_ = "LCM's receive thread, every channel";
+  }
+  ~LcmSource() override {
+    for (auto* subscription : subscriptions_) lcm_.unsubscribe(subscription);
+  }
+
+  int fd() const override { return lcm_.getFileno(); }
+
+  int drain(const udpm::MessageHandler& handler) override {
+    handler_ = &handler;
+    handed_ = 0;
+    int status = 0;
+    while ((status = lcm_.handleTimeout(0)) > 0) {
+    }
+    handler_ = nullptr;
+    return status < 0 ? -1 : handed_;
+  }
+
+  std::string description() const override { return what_; }
+
+  static void onMessageOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, LcmSource* self) {
+    if (!self->handler_ || !udpm_filter::accepts(self->spec_, channel, buffer->data, buffer->data_size)) return;
+    lcm_wire::Message message;
+    message.channel = channel;
+    message.data = static_cast<const uint8_t*>(buffer->data);
+    message.size = buffer->data_size;
+    message.recv_utime = buffer->recv_utime;
+    ++self->handed_;
+    (*self->handler_)(message);
+  }
+
+ private:
+  lcm::LCM& lcm_;
+  udpm_filter::Spec spec_;
+  std::vector<lcm::Subscription*> subscriptions_;
+  const udpm::MessageHandler* handler_ = nullptr;
+  int handed_ = 0;
+  std::string what_;
+};
+
+}  // namespace
+
+int MessageSource::receive(int timeout_ms, const udpm::MessageHandler& handler) {
+  if (!udpm::waitReadable({fd()}, timeout_ms)) return 0;
+  return drain(handler);
+}
+
+bool directReceiveFor(const std::string& url, std::string* why) {
+  if (const char* setting = std::getenv("BEFT_UDPM_RECEIVER"); setting && std::string(setting) == "0") {
+    if (why) *why = "turned off by BEFT_UDPM_RECEIVER=0";
+    return false;
+  }
+  return udpm::parseUrl(url, why).has_value();
+}
+
+std::unique_ptr<MessageSource> openMessageSource(lcm::LCM& lcm, const std::string& url,
+                                                 const udpm_filter::Spec& spec, std::size_t batch,
+                                                 int lcm_queue_capacity) {
+  if (directReceiveFor(url)) return std::make_unique<DirectSource>(*udpm::parseUrl(url), spec, batch);
+  return std::make_unique<LcmSource>(lcm, url, spec, lcm_queue_capacity);
+}
+
+}  // namespace beft
