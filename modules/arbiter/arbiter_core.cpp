@@ -53,6 +53,12 @@ ArbiterCore::ArbiterCore(Net net, ArbiterConfig config, Clock& clock, ArbiterOut
     transition_expert_.push_back(transition.silent() ? -1 : expertIndex(transition.expert));
 }
 
+int ArbiterCore::firingsInFlight() const {
+  int count = 0;
+  for (const auto& expert : experts_) count += expert.running ? 1 : 0;
+  return count;
+}
+
 std::vector<std::string> ArbiterCore::missingExperts() const {
   std::vector<std::string> missing;
   for (const auto& expert : experts_)

@@ -120,6 +120,8 @@ class ArbiterCore {
   const Marking& marking() const { return marking_; }
   const Net& net() const { return net_; }
   const ArbiterStats& stats() const { return stats_; }
+  // Firings sent and not yet ended (DONE, expiry).
+  int firingsInFlight() const;
   // Experts whose first heartbeat has not arrived yet.
   std::vector<std::string> missingExperts() const;
 

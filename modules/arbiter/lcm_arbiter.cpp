@@ -5,6 +5,8 @@
 #include <cmath>
 #include <thread>
 
+#include <sched.h>
+
 #include "channels.hpp"
 #include "log.hpp"
 
@@ -47,8 +49,18 @@ ArbiterEventQueue::~ArbiterEventQueue() = default;
 
 std::string ArbiterEventQueue::description() const { return source_->description(); }
 
-bool ArbiterEventQueue::receive(int timeout_ms) {
-  return source_->receive(timeout_ms, [this](const lcm_wire::Message& message) { onMessage(message); }) >= 0;
+bool ArbiterEventQueue::receive(int timeout_ms, int spin_us) {
+  const udpm::MessageHandler handler = [this](const lcm_wire::Message& message) { onMessage(message); };
+  if (spin_us > 0 && timeout_ms > 0) {
+    // Poll before sleeping: a short firing's DONE is then taken as it comes,
+    // without this process going to sleep and being woken again (on a
+    // virtual machine, waking a halted CPU takes tens of microseconds, and a
+    // tick waits for one DONE after another). Yielding meanwhile, so a
+    // process with work on this CPU runs first.
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::microseconds(spin_us);
+    while (!udpm::waitReadable({source_->fd()}, 0) && std::chrono::steady_clock::now() < give_up) sched_yield();
+  }
+  return source_->receive(timeout_ms, handler) >= 0;
 }
 
 // Queue only; what does not decode is reported and dropped.
@@ -79,7 +91,8 @@ void ArbiterEventQueue::deliverTo(ArbiterCore& core) {
   events_.clear();
 }
 
-bool runArbiterLoop(ArbiterEventQueue& queue, ArbiterCore& core, const Clock& clock, const StopSignals* signals) {
+bool runArbiterLoop(ArbiterEventQueue& queue, ArbiterCore& core, const Clock& clock, const StopSignals* signals,
+                    int spin_us) {
   int interrupts_seen = 0;
   core.start();
   while (!core.done()) {
@@ -93,7 +106,7 @@ bool runArbiterLoop(ArbiterEventQueue& queue, ArbiterCore& core, const Clock& cl
     const double wait_s = std::clamp(core.nextDeadline() - clock.now(), 0.0, kLongestWait_s);
     const int wait_ms = static_cast<int>(std::ceil(wait_s * 1e3));
     // Everything already there is taken at once, so one step sees it all.
-    if (!queue.receive(wait_ms)) {
+    if (!queue.receive(wait_ms, core.firingsInFlight() > 0 ? spin_us : 0)) {
       queue.deliverTo(core);
       core.onAbort("LCM receive failed");
       while (!core.done()) {

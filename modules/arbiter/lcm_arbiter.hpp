@@ -55,9 +55,10 @@ class ArbiterEventQueue {
   // The channels it receives: DONE, HEARTBEAT, STOP_REQUEST.
   static std::vector<std::string> channelsRead();
 
-  // Waits up to `timeout_ms` for messages and queues every one there.
-  // Returns false if receiving failed.
-  bool receive(int timeout_ms);
+  // Waits up to `timeout_ms` for messages and queues every one there; polls
+  // for the first `spin_us` microseconds of it instead of sleeping. Returns
+  // false if receiving failed.
+  bool receive(int timeout_ms, int spin_us = 0);
   // Hands every queued event to the core, in arrival order.
   void deliverTo(ArbiterCore& core);
   bool empty() const { return events_.empty(); }
@@ -76,9 +77,10 @@ struct StopSignals {
   std::atomic<bool> terminated{false}; // SIGTERM: end now
 };
 
-// Runs the core until it is done (final status sent). Returns false if LCM
-// stopped working (the run is then FAILED).
+// Runs the core until it is done (final status sent). While a firing is in
+// flight, each wait polls for up to `spin_us` microseconds before it sleeps.
+// Returns false if LCM stopped working (the run is then FAILED).
 bool runArbiterLoop(ArbiterEventQueue& queue, ArbiterCore& core, const Clock& clock,
-                    const StopSignals* signals = nullptr);
+                    const StopSignals* signals = nullptr, int spin_us = 0);
 
 }  // namespace beft::arbiter

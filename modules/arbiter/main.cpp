@@ -4,6 +4,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "arbiter_core.hpp"
@@ -43,6 +44,9 @@ int main(int argc, char** argv) {
   ArbiterConfig config;
   bool show_interface = false;
   bool quiet = false;
+  // BEFT_ARBITER_SPIN_US sets the default, so a benchmark can turn it off for a whole run.
+  int spin_us = 1000;
+  if (const char* setting = std::getenv("BEFT_ARBITER_SPIN_US"); setting && *setting) spin_us = std::atoi(setting);
 
   CLI::App app(
       "Petri-net arbiter: fires the experts named in a PNML net, in lockstep ticks.\n"
@@ -68,6 +72,11 @@ int main(int argc, char** argv) {
       ->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--resend-period", config.resend_period_s, "seconds between re-sends of a FIRE")
       ->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--spin-us", spin_us,
+                 "while a firing runs, poll for its DONE this many microseconds before sleeping (0: sleep at "
+                 "once); a tick waits for one DONE after another, and waking a sleeping process costs more "
+                 "than the poll, on a virtual machine most (env BEFT_ARBITER_SPIN_US)")
+      ->capture_default_str()->check(CLI::Range(0, 100000));
   app.add_option("--firing-log", firing_log_path, "also write every firing to this CSV file");
   app.add_flag("--quiet", quiet, "no line per firing on stdout");
   app.add_flag("--interface", show_interface, "print the channels read and written");
@@ -126,7 +135,7 @@ int main(int argc, char** argv) {
   ArbiterCore core(std::move(net), config, clock, output);
   beft::log::info("on ", lcm_url, (config.max_ticks > 0 ? ", " + std::to_string(config.max_ticks) + " ticks" : ""),
                   " (Ctrl-C: end after this tick; twice, or SIGTERM: end now)");
-  runArbiterLoop(*events, core, clock, &g_signals);
+  runArbiterLoop(*events, core, clock, &g_signals, spin_us);
   firing_log->flush();
 
   const ArbiterStats& s = core.stats();
