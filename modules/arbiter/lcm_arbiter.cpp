@@ -56,9 +56,19 @@ bool ArbiterEventQueue::receive(int timeout_ms, int spin_us) {
     // without this process going to sleep and being woken again (on a
     // virtual machine, waking a halted CPU takes tens of microseconds, and a
     // tick waits for one DONE after another). Yielding meanwhile, so a
-    // process with work on this CPU runs first.
-    const auto give_up = std::chrono::steady_clock::now() + std::chrono::microseconds(spin_us);
-    while (!udpm::waitReadable({source_->fd()}, 0) && std::chrono::steady_clock::now() < give_up) sched_yield();
+    // process with work on this CPU runs first. The poll counts against the
+    // time-out.
+    using SteadyTime = std::chrono::steady_clock;
+    const auto start = SteadyTime::now();
+    const auto give_up = start + std::chrono::microseconds(std::min<int64_t>(spin_us, int64_t{timeout_ms} * 1000));
+    while (!udpm::waitReadable({source_->fd()}, 0)) {
+      if (SteadyTime::now() >= give_up) {
+        const auto spun_ms = std::chrono::duration_cast<std::chrono::milliseconds>(SteadyTime::now() - start).count();
+        timeout_ms = std::max<int>(0, timeout_ms - static_cast<int>(spun_ms));
+        break;
+      }
+      sched_yield();
+    }
   }
   return source_->receive(timeout_ms, handler) >= 0;
 }

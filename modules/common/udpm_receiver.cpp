@@ -96,9 +96,14 @@ Receiver::Receiver(const Endpoint& endpoint, udpm_filter::Spec spec, std::size_t
     const int on = 1;
     // Every process of the run binds the same port (as LCM's own sockets do).
     if (setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on) != 0) throwErrno("SO_REUSEADDR");
-    if (endpoint.recv_buf_size > 0 &&
-        setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &endpoint.recv_buf_size, sizeof endpoint.recv_buf_size) != 0)
-      throwErrno("SO_RCVBUF");
+    if (endpoint.recv_buf_size > 0) {
+      if (setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &endpoint.recv_buf_size, sizeof endpoint.recv_buf_size) != 0)
+        throwErrno("SO_RCVBUF");
+      // The kernel caps SO_RCVBUF at net.core.rmem_max (208 KiB unless
+      // raised); a process allowed to (root) takes the size asked for anyway.
+      if (receiveBufferBytes() < endpoint.recv_buf_size)
+        setsockopt(fd_, SOL_SOCKET, SO_RCVBUFFORCE, &endpoint.recv_buf_size, sizeof endpoint.recv_buf_size);
+    }
     // The kernel's receive time, as LCM takes it (log timestamps stay exact
     // when datagrams are read in batches).
     if (setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMP, &on, sizeof on) != 0) throwErrno("SO_TIMESTAMP");

@@ -23,9 +23,11 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "channels.hpp"
+#include "lcm_arbiter.hpp"
 #include "lcm_url.hpp"
 
 namespace {
@@ -387,6 +389,42 @@ TEST(ArbiterProcess, StopRequestEndsTheRunAfterTheTick) {
   EXPECT_GE(positionOf(responder.events, 'D', "fusion", 5), 0);  // tick 5 was completed
   EXPECT_EQ(positionOf(responder.events, 'F', "world", 6), -1);
   EXPECT_EQ(arbiter.out(), "");  // --quiet
+}
+
+TEST(ArbiterEventQueue, PollsThenSleepsWithinTheTimeOutAndMissesNothing) {
+  const std::string url = uniqueUrl(7);
+  lcm::LCM lcm(url);
+  ASSERT_TRUE(lcm.good());
+  beft::arbiter::ArbiterEventQueue queue(lcm, url);
+  EXPECT_NE(queue.description().find("receiving only DONE, HEARTBEAT, STOP_REQUEST"), std::string::npos)
+      << queue.description();
+  // Nothing comes: the wait, poll included, lasts the time-out and no longer.
+  auto start = Clock::now();
+  ASSERT_TRUE(queue.receive(60, 20000));
+  auto waited = Clock::now() - start;
+  EXPECT_TRUE(queue.empty());
+  EXPECT_GE(waited, std::chrono::milliseconds(55));
+  EXPECT_LT(waited, std::chrono::milliseconds(60 + 500)) << "the poll counted against the time-out";
+  // A DONE sent while it polls, one while it sleeps: both are taken.
+  for (const int delay_ms : {2, 40}) {
+    beft::arbiter::ArbiterEventQueue queue(lcm, url);
+    std::thread sender([&url, delay_ms] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+      lcm::LCM lcm_sender(url);
+      beft::done_t done{};
+      done.expert = "vision";
+      done.firing_id = delay_ms;
+      lcm_sender.publish(beft::channels::kDone, &done);
+    });
+    start = Clock::now();
+    bool got = false;
+    while (!got && Clock::now() - start < std::chrono::seconds(3)) {
+      ASSERT_TRUE(queue.receive(100, 10000));
+      got = !queue.empty();
+    }
+    sender.join();
+    EXPECT_TRUE(got) << "DONE sent after " << delay_ms << " ms";
+  }
 }
 
 TEST(ArbiterProcess, RefusesABadNetWithItsLine) {

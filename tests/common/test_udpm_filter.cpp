@@ -146,6 +146,28 @@ TEST(UdpmFilter, RejectListedModeDropsOnlyTheListed) {
   EXPECT_TRUE(socket.passes(shortDatagram("CAMERA_DEPTH", std::string(1000, 'd'))));
 }
 
+TEST(UdpmFilter, AcceptsAgreesWithTheKernelProgram) {
+  // accepts() judges whole messages where the program cannot (fragments):
+  // both must give the same verdict on every short message.
+  Spec accept_spec;
+  accept_spec.rules = {beft::udpm_filter::fireFor("FIRE", "vision"), channelRule("RUN_STATUS"), channelRule("A")};
+  Spec reject_spec;
+  reject_spec.mode = Spec::Mode::RejectListed;
+  reject_spec.rules = {channelRule("FIRE"), channelRule("DONE")};
+  const std::vector<std::pair<std::string, std::string>> messages = {
+      {"FIRE", encodedFire("vision")}, {"FIRE", encodedFire("geometry")}, {"FIRE", encodedFire("vision2")},
+      {"FIRE", "short"},               {"RUN_STATUS", "s"},              {"A", ""},
+      {"AB", "x"},                     {"DONE", "d"},                    {"CAMERA_DEPTH", std::string(3000, 'd')}};
+  for (const Spec* spec : {&accept_spec, &reject_spec}) {
+    FilteredSocket socket(*spec);
+    ASSERT_TRUE(socket.attached());
+    for (const auto& [channel, encoded] : messages)
+      EXPECT_EQ(socket.passes(shortDatagram(channel, encoded)),
+                beft::udpm_filter::accepts(*spec, channel, encoded.data(), encoded.size()))
+          << channel << " (" << encoded.size() << " bytes)";
+  }
+}
+
 TEST(UdpmFilter, RefusesRulesTooLongToJumpOver) {
   Spec spec;
   spec.rules = {channelRule(std::string(600, 'X'))};

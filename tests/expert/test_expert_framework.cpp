@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <mutex>
 #include <thread>
 
@@ -270,6 +271,50 @@ TEST(LiveRunner, WaitsForInputsThenFiresAnyway) {
   ASSERT_EQ(collector.done.size(), 1u);
   EXPECT_EQ(collector.done[0].outcome, beft::done_t::OUTCOME_FAILED);
   EXPECT_NE(collector.done[0].message.find("no robot state"), std::string::npos);
+}
+
+TEST(LiveRunner, AnInputArrivingAfterItsFireIsWaitedFor) {
+  // On udpm an expert's inputs and its FIREs come on two sockets; across
+  // machines the FIRE may come first. With LCM's own receive thread
+  // (BEFT_UDPM_RECEIVER=0) both come through one subscription.
+  for (const bool direct : {true, false}) {
+    if (!direct) setenv("BEFT_UDPM_RECEIVER", "0", 1);
+    ScalingExpert scaler;
+    scaler.onStartUp({});
+    expert::LiveOptions options = scalerOptions(direct ? 3 : 4);
+    const std::string url = options.lcm_url;
+    std::thread runner([&] { expert::runLive(scaler, options); });
+
+    lcm::LCM lcm(url);
+    DoneCollector collector;
+    lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
+    lcm.subscribe("SCALED", &DoneCollector::onScaled, &collector);
+    pump(lcm, 150ms);
+    const auto early = stateAt(6, 1.0);  // before the FIRE, as on one machine
+    lcm.publish(channels::kRobotState, &early);
+    const auto fire6 = fireToken("scaler", 6, 1);
+    lcm.publish(channels::kFire, &fire6);
+    pump(lcm, 100ms);
+    const auto fire7 = fireToken("scaler", 7, 2);
+    lcm.publish(channels::kFire, &fire7);
+    pump(lcm, 50ms);
+    const auto late = stateAt(7, 4.0);  // after its FIRE
+    lcm.publish(channels::kRobotState, &late);
+    pump(lcm, 200ms);
+    beft::run_status_t end{};
+    end.state = beft::run_status_t::STATE_FINISHED;
+    lcm.publish(channels::kRunStatus, &end);
+    runner.join();
+    unsetenv("BEFT_UDPM_RECEIVER");
+
+    std::lock_guard<std::mutex> lock(collector.mutex);
+    ASSERT_EQ(collector.done.size(), 2u) << (direct ? "direct" : "LCM");
+    for (const auto& done : collector.done) EXPECT_EQ(done.outcome, beft::done_t::OUTCOME_OK) << done.message;
+    ASSERT_EQ(collector.scaled.size(), 2u);
+    EXPECT_DOUBLE_EQ(collector.scaled[0].x, 2.0);
+    EXPECT_DOUBLE_EQ(collector.scaled[1].x, 8.0) << "fired with the state that came after its FIRE";
+    EXPECT_EQ(scaler.fires.load(), 2);
+  }
 }
 
 TEST(Parameters, TypedGettersRefuseBadValuesByName) {
