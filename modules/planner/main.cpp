@@ -7,6 +7,7 @@
 #include "ompl_planner.hpp"
 #include "planner_factory.hpp"
 #include "planner_service.hpp"
+#include "message_source.hpp"
 #include "udpm_filter.hpp"
 
 #include <beft/heartbeat_t.hpp>
@@ -39,16 +40,22 @@ std::string hostName() {
 }
 
 // LCM handlers only store; planning happens in the main loop.
+// Keeps the newest map (bytes only: decoded when a request needs it) and the
+// requests in arrival order.
 class Inbox {
  public:
-  void onMap(const lcm::ReceiveBuffer*, const std::string&, const beft::obstacle_map_t* msg) {
-    latest_map = *msg;
-    has_map = true;
+  void onMessage(const beft::lcm_wire::Message& message) {
+    const int size = static_cast<int>(message.size);
+    if (message.channel == beft::channels::kObstacleMap) {
+      latest_map.assign(message.data, message.data + message.size);
+      has_map = true;
+    } else if (message.channel == beft::channels::kPlanRequest) {
+      beft::plan_request_t request;
+      if (request.decode(message.data, 0, size) == size) requests.push_back(std::move(request));
+      else beft::log::warn("dropped a ", size, "-byte PLAN_REQUEST that does not decode");
+    }
   }
-  void onRequest(const lcm::ReceiveBuffer*, const std::string&, const beft::plan_request_t* msg) {
-    requests.push_back(*msg);
-  }
-  beft::obstacle_map_t latest_map;
+  std::vector<uint8_t> latest_map;
   bool has_map = false;
   std::deque<beft::plan_request_t> requests;
 };
@@ -107,13 +114,28 @@ int main(int argc, char** argv) {
     beft::log::error("cannot open LCM at ", lcm_url);
     return 1;
   }
+  // On udpm the maps (one a tick) queue on a socket nothing waits on and are
+  // read when a request comes; requests wake the process.
   Inbox inbox;
-  lcm.subscribe(beft::channels::kObstacleMap, &Inbox::onMap, &inbox)->setQueueCapacity(4);
-  lcm.subscribe(beft::channels::kPlanRequest, &Inbox::onRequest, &inbox)->setQueueCapacity(1000);
-  beft::udpm_filter::Spec filter;
-  filter.rules = {beft::udpm_filter::channelRule(beft::channels::kObstacleMap),
-                  beft::udpm_filter::channelRule(beft::channels::kPlanRequest)};
-  beft::udpm_filter::installAndReport(lcm, lcm_url, filter);
+  const beft::udpm::MessageHandler to_inbox = [&inbox](const beft::lcm_wire::Message& m) { inbox.onMessage(m); };
+  beft::udpm_filter::Spec maps, requests;
+  maps.rules = {beft::udpm_filter::channelRule(beft::channels::kObstacleMap)};
+  requests.rules = {beft::udpm_filter::channelRule(beft::channels::kPlanRequest)};
+  std::unique_ptr<beft::MessageSource> request_source, map_source;
+  try {
+    if (beft::directReceiveFor(lcm_url)) {
+      map_source = beft::openMessageSource(lcm, lcm_url, maps, 16);
+      request_source = beft::openMessageSource(lcm, lcm_url, requests, 16);
+      beft::log::info("maps: ", map_source->description());
+    } else {
+      requests.rules.push_back(maps.rules.front());
+      request_source = beft::openMessageSource(lcm, lcm_url, requests, 16, 1000);
+    }
+  } catch (const std::exception& e) {
+    beft::log::error("cannot receive on ", lcm_url, ": ", e.what());
+    return 1;
+  }
+  beft::log::info("requests: ", request_source->description());
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);
   beft::log::info("planning with ", config.default_planner, " (robot radius ", config.robot_radius, " m) on ",
@@ -133,17 +155,20 @@ int main(int argc, char** argv) {
       lcm.publish(beft::channels::kHeartbeat, &heartbeat);
       next_heartbeat += std::chrono::seconds(1);
     }
-    if (lcm.handleTimeout(100) < 0) {
+    beft::udpm::waitReadable({request_source->fd()}, 100);
+    // The maps first: a request sees the map sent before it.
+    if ((map_source && map_source->drain(to_inbox) < 0) || request_source->drain(to_inbox) < 0) {
       if (g_stop) break;  // interrupted by the stop signal
       beft::log::error("LCM receive failed");
       return 1;
     }
-    while (lcm.handleTimeout(0) > 0) {
-    }  // take everything queued, so a request sees the map sent before it
     // Decoded only when a request needs it: the map arrives every tick, requests rarely.
     if (inbox.has_map && !inbox.requests.empty()) {
       try {
-        service->setObstacleMap(inbox.latest_map);
+        beft::obstacle_map_t map;
+        const int size = static_cast<int>(inbox.latest_map.size());
+        if (map.decode(inbox.latest_map.data(), 0, size) != size) throw std::invalid_argument("not an obstacle_map_t");
+        service->setObstacleMap(map);
       } catch (const std::exception& e) {
         beft::log::warn("ignoring a malformed obstacle map: ", e.what());
       }
