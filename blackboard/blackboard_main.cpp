@@ -27,6 +27,9 @@ namespace {
 
 using beft::blackboard::BlackboardService;
 
+// Below this receive buffer the stored traffic is read as it comes.
+constexpr int kBatchBufferBytes = 2 << 20;
+
 volatile std::sig_atomic_t g_stop = 0;
 void onSignal(int) { g_stop = 1; }
 
@@ -222,6 +225,11 @@ int main(int argc, char** argv) {
   const beft::udpm::MessageHandler handler = [&process](const beft::lcm_wire::Message& message) {
     process.onMessage(message);
   };
+  // Gathering needs room in the kernel: a few ticks of camera frames.
+  const bool gather = query_source && stored_source->receiveBufferBytes() >= kBatchBufferBytes;
+  if (query_source && !gather)
+    beft::log::warn("the kernel granted a ", stored_source->receiveBufferBytes() / 1024,
+                    " KiB receive buffer (recv_buf_size in the LCM URL, capped by net.core.rmem_max): reading each message as it comes");
 
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);
@@ -235,7 +243,8 @@ int main(int argc, char** argv) {
   while (!g_stop) {
     // A query wakes it at once; stored traffic is read at least every batch.
     std::vector<int> fds{(query_source ? query_source : stored_source)->fd()};
-    beft::udpm::waitReadable(fds, query_source ? batch_ms : 200);
+    if (query_source && !gather) fds.push_back(stored_source->fd());
+    beft::udpm::waitReadable(fds, gather ? batch_ms : 200);
     // Stored traffic first: a query is answered with everything sent before it.
     if (stored_source->drain(handler) < 0 || (query_source && query_source->drain(handler) < 0)) {
       if (g_stop) break;  // a signal interrupted the wait

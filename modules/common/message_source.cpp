@@ -24,6 +24,7 @@ class DirectSource : public MessageSource {
            (receiver_.countsLosses() ? std::string("every channel, losses counted") : "kernel filter: " + what_);
   }
   uint64_t kernelDropped() const override { return receiver_.stats().kernel_dropped; }
+  int receiveBufferBytes() const override { return receiver_.receiveBufferBytes(); }
 
  private:
   udpm::Receiver receiver_;

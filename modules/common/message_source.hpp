@@ -29,6 +29,9 @@ class MessageSource {
   int receive(int timeout_ms, const udpm::MessageHandler& handler);
   // One line for the process's log: how it receives and what.
   virtual std::string description() const = 0;
+  // The kernel receive buffer of the direct receiver's socket [bytes]; -1
+  // for LCM's own receive path.
+  virtual int receiveBufferBytes() const { return -1; }
   // Datagrams the kernel dropped for want of buffer space, where known (a
   // direct receiver of every channel).
   virtual uint64_t kernelDropped() const { return 0; }

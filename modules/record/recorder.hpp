@@ -54,6 +54,8 @@ class Recorder {
   int64_t bytes() const { return bytes_; }
   uint64_t kernelDropped() const { return source_->kernelDropped(); }
   std::string description() const { return source_->description(); }
+  // What the kernel granted the direct receiver's socket [bytes], -1 without one.
+  int receiveBufferBytes() const { return source_->receiveBufferBytes(); }
 
  private:
   void write(const lcm_wire::Message& message);
