@@ -1,7 +1,9 @@
 // beft-bench-mission (./beft bench mission): how fast a whole mission runs.
 // Runs `beft-run` on a scenario several times, as shipped and with one
-// measure turned off at a time (the kernel channel filter, BEFT_UDPM_FILTER=0;
-// the background priority of the recorder and blackboard, BEFT_BACKGROUND=0),
+// measure turned off at a time (the direct receiver, BEFT_UDPM_RECEIVER=0:
+// LCM's own receive thread with the kernel channel filter, as before it; the
+// arbiter's poll for DONE, BEFT_ARBITER_SPIN_US=0; the background priority of
+// the recorder and blackboard, BEFT_BACKGROUND=0),
 // alternately so that all share the machine's state, and prints ticks per
 // second, times real time and each baseline's ratio to the shipped setup.
 #include <fcntl.h>
@@ -36,6 +38,9 @@ struct Variant {
   std::string name, setting;  // setting: "" or NAME=VALUE
 };
 
+const char* const kSettingsUnderTest[] = {"BEFT_UDPM_RECEIVER=", "BEFT_UDPM_FILTER=", "BEFT_ARBITER_SPIN_US=",
+                                          "BEFT_BACKGROUND="};
+
 RunFigures runOnce(const std::string& scenario, const std::string& net, const std::string& out_dir,
                    const Variant& variant) {
   RunFigures figures;
@@ -48,8 +53,9 @@ RunFigures runOnce(const std::string& scenario, const std::string& net, const st
   std::vector<std::string> environment;
   for (char** e = environ; *e; ++e) {
     const std::string entry = *e;
-    if (entry.rfind("BEFT_UDPM_FILTER=", 0) != 0 && entry.rfind("BEFT_BACKGROUND=", 0) != 0)
-      environment.push_back(entry);
+    bool under_test = false;
+    for (const char* name : kSettingsUnderTest) under_test = under_test || entry.rfind(name, 0) == 0;
+    if (!under_test) environment.push_back(entry);
   }
   if (!variant.setting.empty()) environment.push_back(variant.setting);
   std::vector<char*> envp;
@@ -90,7 +96,8 @@ double median(std::vector<double> values) {
 int main(int argc, char** argv) {
   CLI::App app{
       "beft-bench-mission: runs the whole mission (every process, lockstep, recorded) on a scenario "
-      "several times: as shipped, without the kernel channel filter (BEFT_UDPM_FILTER=0) and without the "
+      "several times: as shipped, with LCM's own receive thread instead of the direct receiver "
+      "(BEFT_UDPM_RECEIVER=0), without the arbiter's poll for DONE (BEFT_ARBITER_SPIN_US=0) and without the "
       "background priority of the recorder and blackboard (BEFT_BACKGROUND=0), one after the other, and "
       "prints the median ticks per second and times real time of each and each one's ratio to the shipped "
       "setup. Target: >= 50x real time on yard.xml."};
@@ -104,7 +111,8 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   const std::vector<Variant> variants = {{"as shipped", ""},
-                                         {"filter off", "BEFT_UDPM_FILTER=0"},
+                                         {"LCM receive", "BEFT_UDPM_RECEIVER=0"},
+                                         {"no DONE poll", "BEFT_ARBITER_SPIN_US=0"},
                                          {"no background", "BEFT_BACKGROUND=0"}};
   const auto work = std::filesystem::temp_directory_path() / ("beft-bench-mission-" + std::to_string(getpid()));
   std::vector<std::vector<double>> rate(variants.size()), real(variants.size()), overall(variants.size());
