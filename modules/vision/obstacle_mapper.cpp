@@ -114,7 +114,11 @@ void ObstacleMapper::integrateRays(const Eigen::Vector3d& origin, int width, int
         column.farthest_v = v;
       }
       if (hit_z <= config_.obstacle_min_height) {
-        column.floor_rays.push_back({reach, v});
+        // Written in place: a braced temporary is two narrow stores read back as one
+        // wide load, which stalls store-to-load forwarding on every floor pixel.
+        ColumnRay& floor = column.floor_rays.emplace_back();
+        floor.reach = reach;
+        floor.v = v;
         continue;
       }
       int cell_column = 0, cell_row = 0;
