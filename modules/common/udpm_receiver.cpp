@@ -238,11 +238,10 @@ int Receiver::receiveBufferBytes() const {
 }
 
 bool waitReadable(const std::vector<int>& fds, int timeout_ms) {
-  pollfd polled[8];
-  const std::size_t count = fds.size() < 8 ? fds.size() : 8;
-  for (std::size_t i = 0; i < count; ++i) polled[i] = {fds[i], POLLIN, 0};
-  const int ready = poll(polled, count, timeout_ms);
-  return ready > 0;
+  std::vector<pollfd> polled;
+  polled.reserve(fds.size());
+  for (int fd : fds) polled.push_back({fd, POLLIN, 0});
+  return poll(polled.data(), polled.size(), timeout_ms) > 0;
 }
 
 }  // namespace beft::udpm

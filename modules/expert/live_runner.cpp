@@ -230,9 +230,10 @@ class Runner {
     if (!snapshot_channel_.empty()) control_spec.rules.push_back(udpm_filter::channelRule(snapshot_channel_));
     try {
       if (directReceiveFor(options_.lcm_url)) {
-        inputs_ = openMessageSource(lcm_, options_.lcm_url, input_spec);
+        // An expert that reads nothing has no input socket.
+        if (!input_spec.rules.empty()) inputs_ = openMessageSource(lcm_, options_.lcm_url, input_spec);
         control_ = openMessageSource(lcm_, options_.lcm_url, control_spec, 4);
-        log::info("inputs: ", inputs_->description());
+        if (inputs_) log::info("inputs: ", inputs_->description());
         log::info("control: ", control_->description());
       } else {
         udpm_filter::Spec both = input_spec;
