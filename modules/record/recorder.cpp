@@ -28,34 +28,48 @@ Recorder::Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options)
   udpm_filter::Spec everything;
   everything.mode = udpm_filter::Spec::Mode::RejectListed;
   source_ = openMessageSource(lcm, url, everything, 64, options_.queue_capacity);
-  writer_ = [this](const lcm_wire::Message& message) {
-    try {
-      write(message);
-    } catch (const std::exception& e) {
-      log::error("message on ", message.channel, " not recorded: ", e.what());
-    }
+  take_ = [this](const lcm_wire::Message& message) {
+    if (has_exclude_ && std::regex_match(message.channel.begin(), message.channel.end(), exclude_)) return;
+    order_.add({std::string(message.channel), std::vector<uint8_t>(message.data, message.data + message.size),
+                message.recv_utime});
   };
   log_ = std::make_unique<lcm::LogFile>(options_.path, "w");
   if (!log_->good()) throw std::runtime_error(options_.path + ": cannot be written");
 }
 
-Recorder::~Recorder() { flush(); }
-
-void Recorder::write(const lcm_wire::Message& message) {
-  const std::string channel(message.channel);
-  if (has_exclude_ && std::regex_match(channel, exclude_)) return;
-  lcm::LogEvent event;
-  event.eventnum = 0;  // the log file numbers events itself
-  event.timestamp = message.recv_utime;
-  event.channel = channel;
-  event.datalen = static_cast<int32_t>(message.size);
-  event.data = const_cast<uint8_t*>(message.data);
-  if (log_->writeEvent(&event) != 0) throw std::runtime_error("write failed (disk full?)");
-  ++events_;
-  bytes_ += static_cast<int64_t>(message.size);
+Recorder::~Recorder() {
+  writeHeld();
+  flush();
 }
 
-int Recorder::handle(int timeout_ms) { return source_->receive(timeout_ms, writer_); }
+void Recorder::write(const TimedEvent& event) {
+  try {
+    lcm::LogEvent entry;
+    entry.eventnum = 0;  // the log file numbers events itself
+    entry.timestamp = event.utime;
+    entry.channel = event.channel;
+    entry.datalen = static_cast<int32_t>(event.data.size());
+    entry.data = const_cast<uint8_t*>(event.data.data());
+    if (log_->writeEvent(&entry) != 0) throw std::runtime_error("write failed (disk full?)");
+    ++events_;
+    bytes_ += static_cast<int64_t>(event.data.size());
+  } catch (const std::exception& e) {
+    log::error("message on ", event.channel, " not recorded: ", e.what());
+  }
+}
+
+int Recorder::handle(int timeout_ms) {
+  const int taken = source_->receive(timeout_ms, take_);
+  const int64_t now_us = std::chrono::duration_cast<std::chrono::microseconds>(
+                             std::chrono::system_clock::now().time_since_epoch())
+                             .count();
+  order_.release(now_us, [this](const TimedEvent& event) { write(event); });
+  return taken;
+}
+
+void Recorder::writeHeld() {
+  order_.releaseAll([this](const TimedEvent& event) { write(event); });
+}
 
 void Recorder::drain(int quiet_ms, int longest_ms) {
   using Clock = std::chrono::steady_clock;
@@ -63,6 +77,7 @@ void Recorder::drain(int quiet_ms, int longest_ms) {
   while (Clock::now() < give_up) {
     if (handle(quiet_ms) <= 0) break;  // quiet for quiet_ms, or an error
   }
+  writeHeld();
 }
 
 void Recorder::flush() {

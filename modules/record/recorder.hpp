@@ -8,14 +8,16 @@
 // through a writer thread (one more wake-up per message), and discards what
 // is still queued when it is stopped. The recorder reads with the direct
 // receiver (message_source.hpp: every datagram queued, one system call, the
-// kernel's receive time as the timestamp), writes into a buffered file, and
-// on stop takes everything still arriving before it closes the file.
+// kernel's receive time as the timestamp), writes in the order messages
+// entered the host (timestamp_order.hpp) into a buffered file, and on stop
+// takes everything still arriving before it closes the file.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 
 #include "message_source.hpp"
+#include "timestamp_order.hpp"
 #include <regex>
 #include <string>
 
@@ -43,10 +45,12 @@ class Recorder {
   Recorder(const Recorder&) = delete;
   Recorder& operator=(const Recorder&) = delete;
 
-  // Waits up to `timeout_ms` for messages and writes every one there;
-  // returns how many, -1 if receiving failed.
+  // Waits up to `timeout_ms` for messages and takes every one there; writes
+  // those older than a millisecond, oldest first. Returns how many were
+  // taken, -1 if receiving failed.
   int handle(int timeout_ms);
-  // Keeps writing until nothing arrived for `quiet_ms` (or `longest_ms` passed).
+  // Keeps writing until nothing arrived for `quiet_ms` (or `longest_ms`
+  // passed), then writes what it still holds.
   void drain(int quiet_ms, int longest_ms);
   void flush();
 
@@ -58,12 +62,14 @@ class Recorder {
   int receiveBufferBytes() const { return source_->receiveBufferBytes(); }
 
  private:
-  void write(const lcm_wire::Message& message);
+  void write(const TimedEvent& event);
+  void writeHeld();
 
   RecordOptions options_;
   std::unique_ptr<lcm::LogFile> log_;
   std::unique_ptr<MessageSource> source_;
-  udpm::MessageHandler writer_;
+  udpm::MessageHandler take_;
+  TimestampOrder order_;
   std::regex exclude_;
   bool has_exclude_ = false;
   int64_t events_ = 0, bytes_ = 0;

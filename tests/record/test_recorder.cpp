@@ -1,6 +1,7 @@
 // The run recorder: in-process on memq (order, content, exclusions, refusals),
 // then beft-record as a process stopped right after a burst of messages.
 #include "recorder.hpp"
+#include "timestamp_order.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -79,6 +80,28 @@ TEST(Recorder, WritesEveryMessageInOrderAndLeavesOutExcludedChannels) {
     ++expected;
   }
   std::filesystem::remove(path);
+}
+
+TEST(TimestampOrder, WritesOldestFirstAndHoldsBackTheLastMillisecond) {
+  beft::record::TimestampOrder order(1000);
+  // As a recorder may read them: an answer queued before what caused it.
+  order.add({"FIRE", {1}, 9400});
+  order.add({"DONE", {2}, 9300});
+  order.add({"A", {3}, 5000});
+  order.add({"B", {4}, 5000});  // the same time: arrival order
+  std::vector<std::string> written;
+  const auto write = [&written](const beft::record::TimedEvent& e) { written.push_back(e.channel); };
+  EXPECT_EQ(order.release(10000, write), 2u);  // 9300 and 9400 are within a millisecond of now
+  EXPECT_EQ(written, (std::vector<std::string>{"A", "B"}));
+  EXPECT_EQ(order.held(), 2u);
+  order.add({"LATE", {5}, 9350});  // raced the FIRE and came with the next read
+  EXPECT_EQ(order.release(10600, write), 3u);
+  EXPECT_EQ(written, (std::vector<std::string>{"A", "B", "DONE", "LATE", "FIRE"}));
+  order.add({"LAST", {6}, 10500});
+  EXPECT_EQ(order.release(10600, write), 0u);
+  EXPECT_EQ(order.releaseAll(write), 1u);
+  EXPECT_EQ(written.back(), "LAST");
+  EXPECT_EQ(order.held(), 0u);
 }
 
 TEST(Recorder, RefusesToReplaceAFileOrABadPattern) {
