@@ -27,9 +27,6 @@ namespace {
 
 using beft::blackboard::BlackboardService;
 
-// Below this receive buffer the stored traffic is read as it comes.
-constexpr int kBatchBufferBytes = 2 << 20;
-
 volatile std::sig_atomic_t g_stop = 0;
 void onSignal(int) { g_stop = 1; }
 
@@ -202,35 +199,29 @@ int main(int argc, char** argv) {
   beft::udpm_filter::Spec stored;
   stored.mode = beft::udpm_filter::Spec::Mode::RejectListed;
   for (const auto& pattern : options.exclude)
-    if (beft::udpm_filter::isPlainChannel(pattern) && pattern != beft::channels::kBlackboardQuery)
+    if (beft::udpm_filter::isPlainChannel(pattern))
       stored.rules.push_back(beft::udpm_filter::channelRule(pattern));
   beft::udpm_filter::Spec queries;
   queries.rules.push_back(beft::udpm_filter::channelRule(beft::channels::kBlackboardQuery));
   std::unique_ptr<beft::MessageSource> stored_source, query_source;
   try {
-    if (beft::directReceiveFor(lcm_url)) {
-      stored.rules.push_back(beft::udpm_filter::channelRule(beft::channels::kBlackboardQuery));
-      stored_source = beft::openMessageSource(lcm, lcm_url, stored, 64);
-      query_source = beft::openMessageSource(lcm, lcm_url, queries, 4);
-      beft::log::info("queries: ", query_source->description());
-    } else {
-      // One LCM subscription takes both; the process tells queries apart.
-      stored_source = beft::openMessageSource(lcm, lcm_url, stored, 64, queue_capacity);
-    }
+    beft::SplitSources sources = beft::openSplitSources(lcm, lcm_url, queries, stored, 64, queue_capacity);
+    query_source = std::move(sources.wake);
+    stored_source = std::move(sources.queued);
   } catch (const std::exception& error) {
     beft::log::error("cannot receive on ", lcm_url, ": ", error.what());
     return 1;
   }
-  beft::log::info("stored: ", stored_source->description());
+  if (stored_source) {
+    beft::log::info("queries: ", query_source->description());
+    beft::log::info("stored: ", stored_source->description());
+  } else {
+    beft::log::info("receiving: ", query_source->description());  // one LCM subscription: queries and the rest
+  }
   const beft::udpm::MessageHandler handler = [&process](const beft::lcm_wire::Message& message) {
     process.onMessage(message);
   };
-  // Gathering needs room in the kernel: a few ticks of camera frames.
-  const bool gather = query_source && stored_source->receiveBufferBytes() >= kBatchBufferBytes;
-  if (query_source && !gather)
-    beft::log::warn("the kernel granted a ", stored_source->receiveBufferBytes() / 1024,
-                    " KiB receive buffer (recv_buf_size in the LCM URL, capped by net.core.rmem_max): reading each message as it comes");
-
+  const bool gather = stored_source && beft::roomToGather(stored_source->receiveBufferBytes());
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);
   std::string excluded;
@@ -242,11 +233,10 @@ int main(int argc, char** argv) {
   auto next_status = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(status_period));
   while (!g_stop) {
     // A query wakes it at once; stored traffic is read at least every batch.
-    std::vector<int> fds{(query_source ? query_source : stored_source)->fd()};
-    if (query_source && !gather) fds.push_back(stored_source->fd());
-    beft::udpm::waitReadable(fds, gather ? batch_ms : 200);
+    beft::udpm::waitReadable({query_source->fd(), stored_source && !gather ? stored_source->fd() : -1},
+                             gather ? batch_ms : 200);
     // Stored traffic first: a query is answered with everything sent before it.
-    if (stored_source->drain(handler) < 0 || (query_source && query_source->drain(handler) < 0)) {
+    if ((stored_source && stored_source->drain(handler) < 0) || query_source->drain(handler) < 0) {
       if (g_stop) break;  // a signal interrupted the wait
       beft::log::error("LCM failed while waiting for messages");
       return 1;

@@ -108,6 +108,44 @@ bool directReceiveFor(const std::string& url, std::string* why) {
   return udpm::parseUrl(url, why).has_value();
 }
 
+SplitSources openSplitSources(lcm::LCM& lcm, const std::string& url, const udpm_filter::Spec& wake,
+                              const udpm_filter::Spec& queued, std::size_t queued_batch, int lcm_queue_capacity) {
+  using Mode = udpm_filter::Spec::Mode;
+  if (wake.mode != Mode::AcceptListed) throw std::invalid_argument("openSplitSources: wake must list its channels");
+  std::set<std::string> wake_channels;
+  for (const auto& rule : wake.rules) wake_channels.insert(rule.channel);
+  const bool queues_nothing = queued.mode == Mode::AcceptListed && queued.rules.empty();
+  SplitSources sources;
+  if (directReceiveFor(url)) {
+    udpm_filter::Spec only_queued = queued;
+    if (queued.mode == Mode::RejectListed)
+      for (const auto& channel : wake_channels) only_queued.rules.push_back(udpm_filter::channelRule(channel));
+    if (!queues_nothing) sources.queued = openMessageSource(lcm, url, only_queued, queued_batch);
+    sources.wake = openMessageSource(lcm, url, wake, 4);
+    return sources;
+  }
+  // One spec that takes both.
+  udpm_filter::Spec both = queued;
+  if (queued.mode == Mode::AcceptListed) {
+    both.rules.insert(both.rules.end(), wake.rules.begin(), wake.rules.end());
+  } else {
+    both.rules.clear();
+    for (const auto& rule : queued.rules)
+      if (!wake_channels.count(rule.channel)) both.rules.push_back(rule);
+  }
+  sources.wake = openMessageSource(lcm, url, both, queued_batch, lcm_queue_capacity);
+  return sources;
+}
+
+bool roomToGather(int receive_buffer_bytes) {
+  constexpr int kGatherBufferBytes = 2 << 20;
+  if (receive_buffer_bytes < 0 || receive_buffer_bytes >= kGatherBufferBytes) return true;
+  log::warn("the kernel granted a ", receive_buffer_bytes / 1024,
+            " KiB receive buffer (recv_buf_size in the LCM URL, capped by net.core.rmem_max): reading each "
+            "message as it comes");
+  return false;
+}
+
 std::unique_ptr<MessageSource> openMessageSource(lcm::LCM& lcm, const std::string& url,
                                                  const udpm_filter::Spec& spec, std::size_t batch,
                                                  int lcm_queue_capacity) {

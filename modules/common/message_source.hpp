@@ -48,4 +48,23 @@ std::unique_ptr<MessageSource> openMessageSource(lcm::LCM& lcm, const std::strin
                                                  const udpm_filter::Spec& spec, std::size_t batch = 16,
                                                  int lcm_queue_capacity = 10000);
 
+// A process that sleeps on some channels and reads others when it chooses
+// (an expert's inputs when its FIRE comes, the blackboard's stored traffic
+// every few milliseconds). On the direct receiver: two sockets, `wake` and
+// `queued`, which nothing waits on and which takes none of wake's channels.
+// Otherwise one LCM subscription takes both, in `wake`, and `queued` is null.
+// `queued` is null too when it would take nothing. `wake` must list what it
+// takes (AcceptListed). Throws std::runtime_error as openMessageSource does.
+struct SplitSources {
+  std::unique_ptr<MessageSource> wake, queued;
+};
+SplitSources openSplitSources(lcm::LCM& lcm, const std::string& url, const udpm_filter::Spec& wake,
+                              const udpm_filter::Spec& queued, std::size_t queued_batch = 16,
+                              int lcm_queue_capacity = 10000);
+
+// Whether a source with this kernel receive buffer (-1: LCM's own thread,
+// which queues in the process) may be read in batches: that needs room for a
+// few ticks of camera frames, 2 MiB. When not, says so in the log.
+bool roomToGather(int receive_buffer_bytes);
+
 }  // namespace beft

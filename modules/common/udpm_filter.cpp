@@ -15,6 +15,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "log.hpp"
+#include "udpm_receiver.hpp"
 
 namespace beft::udpm_filter {
 
@@ -149,15 +150,8 @@ bool attach(int fd, const Spec& spec) {
 }
 
 int udpmPort(const std::string& url) {
-  const std::string scheme = "udpm://";
-  if (url.rfind(scheme, 0) != 0) return -1;
-  const auto colon = url.find(':', scheme.size());
-  if (colon == std::string::npos) return 7667;  // LCM's default port
-  try {
-    return std::stoi(url.substr(colon + 1));
-  } catch (const std::exception&) {
-    return -1;
-  }
+  const auto endpoint = udpm::parseUrl(url);
+  return endpoint ? endpoint->port : -1;
 }
 
 int findReceiveSocket(int port) {

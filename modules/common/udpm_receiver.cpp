@@ -6,6 +6,7 @@
 #include <sys/time.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -237,11 +238,12 @@ int Receiver::receiveBufferBytes() const {
   return size;
 }
 
-bool waitReadable(const std::vector<int>& fds, int timeout_ms) {
-  std::vector<pollfd> polled;
-  polled.reserve(fds.size());
-  for (int fd : fds) polled.push_back({fd, POLLIN, 0});
-  return poll(polled.data(), polled.size(), timeout_ms) > 0;
+bool waitReadable(std::initializer_list<int> fds, int timeout_ms) {
+  std::array<pollfd, 4> polled{};
+  if (fds.size() > polled.size()) throw std::invalid_argument("waitReadable: more than four sockets");
+  std::size_t count = 0;
+  for (int fd : fds) polled[count++] = {fd, POLLIN, 0};  // poll leaves out a negative fd
+  return poll(polled.data(), count, timeout_ms) > 0;
 }
 
 }  // namespace beft::udpm

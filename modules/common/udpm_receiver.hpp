@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -98,8 +99,10 @@ class Receiver {
   bool overflow_seen_ = false;
 };
 
-// Waits until one of `fds` is readable or `timeout_ms` passes (-1: no limit).
-// Returns true if one is readable; false on time-out or a signal.
-bool waitReadable(const std::vector<int>& fds, int timeout_ms);
+// Waits until one of `fds` (at most four; a negative one is left out) is
+// readable or `timeout_ms` passes (-1: no limit). Returns true if one is
+// readable; false on time-out or a signal. Allocates nothing: it runs on
+// every wait of the lockstep loop, and in the arbiter's poll.
+bool waitReadable(std::initializer_list<int> fds, int timeout_ms);
 
 }  // namespace beft::udpm

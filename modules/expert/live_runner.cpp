@@ -71,9 +71,8 @@ class Runner {
       // Short waits while a firing waits for its inputs (then their socket
       // wakes it too); else 100 ms, so a signal is seen.
       const bool waiting_for_inputs = pending_ && !pending_fired_;
-      std::vector<int> fds{control_->fd()};
-      if (inputs_ && waiting_for_inputs) fds.push_back(inputs_->fd());
-      udpm::waitReadable(fds, waiting_for_inputs ? 5 : 100);
+      udpm::waitReadable({control_->fd(), inputs_ && waiting_for_inputs ? inputs_->fd() : -1},
+                         waiting_for_inputs ? 5 : 100);
       // Inputs first: what was published before a FIRE is then stored before
       // the FIRE is served.
       if ((inputs_ && inputs_->drain(handler) < 0) || control_->drain(handler) < 0) {
@@ -229,18 +228,11 @@ class Runner {
     }
     if (!snapshot_channel_.empty()) control_spec.rules.push_back(udpm_filter::channelRule(snapshot_channel_));
     try {
-      if (directReceiveFor(options_.lcm_url)) {
-        // An expert that reads nothing has no input socket.
-        if (!input_spec.rules.empty()) inputs_ = openMessageSource(lcm_, options_.lcm_url, input_spec);
-        control_ = openMessageSource(lcm_, options_.lcm_url, control_spec, 4);
-        if (inputs_) log::info("inputs: ", inputs_->description());
-        log::info("control: ", control_->description());
-      } else {
-        udpm_filter::Spec both = input_spec;
-        both.rules.insert(both.rules.end(), control_spec.rules.begin(), control_spec.rules.end());
-        control_ = openMessageSource(lcm_, options_.lcm_url, both);
-        log::info("receiving: ", control_->description());
-      }
+      SplitSources sources = openSplitSources(lcm_, options_.lcm_url, control_spec, input_spec);
+      control_ = std::move(sources.wake);
+      inputs_ = std::move(sources.queued);
+      if (inputs_) log::info("inputs: ", inputs_->description());
+      log::info(inputs_ ? "control: " : "receiving: ", control_->description());
     } catch (const std::exception& e) {
       log::error("cannot receive on ", options_.lcm_url, ": ", e.what());
       return false;
@@ -284,7 +276,7 @@ class Runner {
   Clock::time_point pending_since_;
   Clock::time_point last_waiting_answer_;
   int64_t last_fired_id_ = -1;
-  std::unique_ptr<MessageSource> control_, inputs_;  // inputs_ only with the direct receiver
+  std::unique_ptr<MessageSource> control_, inputs_;  // openSplitSources: inputs_ only with the direct receiver
   std::optional<HeartbeatThread> heartbeat_;  // from the start of the loop to its end
   beft::done_t last_done_;
   int64_t firings_run_ = 0;

@@ -123,18 +123,14 @@ int main(int argc, char** argv) {
   requests.rules = {beft::udpm_filter::channelRule(beft::channels::kPlanRequest)};
   std::unique_ptr<beft::MessageSource> request_source, map_source;
   try {
-    if (beft::directReceiveFor(lcm_url)) {
-      map_source = beft::openMessageSource(lcm, lcm_url, maps, 16);
-      request_source = beft::openMessageSource(lcm, lcm_url, requests, 16);
-      beft::log::info("maps: ", map_source->description());
-    } else {
-      requests.rules.push_back(maps.rules.front());
-      request_source = beft::openMessageSource(lcm, lcm_url, requests, 16, 1000);
-    }
+    beft::SplitSources sources = beft::openSplitSources(lcm, lcm_url, requests, maps, 16, 1000);
+    request_source = std::move(sources.wake);
+    map_source = std::move(sources.queued);
   } catch (const std::exception& e) {
     beft::log::error("cannot receive on ", lcm_url, ": ", e.what());
     return 1;
   }
+  if (map_source) beft::log::info("maps: ", map_source->description());
   beft::log::info("requests: ", request_source->description());
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);

@@ -14,8 +14,6 @@
 #include "recorder.hpp"
 
 namespace {
-// Below this receive buffer the recorder reads each message as it comes.
-constexpr int kBatchBufferBytes = 2 << 20;
 volatile std::sig_atomic_t g_stop = 0;
 void onSignal(int) { g_stop = 1; }
 }  // namespace
@@ -50,12 +48,7 @@ int main(int argc, char** argv) {
   try {
     beft::record::Recorder recorder(lcm, lcm_url, options);
     beft::log::info("receiving: ", recorder.description());
-    if (batch_ms > 0 && recorder.receiveBufferBytes() >= 0 && recorder.receiveBufferBytes() < kBatchBufferBytes) {
-      // Gathering needs room in the kernel: a few ticks of camera frames.
-      beft::log::warn("the kernel granted a ", recorder.receiveBufferBytes() / 1024,
-                      " KiB receive buffer (recv_buf_size in the LCM URL, capped by net.core.rmem_max): reading each message as it comes");
-      batch_ms = 0;
-    }
+    if (batch_ms > 0 && !beft::roomToGather(recorder.receiveBufferBytes())) batch_ms = 0;
     beft::log::info("recording ", lcm_url, " into ", options.path);
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);

@@ -252,6 +252,46 @@ TEST_F(UdpmReceiverTest, TheLcmFallbackDeliversTheSameMessages) {
   EXPECT_EQ(got[0].data, "over memq");
 }
 
+TEST_F(UdpmReceiverTest, SplitSourcesWakeOnOneChannelSetAndQueueTheRest) {
+  Spec wake;
+  wake.rules = {channelRule("WAKE")};
+  Spec queued;  // everything but DROP, as the blackboard stores
+  queued.mode = Spec::Mode::RejectListed;
+  queued.rules = {channelRule("DROP")};
+  for (const bool direct : {true, false}) {
+    if (!direct) setenv("BEFT_UDPM_RECEIVER", "0", 1);
+    lcm::LCM lcm(url_);
+    beft::SplitSources sources = beft::openSplitSources(lcm, url_, wake, queued);
+    ASSERT_TRUE(sources.wake);
+    EXPECT_EQ(sources.queued != nullptr, direct) << "LCM's thread: one subscription takes both";
+    lcm::LCM sender(url_);
+    publish(sender, "DROP", "d");
+    publish(sender, "QUEUED", "q");
+    publish(sender, "WAKE", "w");
+    const auto woke = receiveAtLeast(*sources.wake, direct ? 1 : 2);
+    std::vector<std::string> channels;
+    for (const auto& m : woke) channels.push_back(m.channel);
+    if (direct) {
+      EXPECT_EQ(channels, std::vector<std::string>{"WAKE"});
+      const auto later = receiveAtLeast(*sources.queued, 1);
+      ASSERT_EQ(later.size(), 1u);
+      EXPECT_EQ(later[0].channel, "QUEUED") << "neither the dropped nor the waking channel";
+    } else {
+      EXPECT_EQ(channels, (std::vector<std::string>{"QUEUED", "WAKE"}));
+    }
+    unsetenv("BEFT_UDPM_RECEIVER");
+  }
+  lcm::LCM lcm(url_);
+  EXPECT_FALSE(beft::openSplitSources(lcm, url_, wake, Spec{}).queued) << "nothing to queue: no socket";
+  EXPECT_THROW(beft::openSplitSources(lcm, url_, queued, wake), std::invalid_argument);
+}
+
+TEST(RoomToGather, NeedsTwoMebibytesOfKernelBufferOrLcmsOwnQueue) {
+  EXPECT_TRUE(beft::roomToGather(-1));
+  EXPECT_TRUE(beft::roomToGather(8 << 20));
+  EXPECT_FALSE(beft::roomToGather(416 << 10));
+}
+
 TEST_F(UdpmReceiverTest, RefusesWhatItCannotOpenWithTheReason) {
   Endpoint bad = endpoint_;
   bad.group = "not an address";
