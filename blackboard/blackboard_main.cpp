@@ -18,6 +18,7 @@
 #include "blackboard/blackboard_service.hpp"
 #include "blackboard/message_decoder.hpp"
 #include "channels.hpp"
+#include "heap_retention.hpp"
 #include "lcm_url.hpp"
 #include "log.hpp"
 #include "message_source.hpp"
@@ -123,6 +124,7 @@ class BlackboardProcess {
 }  // namespace
 
 int main(int argc, char** argv) {
+  beft::retainFreedHeapMemory();
   std::string lcm_url = beft::defaultLcmUrl();
   BlackboardService::Options options;
   double max_channel_mb = static_cast<double>(options.limits.max_channel_bytes) / (1 << 20);

@@ -9,6 +9,7 @@
 
 #include "arbiter_core.hpp"
 #include "firing_log.hpp"
+#include "heap_retention.hpp"
 #include "lcm_arbiter.hpp"
 #include "lcm_url.hpp"
 #include "udpm_filter.hpp"
@@ -35,6 +36,7 @@ const char* kInterface =
 }  // namespace
 
 int main(int argc, char** argv) {
+  beft::retainFreedHeapMemory();
   using namespace beft::arbiter;
   beft::log::setProcessName("arbiter");
 

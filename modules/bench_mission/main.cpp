@@ -3,8 +3,8 @@
 // measure turned off at a time (the direct receiver, BEFT_UDPM_RECEIVER=0:
 // LCM's own receive thread with the kernel channel filter, as before it; the
 // arbiter's poll for DONE, BEFT_ARBITER_SPIN_US=0; the background priority of
-// the recorder and blackboard, BEFT_BACKGROUND=0),
-// alternately so that all share the machine's state, and prints ticks per
+// the recorder and blackboard, BEFT_BACKGROUND=0; the heap kept between
+// firings, BEFT_RETAIN_HEAP=0), alternately so that all share the machine's state, and prints ticks per
 // second, times real time and each baseline's ratio to the shipped setup.
 #include <fcntl.h>
 #include <spawn.h>
@@ -39,7 +39,7 @@ struct Variant {
 };
 
 const char* const kSettingsUnderTest[] = {"BEFT_UDPM_RECEIVER=", "BEFT_UDPM_FILTER=", "BEFT_ARBITER_SPIN_US=",
-                                          "BEFT_BACKGROUND="};
+                                          "BEFT_BACKGROUND=", "BEFT_RETAIN_HEAP="};
 
 RunFigures runOnce(const std::string& scenario, const std::string& net, const std::string& out_dir,
                    const Variant& variant) {
@@ -97,8 +97,9 @@ int main(int argc, char** argv) {
   CLI::App app{
       "beft-bench-mission: runs the whole mission (every process, lockstep, recorded) on a scenario "
       "several times: as shipped, with LCM's own receive thread instead of the direct receiver "
-      "(BEFT_UDPM_RECEIVER=0), without the arbiter's poll for DONE (BEFT_ARBITER_SPIN_US=0) and without the "
-      "background priority of the recorder and blackboard (BEFT_BACKGROUND=0), one after the other, and "
+      "(BEFT_UDPM_RECEIVER=0), without the arbiter's poll for DONE (BEFT_ARBITER_SPIN_US=0), without the "
+      "background priority of the recorder and blackboard (BEFT_BACKGROUND=0) and with freed memory given "
+      "back to the kernel at once, glibc's default (BEFT_RETAIN_HEAP=0), one after the other, and "
       "prints the median ticks per second and times real time of each and each one's ratio to the shipped "
       "setup. Target: >= 50x real time on yard.xml."};
   std::string scenario = "scenarios/yard.xml";
@@ -113,7 +114,8 @@ int main(int argc, char** argv) {
   const std::vector<Variant> variants = {{"as shipped", ""},
                                          {"LCM receive", "BEFT_UDPM_RECEIVER=0"},
                                          {"no DONE poll", "BEFT_ARBITER_SPIN_US=0"},
-                                         {"no background", "BEFT_BACKGROUND=0"}};
+                                         {"no background", "BEFT_BACKGROUND=0"},
+                                         {"heap given back", "BEFT_RETAIN_HEAP=0"}};
   const auto work = std::filesystem::temp_directory_path() / ("beft-bench-mission-" + std::to_string(getpid()));
   std::vector<std::vector<double>> rate(variants.size()), real(variants.size()), overall(variants.size());
   int failures = 0;
@@ -127,7 +129,7 @@ int main(int argc, char** argv) {
         ++failures;
         continue;
       }
-      std::printf("  run %d %-14s %6.0f ticks/s  %5.1fx real time (%4.1fx with start and stop)%s\n", i + 1,
+      std::printf("  run %d %-16s %6.0f ticks/s  %5.1fx real time (%4.1fx with start and stop)%s\n", i + 1,
                   variants[v].name.c_str(), figures.ticks_per_s, figures.times_real_time,
                   figures.overall_times_real_time, figures.completed ? "" : "  (mission not completed)");
       std::fflush(stdout);
@@ -141,7 +143,7 @@ int main(int argc, char** argv) {
   std::printf("%s%s, median of %d runs each (lockstep loop; in brackets with every process started and stopped):\n",
               scenario.c_str(), net.empty() ? "" : (" with " + net).c_str(), runs);
   for (std::size_t v = 0; v < variants.size(); ++v) {
-    std::printf("  %-14s %6.0f ticks/s  %5.1fx real time (%4.1fx)", variants[v].name.c_str(), median(rate[v]),
+    std::printf("  %-16s %6.0f ticks/s  %5.1fx real time (%4.1fx)", variants[v].name.c_str(), median(rate[v]),
                 median(real[v]), median(overall[v]));
     if (v > 0 && median(rate[v]) > 0) std::printf("   shipped / this: %.2f", median(rate[0]) / median(rate[v]));
     std::printf("\n");

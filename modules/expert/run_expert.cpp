@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "heap_retention.hpp"
 #include "lcm_url.hpp"
 #include "live_runner.hpp"
 #include "log.hpp"
@@ -47,6 +48,7 @@ int runExpertMain(int argc, char** argv, Expert& expert) {
 
 int runExpertMain(int argc, char** argv, Expert& expert,
                   const std::function<void(CLI::App&)>& add_options) {
+  retainFreedHeapMemory();
   LiveOptions options;
   options.lcm_url = defaultLcmUrl();
   options.process_name = expert.name();

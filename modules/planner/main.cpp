@@ -2,6 +2,7 @@
 // PLAN_REQUEST, answers each request once on PLAN_RESULT, and sends a
 // HEARTBEAT every second.
 #include "channels.hpp"
+#include "heap_retention.hpp"
 #include "lcm_url.hpp"
 #include "log.hpp"
 #include "ompl_planner.hpp"
@@ -69,6 +70,7 @@ std::string joined(const std::vector<std::string>& items) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  beft::retainFreedHeapMemory();
   namespace bp = beft::planners;
   CLI::App app{
       "The planner service: plans on the robot's current obstacle map (OBSTACLE_MAP: what the camera has "

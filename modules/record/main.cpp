@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
+#include "heap_retention.hpp"
 #include "lcm_url.hpp"
 #include "log.hpp"
 #include "recorder.hpp"
@@ -19,6 +20,7 @@ void onSignal(int) { g_stop = 1; }
 }  // namespace
 
 int main(int argc, char** argv) {
+  beft::retainFreedHeapMemory();
   CLI::App app{
       "beft-record: writes every message heard on the LCM URL into FILE, an LCM log file "
       "(lcm-logplayer plays it). On SIGINT or SIGTERM it records what is still arriving, "
