@@ -30,8 +30,12 @@ class DepthFrameRays {
   const Eigen::Vector3d& columnStep(int u) const { return column_step_[u]; }
   // Depth of pixel (u, v) in metres, 0 = no return.
   double depth(int u, int v) const {
-    const std::size_t p = static_cast<std::size_t>(v) * depth_.width + u;
-    return (depth_.data[2 * p] | (static_cast<unsigned>(depth_.data[2 * p + 1]) << 8)) * 1e-3;
+    return depthOfPixel(depth_.data.data(), static_cast<std::size_t>(v) * depth_.width + u);
+  }
+  // The same from the frame's bytes: pixel p (row-major), little-endian millimetres.
+  const uint8_t* depthBytes() const { return depth_.data.data(); }
+  static double depthOfPixel(const uint8_t* bytes, std::size_t p) {
+    return (bytes[2 * p] | (static_cast<unsigned>(bytes[2 * p + 1]) << 8)) * 1e-3;
   }
 
  private:

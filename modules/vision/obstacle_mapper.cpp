@@ -73,13 +73,16 @@ void ObstacleMapper::integrate(const DepthFrameRays& rays) {
   int row_of_start = -1;
   Eigen::Vector3d row_start = Eigen::Vector3d::Zero();
   DepthRay ray;
-  integrateRays(rays.origin(), rays.width(), rays.height(), rays.level(), [&](int u, int v) -> const DepthRay& {
+  const uint8_t* const depth_bytes = rays.depthBytes();  // locals: see integrateRays
+  const Eigen::Vector3d* const column_steps = &rays.columnStep(0);
+  const int width = rays.width();
+  integrateRays(rays.origin(), width, rays.height(), rays.level(), [&](int u, int v) -> const DepthRay& {
     if (v != row_of_start) {
       row_start = rays.rowStart(v);
       row_of_start = v;
     }
-    ray.direction = row_start + rays.columnStep(u);
-    ray.t = rays.depth(u, v);
+    ray.direction = row_start + column_steps[u];
+    ray.t = DepthFrameRays::depthOfPixel(depth_bytes, static_cast<std::size_t>(v) * width + u);
     return ray;
   });
 }
@@ -100,20 +103,26 @@ void ObstacleMapper::integrateRays(const Eigen::Vector3d& origin, int width, int
     column.farthest_reach = 0;
     column.floor_rays.clear();
   }
+  // Locals, not members: the byte stores below (hit_this_frame_) may alias
+  // anything, and members would be reloaded on every pixel.
+  const double ox = origin.x(), oy = origin.y(), oz = origin.z();
+  const double floor_height = config_.obstacle_min_height;
+  uint8_t* const hit_this_frame = hit_this_frame_.data();
+  ColumnScan* const columns = columns_.data();
   for (int v = height - 1; v >= 0; --v) {
     for (int u = 0; u < width; ++u) {
       const DepthRay& ray = ray_at(u, v);
       if (!hasReturn(ray)) continue;
-      const double hit_x = origin.x() + ray.t * ray.direction.x();
-      const double hit_y = origin.y() + ray.t * ray.direction.y();
-      const double hit_z = origin.z() + ray.t * ray.direction.z();
+      const double hit_x = ox + ray.t * ray.direction.x();
+      const double hit_y = oy + ray.t * ray.direction.y();
+      const double hit_z = oz + ray.t * ray.direction.z();
       const double reach = ray.t * horizontalLength(ray);
-      ColumnScan& column = columns_[u];
+      ColumnScan& column = columns[u];
       if (reach > column.farthest_reach) {
         column.farthest_reach = reach;
         column.farthest_v = v;
       }
-      if (hit_z <= config_.obstacle_min_height) {
+      if (hit_z <= floor_height) {
         // Written in place: a braced temporary is two narrow stores read back as one
         // wide load, which stalls store-to-load forwarding on every floor pixel.
         ColumnRay& floor = column.floor_rays.emplace_back();
@@ -124,7 +133,7 @@ void ObstacleMapper::integrateRays(const Eigen::Vector3d& origin, int width, int
       int cell_column = 0, cell_row = 0;
       if (!cellOf(hit_x, hit_y, cell_column, cell_row)) continue;
       const std::size_t index = static_cast<std::size_t>(cell_row) * width_ + cell_column;
-      hit_this_frame_[index] = 1;
+      hit_this_frame[index] = 1;
       obstacle_cells.push_back(index);
     }
   }
@@ -153,7 +162,7 @@ void ObstacleMapper::traverse(const Eigen::Vector3d& o, const Eigen::Vector3d& d
   if (!cellOf(start.x(), start.y(), column, row)) return;
   const Eigen::Vector3d end = o + t_end * d;
   int end_column = -1, end_row = -1;
-  cellOf(end.x(), end.y(), end_column, end_row);
+  const bool end_inside = cellOf(end.x(), end.y(), end_column, end_row);
 
   const double r = config_.resolution;
   const double inf = std::numeric_limits<double>::infinity();
@@ -165,21 +174,31 @@ void ObstacleMapper::traverse(const Eigen::Vector3d& o, const Eigen::Vector3d& d
   const double t_delta_x = moves_x ? r / std::abs(d.x()) : inf;
   const double t_delta_y = moves_y ? r / std::abs(d.y()) : inf;
 
+  // The walk in cell indices: a step in x or y is a fixed offset, and the
+  // steps left before the grid's edge are counted down (the hot loop of the
+  // map: every column of every frame walks a ray's length of cells).
+  const std::ptrdiff_t row_step = static_cast<std::ptrdiff_t>(step_y) * width_;
+  int steps_x_left = step_x > 0 ? width_ - 1 - column : column;
+  int steps_y_left = step_y > 0 ? height_ - 1 - row : row;
+  std::size_t index = static_cast<std::size_t>(row) * width_ + column;
+  const std::size_t end_index =
+      end_inside ? static_cast<std::size_t>(end_row) * width_ + end_column : std::numeric_limits<std::size_t>::max();
   double t_enter = t_begin;
-  while (!(column == end_column && row == end_row)) {
+  while (index != end_index) {
     const double t_exit = std::min({t_next_x, t_next_y, t_end});
-    visit(static_cast<std::size_t>(row) * width_ + column, t_enter, t_exit);
+    visit(index, t_enter, t_exit);
     if (t_exit >= t_end) return;
     if (t_next_x < t_next_y) {
-      column += step_x;
+      if (--steps_x_left < 0) return;
+      index += step_x;
       t_enter = t_next_x;
       t_next_x += t_delta_x;
     } else {
-      row += step_y;
+      if (--steps_y_left < 0) return;
+      index += row_step;
       t_enter = t_next_y;
       t_next_y += t_delta_y;
     }
-    if (column < 0 || row < 0 || column >= width_ || row >= height_) return;
   }
 }
 
