@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 
 #include "channel_history.hpp"
 #include "expert.hpp"
@@ -20,7 +21,8 @@ class TickChannel {
   bool store(const void* data, int size) {
     Message message{};
     if (!decodeMessage(data, size, message)) return false;
-    store(message);
+    const int64_t utime = message.utime;
+    history_.store(std::move(message), utime);  // moved: a camera frame's pixels are not copied again
     return true;
   }
   void store(const Message& message) { history_.store(message, message.utime); }
