@@ -1,17 +1,18 @@
 #include "row_workers.hpp"
 
+#include <sched.h>
+
 #include <algorithm>
+#include <chrono>
 
 namespace beft::camera {
 
 namespace {
-int bandStart(int rows, int band, int bands) {
-  return static_cast<int>(static_cast<int64_t>(rows) * band / bands);
-}
+constexpr int kRowsPerClaim = 4;  // a few microseconds of work: the last claim ends soon after the others
 }  // namespace
 
-RowWorkers::RowWorkers(int threads) {
-  for (int band = 1; band < std::max(threads, 1); ++band) helpers_.emplace_back([this, band] { helperLoop(band); });
+RowWorkers::RowWorkers(int threads) : placements_(static_cast<std::size_t>(std::max(threads, 1) - 1)) {
+  for (int helper = 1; helper < std::max(threads, 1); ++helper) helpers_.emplace_back([this] { helperLoop(); });
 }
 
 RowWorkers::~RowWorkers() {
@@ -23,9 +24,16 @@ RowWorkers::~RowWorkers() {
   for (auto& helper : helpers_) helper.join();
 }
 
+void RowWorkers::claimRows(const std::function<void(int, int)>& job, int rows) {
+  for (;;) {
+    const int first = next_row_.fetch_add(kRowsPerClaim, std::memory_order_relaxed);
+    if (first >= rows) return;
+    job(first, std::min(first + kRowsPerClaim, rows));
+  }
+}
+
 void RowWorkers::run(int rows, const std::function<void(int, int)>& job) {
-  const int bands = threads();
-  if (bands == 1 || rows < 2 * bands) {
+  if (helpers_.empty() || rows < 2 * kRowsPerClaim) {
     job(0, rows);
     return;
   }
@@ -33,29 +41,46 @@ void RowWorkers::run(int rows, const std::function<void(int, int)>& job) {
     std::lock_guard<std::mutex> lock(mutex_);
     job_ = &job;
     rows_ = rows;
-    running_ = bands - 1;
+    next_row_.store(0, std::memory_order_relaxed);
     ++generation_;
   }
+  // Off the caller's CPU, so that they work side by side (cpu_placement.hpp).
+  for (std::size_t i = 0; i < helpers_.size(); ++i) placements_[i].keepOffMyCpu(helpers_[i].native_handle());
   start_.notify_all();
-  job(0, bandStart(rows, 1, bands));
+  // The caller works from the start: a helper that wakes late takes fewer
+  // rows, or none, instead of holding the frame up.
+  claimRows(job, rows);
   std::unique_lock<std::mutex> lock(mutex_);
-  finished_.wait(lock, [this] { return running_ == 0; });
-  job_ = nullptr;
+  job_ = nullptr;  // a helper waking from now on takes nothing
+  if (working_ > 0) {
+    // A helper is on its last claim, a few microseconds: stay on the CPU
+    // rather than sleep and take a wake-up (tens of microseconds on a
+    // virtual machine). Yielding lets any other thread ready here run.
+    lock.unlock();
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::milliseconds(2);
+    while (helpers_working_.load(std::memory_order_acquire) > 0 && std::chrono::steady_clock::now() < give_up)
+      sched_yield();
+    lock.lock();
+  }
+  finished_.wait(lock, [this] { return working_ == 0; });
 }
 
-void RowWorkers::helperLoop(int band) {
+void RowWorkers::helperLoop() {
   uint64_t seen = 0;
   std::unique_lock<std::mutex> lock(mutex_);
   while (true) {
     start_.wait(lock, [&] { return stop_ || generation_ != seen; });
     if (stop_) return;
     seen = generation_;
+    if (job_ == nullptr) continue;  // woke after the frame was done
     const auto* job = job_;
-    const int rows = rows_, bands = threads();
+    const int rows = rows_;
+    helpers_working_.store(++working_, std::memory_order_release);
     lock.unlock();
-    (*job)(bandStart(rows, band, bands), bandStart(rows, band + 1, bands));
+    claimRows(*job, rows);
     lock.lock();
-    if (--running_ == 0) finished_.notify_all();
+    helpers_working_.store(--working_, std::memory_order_release);
+    if (working_ == 0) finished_.notify_all();
   }
 }
 

@@ -1,15 +1,19 @@
-// Splits an image's rows into bands and renders them at once on several
-// threads: helper threads kept between frames (no thread start per frame),
-// the first band on the caller's thread. Each band's pixels depend on nothing
-// outside the band, so the image is the same whatever the thread count.
+// Renders an image's rows on several threads: helper threads kept between
+// frames (no thread start per frame) and the caller's, each taking the next
+// few rows until none are left, so a helper that wakes late does less
+// instead of holding the frame up. A row's pixels depend on nothing outside
+// it, so the image is the same whatever the thread count or who took a row.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
+
+#include "cpu_placement.hpp"
 
 namespace beft::camera {
 
@@ -21,19 +25,25 @@ class RowWorkers {
   RowWorkers& operator=(const RowWorkers&) = delete;
 
   int threads() const { return static_cast<int>(helpers_.size()) + 1; }
-  // Runs job(first_row, end_row) on threads() bands of [0, rows), returns when all are done.
+  // Runs job(first_row, end_row) over [0, rows) in short runs of rows on
+  // the threads, returns when all are done.
   void run(int rows, const std::function<void(int, int)>& job);
 
  private:
-  void helperLoop(int band);
+  void helperLoop();
+  void claimRows(const std::function<void(int, int)>& job, int rows);
 
   std::vector<std::thread> helpers_;
   std::mutex mutex_;
   std::condition_variable start_, finished_;
   const std::function<void(int, int)>* job_ = nullptr;
-  int rows_ = 0, running_ = 0;
+  int rows_ = 0;
+  int working_ = 0;                       // helpers inside the current frame
+  std::atomic<int> helpers_working_{0};  // the same, read without the lock
+  std::atomic<int> next_row_{0};   // first row not yet taken
   uint64_t generation_ = 0;
   bool stop_ = false;
+  std::vector<beft::HelperPlacement> placements_;  // one for each helper
 };
 
 }  // namespace beft::camera

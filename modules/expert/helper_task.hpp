@@ -4,11 +4,14 @@
 // threw. The job must not touch what the caller changes until wait() returns.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
+
+#include "cpu_placement.hpp"
 
 namespace beft::expert {
 
@@ -35,7 +38,9 @@ class HelperTask {
   std::exception_ptr error_;
   bool running_ = false;  // started and not yet waited for
   bool done_ = false;     // the job started last has finished
+  std::atomic<bool> finished_{false};  // done_, read without the lock while the caller waits
   bool stop_ = false;
+  HelperPlacement placement_;
   std::thread thread_;  // last: starts once the rest is set up
 };
 

@@ -2,13 +2,19 @@
 // view, the three render methods agreeing, and the frame messages.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <mutex>
 #include <random>
+#include <set>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "camera_messages.hpp"
 #include "camera_model.hpp"
 #include "ray_caster.hpp"
+#include "row_workers.hpp"
 #include "scene_geometry.hpp"
 
 using namespace beft::camera;
@@ -319,4 +325,29 @@ TEST(CameraMessages, RenderingStraightIntoMessagesGivesTheEncodedFrame) {
       for (int u = 0; u < frame.width; u += 7) with_objects += objectAt(direct.instance, u, v) >= 0;
   }
   EXPECT_GT(with_objects, 0) << "no view saw an object with an id";
+}
+
+// The threads take short runs of rows as they come: every row is rendered
+// once, whoever takes it, frame after frame, also by a helper that wakes late.
+TEST(RowWorkers, EveryRowIsDoneExactlyOnceWhoeverTakesIt) {
+  for (int threads : {2, 3}) {
+    beft::camera::RowWorkers workers(threads);
+    for (int frame = 0; frame < 200; ++frame) {
+      const int rows = 5 + frame % 160;
+      std::vector<std::atomic<int>> done(static_cast<std::size_t>(rows));
+      std::set<std::thread::id> workers_seen;
+      std::mutex seen_mutex;
+      workers.run(rows, [&](int first, int end) {
+        ASSERT_LE(0, first);
+        ASSERT_LT(first, end);
+        ASSERT_LE(end, rows);
+        for (int row = first; row < end; ++row) done[static_cast<std::size_t>(row)]++;
+        std::lock_guard<std::mutex> lock(seen_mutex);
+        workers_seen.insert(std::this_thread::get_id());
+      });
+      for (int row = 0; row < rows; ++row)
+        ASSERT_EQ(done[static_cast<std::size_t>(row)].load(), 1) << "row " << row << " of frame " << frame;
+      ASSERT_LE(workers_seen.size(), static_cast<std::size_t>(threads));
+    }
+  }
 }
