@@ -116,29 +116,32 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
         std::string("no ") + (scene == nullptr ? "GT_OBJECTS" : depth == nullptr ? "CAMERA_DEPTH" : "CAMERA_INSTANCE") +
         " for tick " + std::to_string(firing.tick));
   try {
-    // The map and the percepts need nothing of each other: the map is built
-    // on the helper thread meanwhile (it touches only the mapper's state).
-    mapping_.start([&] {
-      updateMap(*scene, *depth, firing.tick);
-      // Re-encoded only when a cell changed (a robot standing still sees no change).
-      if (map_message_version_ == 0 || mapper_->version() != map_message_version_) {
-        map_message_ = mapper_->toMessage(scene->utime, firing.tick);
-        map_message_version_ = mapper_->version();
+    // The map and the percepts need nothing of each other: the percepts are
+    // computed on the helper thread meanwhile (they touch only their own
+    // state). The map, the longer part, stays here: it starts at once, while
+    // the helper takes a wake-up to start.
+    visual_percepts_t percepts;
+    percepting_.start([&] {
+      // Expected pixels only change with the camera or the objects' shapes and poses.
+      if (expected_pose_.width == 0 || !samePose(*instance, expected_pose_) || !sameSolids(*scene, expected_scene_)) {
+        const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
+        expected_ = ray_caster_.expectedPixelsPerObject(solids, camera::cameraOfFrame(*instance));
+        expected_pose_ = poseOf(*instance);
+        expected_scene_ = *scene;
       }
-      map_message_.utime = scene->utime;
-      map_message_.tick = firing.tick;
+      const std::vector<int> visible = countVisiblePixels(*instance, *scene);
+      percepts = estimateVisualOcclusion(*scene, visible, expected_);
     });
-    expert::WaitOnExit mapped(mapping_);  // also when the percepts throw
-    // Expected pixels only change with the camera or the objects' shapes and poses.
-    if (expected_pose_.width == 0 || !samePose(*instance, expected_pose_) || !sameSolids(*scene, expected_scene_)) {
-      const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
-      expected_ = ray_caster_.expectedPixelsPerObject(solids, camera::cameraOfFrame(*instance));
-      expected_pose_ = poseOf(*instance);
-      expected_scene_ = *scene;
+    expert::WaitOnExit perceived(percepting_);  // also when the map throws
+    updateMap(*scene, *depth, firing.tick);
+    // Re-encoded only when a cell changed (a robot standing still sees no change).
+    if (map_message_version_ == 0 || mapper_->version() != map_message_version_) {
+      map_message_ = mapper_->toMessage(scene->utime, firing.tick);
+      map_message_version_ = mapper_->version();
     }
-    const std::vector<int> visible = countVisiblePixels(*instance, *scene);
-    const visual_percepts_t percepts = estimateVisualOcclusion(*scene, visible, expected_);
-    mapping_.wait();  // a mapping error ends up below
+    map_message_.utime = scene->utime;
+    map_message_.tick = firing.tick;
+    percepting_.wait();  // an error of the percepts ends up below
     // Both at the end: a publish wakes the readers, who would take the cores from the work.
     out.publish(channels::kVision, percepts);
     out.publish(channels::kObstacleMap, map_message_);

@@ -59,7 +59,7 @@ class VisionExpert : public expert::Expert {
   expert::TickChannel<scene_objects_t> scene_;
   expert::TickChannel<camera_frame_t> depth_{4};
   expert::TickChannel<camera_frame_t> instance_{4};
-  expert::HelperTask mapping_;  // last: its thread ends before the state it works on goes
+  expert::HelperTask percepting_;  // last: its thread ends before the state it works on goes
 };
 
 }  // namespace beft::vision
