@@ -51,6 +51,8 @@ ArbiterCore::ArbiterCore(Net net, ArbiterConfig config, Clock& clock, ArbiterOut
   }
   for (const auto& transition : net_.transitions)
     transition_expert_.push_back(transition.silent() ? -1 : expertIndex(transition.expert));
+  for (const auto& name : config_.also_wait_for)
+    if (expertIndex(name) < 0) services_heard_[name] = false;
 }
 
 int ArbiterCore::firingsInFlight() const {
@@ -59,10 +61,12 @@ int ArbiterCore::firingsInFlight() const {
   return count;
 }
 
-std::vector<std::string> ArbiterCore::missingExperts() const {
+std::vector<std::string> ArbiterCore::missingProcesses() const {
   std::vector<std::string> missing;
   for (const auto& expert : experts_)
     if (!expert.heard) missing.push_back(expert.name);
+  for (const auto& [name, heard] : services_heard_)
+    if (!heard) missing.push_back(name);
   return missing;
 }
 
@@ -73,7 +77,7 @@ void ArbiterCore::start() {
   run_start_ = now;
   startup_deadline_ = now + config_.startup_timeout_s;
   next_startup_report_ = now + config_.startup_report_period_s;
-  const auto missing = missingExperts();
+  const auto missing = missingProcesses();
   if (missing.empty()) {
     beginRun();
     return;
@@ -89,14 +93,25 @@ void ArbiterCore::beginRun() {
   // Experts drop a FIRE whose id is not above the last they ran: continue
   // above anything they report, so a restarted arbiter is heard.
   next_firing_id_ = std::max<int64_t>(1, highest_reported_firing_id_ + 1);
-  log::info("every expert is up; the run starts (first firing id ", next_firing_id_, ")");
+  log::info("every expert", services_heard_.empty() ? "" : " and service", " is up; the run starts (first firing id ",
+            next_firing_id_, ")");
   sendStatus(beft::run_status_t::STATE_RUNNING, "tick 0");
   step("start");
 }
 
 void ArbiterCore::onHeartbeat(const beft::heartbeat_t& heartbeat) {
   const int e = expertIndex(heartbeat.process);
-  if (e < 0) return;  // another process (blackboard, viewer): not scheduled by this net
+  if (e < 0) {
+    // A service the run waits for, or another process (blackboard, viewer).
+    const auto service = services_heard_.find(heartbeat.process);
+    if (service == services_heard_.end() || service->second) return;
+    service->second = true;
+    if (state_ == RunState::Waiting && started_) {
+      log::info("heard ", heartbeat.process, " (pid ", heartbeat.pid, " on ", heartbeat.host, ")");
+      if (missingProcesses().empty()) beginRun();
+    }
+    return;
+  }
   ExpertState& expert = experts_[e];
   const bool first = !expert.heard;
   expert.heard = true;
@@ -109,7 +124,7 @@ void ArbiterCore::onHeartbeat(const beft::heartbeat_t& heartbeat) {
     highest_reported_firing_id_ = std::max(highest_reported_firing_id_, heartbeat.last_firing_id);
     if (first && started_) {
       log::info("heard ", expert.name, " (pid ", heartbeat.pid, " on ", heartbeat.host, ")");
-      if (missingExperts().empty()) beginRun();
+      if (missingProcesses().empty()) beginRun();
     }
   } else if (state_ == RunState::Running && heartbeat.last_firing_id >= next_firing_id_ &&
              !expert.warned_foreign) {
@@ -194,7 +209,7 @@ void ArbiterCore::onTimeAdvanced() {
   }
   if (state_ == RunState::Waiting) {
     if (!started_) return;
-    const auto missing = missingExperts();
+    const auto missing = missingProcesses();
     if (now >= startup_deadline_) {
       fail("no heartbeat within " + seconds(config_.startup_timeout_s) + " from: " +
            joinNames(missing) + " (are they started, on the same --lcm-url?)");

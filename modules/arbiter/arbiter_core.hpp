@@ -69,6 +69,11 @@ struct ArbiterConfig {
   int64_t max_ticks = 0;              // 0: until a stop request
   double dt_s = 0.1;                  // simulated time per tick, for utime = tick * dt
   double startup_timeout_s = 30.0;    // wait for the first heartbeat of every expert
+  // Processes outside the net whose first heartbeat the run also waits for:
+  // services the experts ask within a tick (the planner). A request sent
+  // before such a service is up is lost, and the answer waited for then
+  // depends on how fast the machine started it, not on the seed.
+  std::vector<std::string> also_wait_for;
   double startup_report_period_s = 3.0;  // how often to say whom it still waits for
   double resend_period_s = 0.02;      // FIRE is re-sent this often until DONE
   double heartbeat_timeout_s = 3.0;   // default for transitions that give none
@@ -122,8 +127,8 @@ class ArbiterCore {
   const ArbiterStats& stats() const { return stats_; }
   // Firings sent and not yet ended (DONE, expiry).
   int firingsInFlight() const;
-  // Experts whose first heartbeat has not arrived yet.
-  std::vector<std::string> missingExperts() const;
+  // Experts, and processes of also_wait_for, whose first heartbeat has not arrived yet.
+  std::vector<std::string> missingProcesses() const;
 
  private:
   struct Running {
@@ -187,6 +192,7 @@ class ArbiterCore {
   std::string message_;
   Marking marking_;
   std::vector<ExpertState> experts_;
+  std::map<std::string, bool> services_heard_;  // also_wait_for: first heartbeat arrived
   std::vector<int> transition_expert_;  // expert index per transition, -1 if silent
   int64_t tick_ = 0;
   int64_t next_firing_id_ = 1;

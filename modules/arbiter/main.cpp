@@ -68,6 +68,10 @@ int main(int argc, char** argv) {
   app.add_option("--startup-timeout", config.startup_timeout_s,
                  "seconds to wait for the first heartbeat of every expert")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
+  app.add_option("--wait-for", config.also_wait_for,
+                 "a process outside the net whose first heartbeat the run also waits for, a service the "
+                 "experts ask within a tick such as the planner (repeatable): a request sent before it is "
+                 "up is lost, and the run's result then depends on how fast the machine started it");
   app.add_option("--heartbeat-timeout", config.heartbeat_timeout_s,
                  "seconds without heartbeat after which an expert counts as gone, unless its "
                  "transition sets <heartbeat_timeout>")

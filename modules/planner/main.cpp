@@ -1,6 +1,6 @@
 // beft-planner: the planner service. Subscribes OBSTACLE_MAP and
 // PLAN_REQUEST, answers each request once on PLAN_RESULT, and sends a
-// HEARTBEAT every second.
+// HEARTBEAT every second, and at once to an arbiter that waits for it.
 #include "channels.hpp"
 #include "heap_retention.hpp"
 #include "lcm_url.hpp"
@@ -12,6 +12,7 @@
 #include "udpm_filter.hpp"
 
 #include <beft/heartbeat_t.hpp>
+#include <beft/run_status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <CLI/CLI.hpp>
@@ -54,10 +55,15 @@ class Inbox {
       beft::plan_request_t request;
       if (request.decode(message.data, 0, size) == size) requests.push_back(std::move(request));
       else beft::log::warn("dropped a ", size, "-byte PLAN_REQUEST that does not decode");
+    } else if (message.channel == beft::channels::kRunStatus) {
+      beft::run_status_t status;
+      if (status.decode(message.data, 0, size) == size && status.state == beft::run_status_t::STATE_WAITING)
+        arbiter_waiting = true;
     }
   }
   std::vector<uint8_t> latest_map;
   bool has_map = false;
+  bool arbiter_waiting = false;  // an arbiter waits for heartbeats: answer without waiting for the period
   std::deque<beft::plan_request_t> requests;
 };
 
@@ -123,6 +129,12 @@ int main(int argc, char** argv) {
   beft::udpm_filter::Spec maps, requests;
   maps.rules = {beft::udpm_filter::channelRule(beft::channels::kObstacleMap)};
   requests.rules = {beft::udpm_filter::channelRule(beft::channels::kPlanRequest)};
+  // An arbiter waiting for heartbeats (run_status_t's state byte follows utime and tick).
+  beft::udpm_filter::Rule waiting = beft::udpm_filter::channelRule(beft::channels::kRunStatus);
+  waiting.field_offset = 16;
+  waiting.field = std::string(1, static_cast<char>(beft::run_status_t::STATE_WAITING));
+  waiting.what = "an arbiter waiting for heartbeats";
+  requests.rules.push_back(waiting);
   std::unique_ptr<beft::MessageSource> request_source, map_source;
   try {
     beft::SplitSources sources = beft::openSplitSources(lcm, lcm_url, requests, maps, 16, 1000);
@@ -145,13 +157,21 @@ int main(int argc, char** argv) {
   heartbeat.host = hostName();
   heartbeat.last_firing_id = -1;
   auto next_heartbeat = std::chrono::steady_clock::now();
+  auto last_waiting_answer = next_heartbeat - std::chrono::seconds(1);
   int64_t answered = 0;
   while (!g_stop) {
-    if (std::chrono::steady_clock::now() >= next_heartbeat) {
+    const auto now = std::chrono::steady_clock::now();
+    // An arbiter that started after the last heartbeat waits for the next:
+    // answer at once (at most every 50 ms), as the experts do.
+    const bool answer_waiting =
+        inbox.arbiter_waiting && now - last_waiting_answer > std::chrono::milliseconds(50);
+    inbox.arbiter_waiting = false;
+    if (now >= next_heartbeat || answer_waiting) {
       heartbeat.utime = wallMicros();
       heartbeat.state = "idle";
       lcm.publish(beft::channels::kHeartbeat, &heartbeat);
-      next_heartbeat += std::chrono::seconds(1);
+      if (answer_waiting) last_waiting_answer = now;
+      if (now >= next_heartbeat) next_heartbeat += std::chrono::seconds(1);
     }
     beft::udpm::waitReadable({request_source->fd()}, 100);
     // The maps first: a request sees the map sent before it.

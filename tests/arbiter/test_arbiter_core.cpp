@@ -54,12 +54,19 @@ class Simulation : public ArbiterOutput {
   Simulation(Net net, ArbiterConfig config) : core_(std::move(net), config, clock_, *this) {}
 
   Script& expert(const std::string& name) { return scripts_[name]; }
+  // A process outside the net (a service such as the planner) that sends
+  // heartbeats from `starts_at` on.
+  void service(const std::string& name, double starts_at) { services_[name] = starts_at; }
 
   // Runs until the core is done (or `until` simulated seconds).
   void run(double until = 600.0) {
     for (const auto& name : core_.net().experts()) {
       scripts_[name];  // every expert of the net exists, with the default script
       scheduleHeartbeat(name, scripts_[name].starts_at);
+    }
+    for (const auto& [name, starts_at] : services_) {
+      scripts_[name].starts_at = starts_at;  // its heartbeats only: it is never fired
+      scheduleHeartbeat(name, starts_at);
     }
     core_.start();
     for (int iterations = 0; !core_.done() && iterations < 10000000; ++iterations) {
@@ -231,6 +238,7 @@ class Simulation : public ArbiterOutput {
   FakeClock clock_;
   ArbiterCore core_;
   std::map<std::string, Script> scripts_;
+  std::map<std::string, double> services_;  // outside the net: name -> first heartbeat
   std::map<std::string, MockExpert> mocks_;
   std::priority_queue<Event> events_;
   int64_t next_order_ = 0;
@@ -629,6 +637,35 @@ TEST(ArbiterCore, WaitsForEveryExpertBeforeTheFirstFire) {
   ASSERT_EQ(waiting.size(), 3u);  // at 0, 3 and 6 s
   EXPECT_EQ(waiting[1], "waiting for heartbeats from: audio");
   EXPECT_EQ(waiting[2], "waiting for heartbeats from: audio");
+}
+
+TEST(ArbiterCore, WaitsForAServiceItIsToldToWaitFor) {
+  ArbiterConfig config = testConfig(1);
+  config.also_wait_for = {"planner"};
+  Simulation sim(readPnmlFile(kNets + "experts_only.pnml"), config);
+  sim.service("planner", 4.0);
+  sim.service("viewer", kNever);  // not waited for: never heard, never missed
+  sim.run();
+  ASSERT_EQ(sim.core().state(), RunState::Finished) << sim.core().message();
+  ASSERT_FALSE(sim.entries().empty());
+  EXPECT_GE(sim.entries().front().time, 4.0);  // no FIRE before the planner was heard
+  std::vector<std::string> waiting;
+  for (const auto& s : sim.statuses())
+    if (s.state == beft::run_status_t::STATE_WAITING) waiting.push_back(s.message);
+  ASSERT_EQ(waiting.size(), 2u);  // at 0 and 3 s
+  EXPECT_EQ(waiting[1], "waiting for heartbeats from: planner");
+}
+
+TEST(ArbiterCore, FailsWhenAServiceItWaitsForNeverStarts) {
+  ArbiterConfig config = testConfig(1);
+  config.startup_timeout_s = 2.0;
+  config.also_wait_for = {"planner"};
+  Simulation sim(readPnmlFile(kNets + "experts_only.pnml"), config);
+  sim.service("planner", kNever);
+  sim.run();
+  ASSERT_EQ(sim.core().state(), RunState::Failed);
+  EXPECT_TRUE(contains(sim.core().message(), "no heartbeat within 2 s from: planner")) << sim.core().message();
+  EXPECT_TRUE(sim.fires().empty());
 }
 
 TEST(ArbiterCore, FailsWhenAnExpertNeverStarts) {
