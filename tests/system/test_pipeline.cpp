@@ -3,6 +3,7 @@
 // experts against the recorded log, lcm-logplayer, and running one expert by hand.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -16,6 +17,7 @@
 #include <beft/hypotheses_t.hpp>
 #include <beft/geometry_percepts_t.hpp>
 #include <beft/labels_t.hpp>
+#include <beft/plan_request_t.hpp>
 #include <beft/acoustic_percepts_t.hpp>
 #include <beft/scene_objects_t.hpp>
 #include <beft/visual_percepts_t.hpp>
@@ -331,6 +333,57 @@ TEST(Launch, AnExpertStartedByHandLaterCompletesTheRun) {
   int vision_done = 0;
   for (const auto& d : messagesOn<beft::done_t>(readLog(dir + "/run.lcmlog"), "DONE")) vision_done += d.expert == "vision";
   EXPECT_GE(vision_done, 15);  // 20 ticks; the logger may lose a datagram
+}
+
+// The planner is a service the experts ask within a tick: a run that started
+// before it was up lost the first plan request (yard.xml asks at tick 49),
+// the executor waited 2 s for an answer that never came, and the mission
+// went differently. The arbiter waits for its heartbeat too (mission.xml:
+// --wait-for planner), so a planner started late changes nothing.
+TEST(Launch, APlannerStartedLateChangesNothing) {
+  constexpr int kTicks = 60;
+  const std::string reference_dir = makeTempDir("planner_reference");
+  const auto reference = runCommand(binDir() + "/beft-run " + sourceDir() + "/scenarios/yard.xml --max-ticks " +
+                                        std::to_string(kTicks) + " --no-report --out " + reference_dir,
+                                    300);
+  ASSERT_EQ(reference.exit_code, 0) << reference.output;
+
+  const std::string dir = makeTempDir("planner_late");
+  const pid_t runner = fork();
+  if (runner == 0) {
+    const std::string command = binDir() + "/beft-run " + sourceDir() + "/scenarios/yard.xml --max-ticks " +
+                                std::to_string(kTicks) + " --no-report --except planner --out " + dir + " > " + dir +
+                                "/run_output.txt 2>&1";
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::string url;
+  for (int i = 0; i < 100 && url.empty(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    const auto line = lineAfter(runCommand("cat " + dir + "/run_output.txt", 5).output, "[run] LCM ");
+    if (!line.empty()) url = line.substr(0, line.find(';'));
+  }
+  ASSERT_FALSE(url.empty());
+  std::this_thread::sleep_for(std::chrono::seconds(2));  // without the wait, the run would be past tick 49
+  const pid_t planner = fork();
+  if (planner == 0) {
+    // mission.xml's arguments for the planner
+    const std::string command = binDir() + "/beft-planner --planner pf-geodesic --robot-radius 0.5 --lcm-url '" +
+                                url + "' > " + dir + "/planner_output.txt 2>&1";
+    execl("/bin/sh", "sh", "-c", ("exec " + command).c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  waitpid(runner, &status, 0);
+  kill(planner, SIGTERM);
+  waitpid(planner, nullptr, 0);
+  const auto out = runCommand("cat " + dir + "/run_output.txt", 5).output;
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+  const auto late = readLog(dir + "/run.lcmlog");
+  EXPECT_FALSE(messagesOn<beft::plan_request_t>(late, "PLAN_REQUEST").empty()) << "no plan asked within the run";
+  const DataComparison comparison = compareDataMessages(readLog(reference_dir + "/run.lcmlog"), late);
+  EXPECT_GT(comparison.compared, 0u);
+  EXPECT_EQ(comparison.differing, 0u) << "first difference: " << comparison.first_difference;
 }
 
 // A short run of peek.xml recorded when the message types were first fixed:
