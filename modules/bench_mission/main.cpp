@@ -4,8 +4,9 @@
 // LCM's own receive thread with the kernel channel filter, as before it; the
 // arbiter's poll for DONE, BEFT_ARBITER_SPIN_US=0; the background priority of
 // the recorder and blackboard, BEFT_BACKGROUND=0; the heap kept between
-// firings, BEFT_RETAIN_HEAP=0), alternately so that all share the machine's state, and prints ticks per
-// second, times real time and each baseline's ratio to the shipped setup.
+// firings, BEFT_RETAIN_HEAP=0), alternately so that all share the machine's
+// state, and prints ticks per second, times real time and each baseline's
+// ratio to the shipped setup.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>

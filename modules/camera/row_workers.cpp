@@ -1,9 +1,6 @@
 #include "row_workers.hpp"
 
-#include <sched.h>
-
 #include <algorithm>
-#include <chrono>
 
 namespace beft::camera {
 
@@ -53,16 +50,13 @@ void RowWorkers::run(int rows, const std::function<void(int, int)>& job) {
   std::unique_lock<std::mutex> lock(mutex_);
   job_ = nullptr;  // a helper waking from now on takes nothing
   if (working_ > 0) {
-    // A helper is on its last claim, a few microseconds: stay on the CPU
-    // rather than sleep and take a wake-up (tens of microseconds on a
-    // virtual machine). Yielding lets any other thread ready here run.
+    // A helper is on its last claim, a few microseconds: cheaper to wait on
+    // the CPU than to sleep and be woken (cpu_placement.hpp).
     lock.unlock();
-    const auto give_up = std::chrono::steady_clock::now() + std::chrono::milliseconds(2);
-    while (helpers_working_.load(std::memory_order_acquire) > 0 && std::chrono::steady_clock::now() < give_up)
-      sched_yield();
+    yieldUntil([this] { return working_.load() == 0; });
     lock.lock();
   }
-  finished_.wait(lock, [this] { return working_ == 0; });
+  finished_.wait(lock, [this] { return working_.load() == 0; });
 }
 
 void RowWorkers::helperLoop() {
@@ -75,12 +69,11 @@ void RowWorkers::helperLoop() {
     if (job_ == nullptr) continue;  // woke after the frame was done
     const auto* job = job_;
     const int rows = rows_;
-    helpers_working_.store(++working_, std::memory_order_release);
+    ++working_;
     lock.unlock();
     claimRows(*job, rows);
     lock.lock();
-    helpers_working_.store(--working_, std::memory_order_release);
-    if (working_ == 0) finished_.notify_all();
+    if (--working_ == 0) finished_.notify_all();
   }
 }
 

@@ -38,9 +38,8 @@ class RowWorkers {
   std::condition_variable start_, finished_;
   const std::function<void(int, int)>* job_ = nullptr;
   int rows_ = 0;
-  int working_ = 0;                       // helpers inside the current frame
-  std::atomic<int> helpers_working_{0};  // the same, read without the lock
-  std::atomic<int> next_row_{0};   // first row not yet taken
+  std::atomic<int> working_{0};   // helpers inside the current frame (changed under mutex_, read also without)
+  std::atomic<int> next_row_{0};  // first row not yet taken
   uint64_t generation_ = 0;
   bool stop_ = false;
   std::vector<beft::HelperPlacement> placements_;  // one for each helper

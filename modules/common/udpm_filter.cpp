@@ -99,6 +99,15 @@ Rule fireFor(const std::string& channel, const std::string& expert) {
   return rule;
 }
 
+Rule runStatusIn(const std::string& channel, int8_t state, const std::string& what) {
+  Rule rule;
+  rule.channel = channel;
+  rule.field_offset = 16;  // after utime and tick
+  rule.field = std::string(1, static_cast<char>(state));
+  rule.what = what;
+  return rule;
+}
+
 bool isPlainChannel(const std::string& pattern) {
   if (pattern.empty()) return false;
   for (char c : pattern)

@@ -51,6 +51,10 @@ Rule channelRule(const std::string& channel);
 // the expert's name as an LCM string (big-endian length with the NUL, bytes, NUL).
 Rule fireFor(const std::string& channel, const std::string& expert);
 
+// RUN_STATUS messages in one state only: run_status_t encodes utime and tick
+// (8 bytes each) and then its state byte. `what` names it for the log.
+Rule runStatusIn(const std::string& channel, int8_t state, const std::string& what);
+
 // True when an LCM subscription pattern is a plain channel name (no regex).
 bool isPlainChannel(const std::string& pattern);
 

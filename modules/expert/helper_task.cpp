@@ -1,8 +1,5 @@
 #include "helper_task.hpp"
 
-#include <sched.h>
-
-#include <chrono>
 #include <stdexcept>
 #include <utility>
 
@@ -37,16 +34,11 @@ void HelperTask::wait() {
   std::unique_lock<std::mutex> lock(mutex_);
   if (!running_) return;
   if (!done_) {
-    // Stay on the CPU for a while rather than sleep: waking a sleeping thread
-    // takes tens of microseconds on a virtual machine, which is a good part
-    // of the job. Yielding lets any other thread ready here run meanwhile.
     lock.unlock();
-    const auto give_up = std::chrono::steady_clock::now() + std::chrono::milliseconds(2);
-    while (!finished_.load(std::memory_order_acquire) && std::chrono::steady_clock::now() < give_up) sched_yield();
+    yieldUntil([this] { return done_.load(); });  // cpu_placement.hpp: cheaper than a wake-up
     lock.lock();
   }
-  changed_.wait(lock, [this] { return done_; });
-  finished_.store(false, std::memory_order_relaxed);
+  changed_.wait(lock, [this] { return done_.load(); });
   running_ = false;
   job_ = nullptr;
   if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
@@ -67,7 +59,6 @@ void HelperTask::loop() {
     lock.lock();
     error_ = error;
     done_ = true;
-    finished_.store(true, std::memory_order_release);
     changed_.notify_all();
   }
 }

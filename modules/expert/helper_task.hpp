@@ -37,8 +37,7 @@ class HelperTask {
   std::function<void()> job_;
   std::exception_ptr error_;
   bool running_ = false;  // started and not yet waited for
-  bool done_ = false;     // the job started last has finished
-  std::atomic<bool> finished_{false};  // done_, read without the lock while the caller waits
+  std::atomic<bool> done_{false};  // the job started last has finished (set under mutex_, read also without)
   bool stop_ = false;
   HelperPlacement placement_;
   std::thread thread_;  // last: starts once the rest is set up

@@ -216,16 +216,10 @@ class Runner {
     }
     control_spec.rules.push_back(udpm_filter::fireFor(channels::kFire, options_.process_name));
     // Only an arbiter waiting for heartbeats and the end of the run matter
-    // here, not the status of every tick: run_status_t's state byte follows
-    // utime and tick.
+    // here, not the status of every tick.
     for (int8_t state : {beft::run_status_t::STATE_WAITING, beft::run_status_t::STATE_FINISHED,
-                         beft::run_status_t::STATE_FAILED}) {
-      udpm_filter::Rule rule = udpm_filter::channelRule(channels::kRunStatus);
-      rule.field_offset = 16;
-      rule.field = std::string(1, static_cast<char>(state));
-      rule.what = "waiting and end of run";
-      control_spec.rules.push_back(rule);
-    }
+                         beft::run_status_t::STATE_FAILED})
+      control_spec.rules.push_back(udpm_filter::runStatusIn(channels::kRunStatus, state, "waiting and end of run"));
     if (!snapshot_channel_.empty()) control_spec.rules.push_back(udpm_filter::channelRule(snapshot_channel_));
     try {
       SplitSources sources = openSplitSources(lcm_, options_.lcm_url, control_spec, input_spec);

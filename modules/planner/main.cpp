@@ -129,12 +129,8 @@ int main(int argc, char** argv) {
   beft::udpm_filter::Spec maps, requests;
   maps.rules = {beft::udpm_filter::channelRule(beft::channels::kObstacleMap)};
   requests.rules = {beft::udpm_filter::channelRule(beft::channels::kPlanRequest)};
-  // An arbiter waiting for heartbeats (run_status_t's state byte follows utime and tick).
-  beft::udpm_filter::Rule waiting = beft::udpm_filter::channelRule(beft::channels::kRunStatus);
-  waiting.field_offset = 16;
-  waiting.field = std::string(1, static_cast<char>(beft::run_status_t::STATE_WAITING));
-  waiting.what = "an arbiter waiting for heartbeats";
-  requests.rules.push_back(waiting);
+  requests.rules.push_back(beft::udpm_filter::runStatusIn(
+      beft::channels::kRunStatus, beft::run_status_t::STATE_WAITING, "an arbiter waiting for heartbeats"));
   std::unique_ptr<beft::MessageSource> request_source, map_source;
   try {
     beft::SplitSources sources = beft::openSplitSources(lcm, lcm_url, requests, maps, 16, 1000);

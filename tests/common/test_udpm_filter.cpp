@@ -16,6 +16,7 @@
 #include <vector>
 
 #include <beft/fire_t.hpp>
+#include <beft/run_status_t.hpp>
 #include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
 
@@ -45,6 +46,17 @@ std::string encodedFire(const std::string& expert) {
   fire.firing_id = 99;
   std::string bytes(static_cast<std::size_t>(fire.getEncodedSize()), '\0');
   fire.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  return bytes;
+}
+
+std::string encodedStatus(int8_t state) {
+  beft::run_status_t status;
+  status.utime = 5000000;
+  status.tick = 50;
+  status.state = state;
+  status.message = "tick 50";
+  std::string bytes(static_cast<std::size_t>(status.getEncodedSize()), '\0');
+  status.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
   return bytes;
 }
 
@@ -132,6 +144,20 @@ TEST(UdpmFilter, FireRuleMatchesTheExpertNameInsideTheRealEncoding) {
   EXPECT_FALSE(socket.passes(shortDatagram("FIRE", encodedFire("vision2"))));
   EXPECT_FALSE(socket.passes(shortDatagram("FIREX", encodedFire("vision"))));
   EXPECT_TRUE(socket.passes(shortDatagram("RUN_STATUS", "s")));
+}
+
+TEST(UdpmFilter, RunStatusRuleMatchesTheStateInsideTheRealEncoding) {
+  using beft::run_status_t;
+  Spec spec;
+  spec.rules = {beft::udpm_filter::runStatusIn("RUN_STATUS", run_status_t::STATE_WAITING, "waiting")};
+  FilteredSocket socket(spec);
+  ASSERT_TRUE(socket.attached());
+  EXPECT_TRUE(socket.passes(shortDatagram("RUN_STATUS", encodedStatus(run_status_t::STATE_WAITING))));
+  for (int8_t other : {run_status_t::STATE_RUNNING, run_status_t::STATE_FINISHED, run_status_t::STATE_FAILED}) {
+    EXPECT_FALSE(socket.passes(shortDatagram("RUN_STATUS", encodedStatus(other)))) << "state " << int{other};
+    const std::string encoded = encodedStatus(other);
+    EXPECT_FALSE(beft::udpm_filter::accepts(spec, "RUN_STATUS", encoded.data(), encoded.size()));
+  }
 }
 
 TEST(UdpmFilter, RejectListedModeDropsOnlyTheListed) {
