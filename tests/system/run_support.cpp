@@ -118,6 +118,16 @@ DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected_lo
   return result;
 }
 
+std::map<std::string, ChannelDigest> dataDigests(const std::vector<LoggedMessage>& log) {
+  std::map<std::string, ChannelDigest> digests;
+  for (const auto& [key, data] : dataMessages(log)) {
+    ChannelDigest& digest = digests[std::get<0>(key)];
+    ++digest.count;
+    for (const uint8_t byte : data) digest.hash = (digest.hash ^ byte) * 1099511628211ull;  // FNV-1a prime
+  }
+  return digests;
+}
+
 std::string lineAfter(const std::string& output, const std::string& prefix) {
   std::size_t pos = 0;
   while (pos < output.size()) {

@@ -59,6 +59,16 @@ struct DataComparison {
 };
 DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected, const std::vector<LoggedMessage>& actual);
 
+// A compact fingerprint of a run's data messages, per channel: how many and
+// a 64-bit FNV-1a hash over their bytes in DataKey order. Pinned in
+// tests/system/data/ so a change that should alter no message can be checked
+// against the build before it without keeping its 85 MB logs.
+struct ChannelDigest {
+  std::size_t count = 0;
+  uint64_t hash = 1469598103934665603ull;  // FNV-1a offset basis
+};
+std::map<std::string, ChannelDigest> dataDigests(const std::vector<LoggedMessage>& log);
+
 // The first line of `output` that starts with `prefix`, without it; "" if none.
 std::string lineAfter(const std::string& output, const std::string& prefix);
 

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -186,4 +189,52 @@ TEST(MissionYard, TheConcurrentNetWritesExactlyTheMessagesOfThePapersSchedule) {
   EXPECT_GE(comparison.compared, comparison.expected * 99 / 100) << "too few messages in both logs";
   EXPECT_EQ(paper.report["ticks"], concurrent.report["ticks"]);
   EXPECT_EQ(paper.report["victims"], concurrent.report["victims"]);
+}
+
+namespace {
+
+const std::string kDigestFile = sourceDir() + "/tests/system/data/data_digests.json";
+
+nlohmann::json digestsAsJson(const std::map<std::string, ChannelDigest>& digests) {
+  nlohmann::json out = nlohmann::json::object();
+  char hex[17];
+  for (const auto& [channel, digest] : digests) {
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(digest.hash));
+    out[channel] = {{"count", digest.count}, {"fnv1a64", hex}};
+  }
+  return out;
+}
+
+}  // namespace
+
+// The data messages of the shipped missions are pinned: a change meant to
+// alter no message of a run (a refactoring, a speed-up) is checked against
+// the build before it. A change that alters them on purpose rewrites the
+// file with BEFT_UPDATE_DIGESTS=1 and says why in its commit.
+TEST(MissionDigests, YardPeekAndDecoyWriteTheDataMessagesOfThePinnedBuild) {
+  nlohmann::json pinned = readJson(kDigestFile);
+  const bool update = std::getenv("BEFT_UPDATE_DIGESTS") != nullptr;
+  for (const std::string scenario : {"yard", "peek", "decoy"}) {
+    nlohmann::json actual = digestsAsJson(dataDigests(missionRun(scenario).log));
+    // The recorder hears the run over UDP like any process: a datagram it
+    // lost shows as a lower count. Such a run is recorded again (twice at most).
+    for (int attempt = 0; attempt < 2 && !update && actual != pinned[scenario]; ++attempt) {
+      const std::string dir = makeTempDir("digest_" + scenario);
+      runCommand(binDir() + "/beft-run " + sourceDir() + "/scenarios/" + scenario + ".xml --no-report --out " + dir,
+                 600);
+      actual = digestsAsJson(dataDigests(readLog(dir + "/run.lcmlog")));
+    }
+    if (update) {
+      pinned[scenario] = actual;
+      continue;
+    }
+    ASSERT_TRUE(pinned.contains(scenario)) << kDigestFile << " has no " << scenario;
+    for (const auto& [channel, digest] : pinned[scenario].items())
+      EXPECT_EQ(actual.value(channel, nlohmann::json()), digest) << scenario << ": " << channel << " differs";
+    EXPECT_EQ(actual.size(), pinned[scenario].size()) << scenario << ": other channels than pinned";
+  }
+  if (update) {
+    std::ofstream(kDigestFile) << pinned.dump(2) << "\n";
+    std::printf("[test] wrote %s\n", kDigestFile.c_str());
+  }
 }
