@@ -7,7 +7,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "blackboard/channel_types.hpp"
+#include "channels.hpp"
 #include "blackboard/embedded_schemas.hpp"
 
 namespace beft::blackboard {
@@ -327,7 +327,7 @@ std::vector<std::string> MessageDecoder::describeLines(const std::string& channe
     return lines.finish();
   }
   const LcmStruct* type = types_.findByFingerprint(*fingerprint);
-  const std::string expected = expectedTypeOfChannel(channel);
+  const std::string expected = channels::typeOfChannel(channel);
   if (!type) {
     std::string text = "unknown type: fingerprint " + hex(*fingerprint) + ", " + std::to_string(size) + " bytes";
     if (const LcmStruct* expected_type = expected.empty() ? nullptr : types_.find(expected))

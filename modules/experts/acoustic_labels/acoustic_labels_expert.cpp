@@ -16,31 +16,8 @@ std::string AcousticLabelsExpert::description() const {
          "--replay LOG.";
 }
 
-std::vector<expert::ChannelSpec> AcousticLabelsExpert::reads() const {
-  return {{channels::kGroundTruth, "beft.scene_objects_t"},
-          {channels::kGeometry, "beft.geometry_percepts_t"},
-          {channels::kAudio, "beft.acoustic_percepts_t"}};
-}
-
-std::vector<expert::ChannelSpec> AcousticLabelsExpert::writes() const {
-  return {{channels::kLabelsAcoustic, "beft.labels_t"}};
-}
-
-std::vector<std::vector<std::string>> AcousticLabelsExpert::parameterHelp() const {
-  return {{"aw_variance_deg2", "8100", "variance s of a_w(alpha) in eq. 2 [deg^2]; the paper prints 90"},
-          {"label_gain", "20", "gain g of eq. 3 (default form)"},
-          {"label_form", "default", "eq. 3 form: default (logistic with gain g) or printed (the paper's literal formula)"}};
-}
-
-void AcousticLabelsExpert::onStartUp(const expert::Parameters& parameters) {
-  for (const auto& [key, value] : parameters.all()) model::setParameter(model_, key, value);
-}
-
-bool AcousticLabelsExpert::onMessage(const std::string& channel, const void* data, int size) {
-  if (channel == channels::kGroundTruth) return scene_.store(data, size);
-  if (channel == channels::kGeometry) return geometry_.store(data, size);
-  if (channel == channels::kAudio) return audio_.store(data, size);
-  return false;
+void AcousticLabelsExpert::declareParameters(DeclaredParameters& parameters) {
+  model::declareParameters(parameters, model_, {"aw_variance_deg2", "label_gain", "label_form"});
 }
 
 bool AcousticLabelsExpert::inputsReady(const expert::Firing& firing) const {
@@ -57,7 +34,7 @@ expert::Outcome AcousticLabelsExpert::fire(const expert::Firing& firing, expert:
                                     " for tick " + std::to_string(firing.tick));
   const AcousticLabelling result = labelAcoustically(*scene, *geometry, *audio, model_);
   for (const auto& reason : result.skipped) log::warn("tick ", firing.tick, ": not labelled: ", reason);
-  out.publish(channels::kLabelsAcoustic, result.labels);
+  labels_acoustic_out_.publish(out, result.labels);
   return expert::Outcome::success();
 }
 

@@ -8,7 +8,6 @@
 
 #include "expert.hpp"
 #include "model.hpp"
-#include "tick_channel.hpp"
 
 namespace beft::acoustic_labels {
 
@@ -16,19 +15,18 @@ class AcousticLabelsExpert : public expert::Expert {
  public:
   std::string name() const override { return "acoustic_labels"; }
   std::string description() const override;
-  std::vector<expert::ChannelSpec> reads() const override;
-  std::vector<expert::ChannelSpec> writes() const override;
-  std::vector<std::vector<std::string>> parameterHelp() const override;
-  void onStartUp(const expert::Parameters& parameters) override;
-  bool onMessage(const std::string& channel, const void* data, int size) override;
   bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override;
+
  private:
   model::Parameters model_;
-  expert::TickChannel<scene_objects_t> scene_;
-  expert::TickChannel<geometry_percepts_t> geometry_;
-  expert::TickChannel<acoustic_percepts_t> audio_;
+  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::TickInput<geometry_percepts_t> geometry_{*this, channels::kGeometry};
+  expert::TickInput<acoustic_percepts_t> audio_{*this, channels::kAudio};
+  expert::OutputPort<labels_t> labels_acoustic_out_{*this, channels::kLabelsAcoustic};
 };
 
 }  // namespace beft::acoustic_labels

@@ -1,5 +1,7 @@
 #include "audio_expert.hpp"
 
+#include <limits>
+
 #include <stdexcept>
 
 #include "channels.hpp"
@@ -17,35 +19,17 @@ std::string AudioExpert::description() const {
          "tokens for 'audio' (or run the arbiter), and watch AUDIO with lcm-spy.";
 }
 
-std::vector<expert::ChannelSpec> AudioExpert::reads() const {
-  return {{channels::kGroundTruth, "beft.scene_objects_t"}, {channels::kRobotState, "beft.robot_state_t"}};
+void AudioExpert::declareParameters(DeclaredParameters& parameters) {
+  parameters.declare("position_noise", config_.noise.enabled, "1: add seeded noise to p_hat, spread growing as a_P falls");
+  parameters.declare("noise_max_m", config_.noise.max_sigma, 0, DeclaredParameters::kNoLimit,
+                     "noise spread (standard deviation per axis) at a_P = 0 [m]");
+  parameters.declare("seed", seed_, 0, std::numeric_limits<int64_t>::max(),
+                     "seed of the position noise (use the scenario's seed)");
+  model::declareParameters(parameters, config_.model, {"aw_variance_deg2"});
 }
 
-std::vector<expert::ChannelSpec> AudioExpert::writes() const {
-  return {{channels::kAudio, "beft.acoustic_percepts_t"}};
-}
-
-std::vector<std::vector<std::string>> AudioExpert::parameterHelp() const {
-  return {{"position_noise", "0", "1: add seeded noise to p_hat, spread growing as a_P falls"},
-          {"noise_max_m", "2.0", "noise spread (standard deviation per axis) at a_P = 0 [m]"},
-          {"seed", "0", "seed of the position noise (use the scenario's seed)"},
-          {"aw_variance_deg2", "8100", "variance s of a_w(alpha) in eq. 2, for the noise's a_P [deg^2]"}};
-}
-
-void AudioExpert::onStartUp(const expert::Parameters& parameters) {
-  config_.noise.enabled = parameters.getBool("position_noise", false);
-  config_.noise.max_sigma = parameters.getDouble("noise_max_m", config_.noise.max_sigma);
-  if (!(config_.noise.max_sigma >= 0)) throw std::invalid_argument("noise_max_m must be >= 0");
-  const int64_t seed = parameters.getInt("seed", 0);
-  config_.noise.seed = static_cast<uint64_t>(seed);
-  if (parameters.has("aw_variance_deg2"))
-    model::setParameter(config_.model, "aw_variance_deg2", parameters.getString("aw_variance_deg2", ""));
-}
-
-bool AudioExpert::onMessage(const std::string& channel, const void* data, int size) {
-  if (channel == channels::kGroundTruth) return scene_.store(data, size);
-  if (channel == channels::kRobotState) return robot_.store(data, size);
-  return false;
+void AudioExpert::onStartUp() {
+  config_.noise.seed = static_cast<uint64_t>(seed_);
 }
 
 bool AudioExpert::inputsReady(const expert::Firing& firing) const {
@@ -59,7 +43,7 @@ expert::Outcome AudioExpert::fire(const expert::Firing& firing, expert::Output& 
     return expert::Outcome::failure(std::string("no ") + (scene == nullptr ? "GT_OBJECTS" : "ROBOT_STATE") +
                                     " for tick " + std::to_string(firing.tick));
   const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
-  out.publish(channels::kAudio, estimateAudio(*scene, solids, *robot, config_));
+  audio_out_.publish(out, estimateAudio(*scene, solids, *robot, config_));
   return expert::Outcome::success();
 }
 

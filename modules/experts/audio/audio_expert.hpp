@@ -7,7 +7,6 @@
 
 #include "audio_estimator.hpp"
 #include "expert.hpp"
-#include "tick_channel.hpp"
 
 namespace beft::audio {
 
@@ -15,18 +14,19 @@ class AudioExpert : public expert::Expert {
  public:
   std::string name() const override { return "audio"; }
   std::string description() const override;
-  std::vector<expert::ChannelSpec> reads() const override;
-  std::vector<expert::ChannelSpec> writes() const override;
-  std::vector<std::vector<std::string>> parameterHelp() const override;
-  void onStartUp(const expert::Parameters& parameters) override;
-  bool onMessage(const std::string& channel, const void* data, int size) override;
   bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override;
+  void onStartUp() override;
+
  private:
   AudioConfig config_;
-  expert::TickChannel<scene_objects_t> scene_;
-  expert::TickChannel<robot_state_t> robot_;
+  int64_t seed_ = 0;  // of the position noise
+  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
+  expert::OutputPort<acoustic_percepts_t> audio_out_{*this, channels::kAudio};
 };
 
 }  // namespace beft::audio

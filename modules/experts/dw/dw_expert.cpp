@@ -35,64 +35,27 @@ std::string DwExpert::description() const {
          "(every weight, the viewing direction from ROBOT_STATE, the current task from TASK_STACK).";
 }
 
-std::vector<expert::ChannelSpec> DwExpert::reads() const {
-  return {{channels::kAudio, "beft.acoustic_percepts_t"},
-          {channels::kLabelsAcoustic, "beft.labels_t"},
-          {channels::kGroundTruth, "beft.scene_objects_t"},
-          {channels::kRobotState, "beft.robot_state_t"},
-          {channels::kTaskStack, "beft.task_stack_t"}};
+void DwExpert::declareParameters(DeclaredParameters& parameters) {
+  parameters.declare("dw_step_s", step_s_, 1e-6, DeclaredParameters::kNoLimit, "simulated time between two DW steps [s]");
+  parameters.declare("t_max", parameters_.t_max, 1, 1000000, "T_max of eq. 4: curve length and re-evaluation delay [steps]");
+  parameters.declare("n", parameters_.n, 1, DeclaredParameters::kNoLimit, "n of eq. 4 (T_max^2: one curve spans 0.25)", true);
+  parameters.declare("reflex_threshold", parameters_.reflex_threshold, 0, 1,
+                     "an upward crossing of this weight triggers the turn-to reflex");
+  parameters.declare("reflex_priority", reflex_priority_, 0, 1000000, "priority of the reflex look_at task");
+  parameters.declare("reflex", reflex_enabled_, "push reflex tasks at all (0: weights only)");
+  parameters.declare("incongruent_c", parameters_.incongruent_c, 0, 1, "a (label, activity) with c >= this rises, others fall");
+  parameters.declare("initial_weight", parameters_.initial_weight, 0, 1, "weight of a newly heard object");
+  parameters.declare("default_c", default_c_, 0, 1, "c of a (label, activity) pair not in the congruency table");
+  parameters.declare("reevaluate", parameters_.reevaluate, "re-evaluate c after more than T_max unchanged steps");
+  parameters.declare("min_perceptibility", min_perceptibility_, 0, 1,
+                     "an object counts as heard when its a_P is at least this");
 }
 
-std::vector<expert::ChannelSpec> DwExpert::writes() const {
-  return {{channels::kDynamicWeights, "beft.dynamic_weights_t"}, {channels::kTaskCommand, "beft.task_command_t"}};
-}
-
-std::vector<std::vector<std::string>> DwExpert::parameterHelp() const {
-  return {{"dw_step_s", "0.5", "simulated time between two DW steps [s]"},
-          {"t_max", "10", "T_max of eq. 4: curve length and re-evaluation delay [steps]"},
-          {"n", "100", "n of eq. 4 (T_max^2: one curve spans 0.25)"},
-          {"reflex_threshold", "0.75", "an upward crossing of this weight triggers the turn-to reflex"},
-          {"reflex_priority", "100", "priority of the reflex look_at task"},
-          {"reflex", "1", "push reflex tasks at all (0: weights only)"},
-          {"incongruent_c", "0.75", "a (label, activity) with c >= this rises, others fall"},
-          {"initial_weight", "0.5", "weight of a newly heard object"},
-          {"default_c", "0.5", "c of a (label, activity) pair not in the congruency table"},
-          {"reevaluate", "1", "re-evaluate c after more than T_max unchanged steps"},
-          {"min_perceptibility", "0", "an object counts as heard when its a_P is at least this"}};
-}
-
-void DwExpert::onStartUp(const expert::Parameters& p) {
-  const double step_s = p.getDouble("dw_step_s", 0.5);
-  if (!(step_s > 0) || !std::isfinite(step_s)) throw std::invalid_argument("dw_step_s must be > 0");
-  step_us_ = static_cast<int64_t>(std::llround(step_s * 1e6));
-  if (step_us_ <= 0) throw std::invalid_argument("dw_step_s must be at least 1 us");
-  parameters_.t_max = static_cast<int>(p.getInt("t_max", 10));
-  parameters_.n = p.getDouble("n", 100);
-  parameters_.reflex_threshold = p.getDouble("reflex_threshold", 0.75);
-  parameters_.incongruent_c = p.getDouble("incongruent_c", 0.75);
-  parameters_.initial_weight = p.getDouble("initial_weight", 0.5);
-  parameters_.reevaluate = p.getBool("reevaluate", true);
-  reflex_priority_ = static_cast<int32_t>(p.getInt("reflex_priority", 100));
-  reflex_enabled_ = p.getBool("reflex", true);
-  default_c_ = p.getDouble("default_c", 0.5);
-  min_perceptibility_ = p.getDouble("min_perceptibility", 0.0);
-  if (parameters_.t_max < 1) throw std::invalid_argument("t_max must be >= 1");
-  if (!(parameters_.n > 1)) throw std::invalid_argument("n must be > 1");
-  if (!(parameters_.initial_weight >= 0 && parameters_.initial_weight <= 1))
-    throw std::invalid_argument("initial_weight must be in [0, 1]");
-  if (!(default_c_ >= 0 && default_c_ <= 1)) throw std::invalid_argument("default_c must be in [0, 1]");
+void DwExpert::onStartUp() {
+  step_us_ = static_cast<int64_t>(std::llround(step_s_ * 1e6));
   CongruencyTable table;
   table.setDefaultValue(default_c_);
   dw_ = std::make_unique<DynamicWeighting>(parameters_, table);
-}
-
-bool DwExpert::onMessage(const std::string& channel, const void* data, int size) {
-  if (channel == channels::kAudio) return audio_.store(data, size);
-  if (channel == channels::kLabelsAcoustic) return labels_.store(data, size);
-  if (channel == channels::kGroundTruth) return scene_.store(data, size);
-  if (channel == channels::kRobotState) return robot_.store(data, size);
-  if (channel == channels::kTaskStack) return stack_.store(data, size);
-  return false;
 }
 
 bool DwExpert::stepDue(int64_t utime) const { return stepIndex(utime, step_us_) > last_step_index_; }
@@ -162,7 +125,7 @@ std::vector<Stimulus> DwExpert::stimuliOf(const acoustic_percepts_t& audio, cons
 }
 
 expert::Outcome DwExpert::fire(const expert::Firing& firing, expert::Output& out) {
-  if (!dw_) onStartUp({});
+  if (!dw_) startUp();
   const auto* scene = scene_.ofTick(firing.tick);
   if (scene == nullptr) scene = scene_.latest();
   if (scene != nullptr) adoptTable(*scene);
@@ -196,7 +159,7 @@ expert::Outcome DwExpert::fire(const expert::Firing& firing, expert::Output& out
         look.origin = "dw";
         look.note = "turn-to reflex: " + trigger.object_id + " weight " + fmt(trigger.weight_after);
         command.task = tasks::toMessage(look);
-        out.publish(channels::kTaskCommand, command);
+        task_command_out_.publish(out, command);
       }
     }
   }
@@ -228,7 +191,7 @@ expert::Outcome DwExpert::fire(const expert::Firing& firing, expert::Output& out
     message.weights.push_back(w);
   }
   message.num_weights = static_cast<int32_t>(message.weights.size());
-  out.publish(channels::kDynamicWeights, message);
+  dynamic_weights_out_.publish(out, message);
   return expert::Outcome::success();
 }
 

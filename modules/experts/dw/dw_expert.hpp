@@ -19,7 +19,6 @@
 
 #include "dynamic_weighting.hpp"
 #include "expert.hpp"
-#include "tick_channel.hpp"
 
 namespace beft::dw {
 
@@ -27,13 +26,12 @@ class DwExpert : public expert::Expert {
  public:
   std::string name() const override { return "dw"; }
   std::string description() const override;
-  std::vector<expert::ChannelSpec> reads() const override;
-  std::vector<expert::ChannelSpec> writes() const override;
-  std::vector<std::vector<std::string>> parameterHelp() const override;
-  void onStartUp(const expert::Parameters& parameters) override;
-  bool onMessage(const std::string& channel, const void* data, int size) override;
   bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
+
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override;
+  void onStartUp() override;
 
  private:
   bool stepDue(int64_t utime) const;
@@ -41,7 +39,8 @@ class DwExpert : public expert::Expert {
   void adoptTable(const scene_objects_t& scene);
 
   DwParameters parameters_;
-  int64_t step_us_ = 500000;
+  double step_s_ = 0.5;  // simulated time between two DW steps [s]
+  int64_t step_us_ = 0;  // the same in microseconds, from step_s_ at start-up
   int32_t reflex_priority_ = 100;
   bool reflex_enabled_ = true;
   double default_c_ = 0.5;
@@ -52,11 +51,13 @@ class DwExpert : public expert::Expert {
   std::string attended_object_;
   int64_t next_command_id_ = 1;
 
-  expert::TickChannel<acoustic_percepts_t> audio_;
-  expert::TickChannel<labels_t> labels_;
-  expert::TickChannel<scene_objects_t> scene_{4};
-  expert::TickChannel<robot_state_t> robot_;
-  expert::TickChannel<task_stack_t> stack_{4};
+  expert::TickInput<acoustic_percepts_t> audio_{*this, channels::kAudio};
+  expert::TickInput<labels_t> labels_{*this, channels::kLabelsAcoustic};
+  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth, 4};
+  expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
+  expert::TickInput<task_stack_t> stack_{*this, channels::kTaskStack, 4};
+  expert::OutputPort<dynamic_weights_t> dynamic_weights_out_{*this, channels::kDynamicWeights};
+  expert::OutputPort<task_command_t> task_command_out_{*this, channels::kTaskCommand};
 };
 
 }  // namespace beft::dw

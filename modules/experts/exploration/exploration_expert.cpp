@@ -14,20 +14,7 @@
 namespace beft::exploration {
 namespace {
 
-std::string number(double value) {
-  std::string text = std::to_string(value);
-  text.erase(text.find_last_not_of('0') + 1);
-  if (!text.empty() && text.back() == '.') text.pop_back();
-  return text;
-}
-
-void requirePositive(double value, const char* name) {
-  if (!(value > 0) || !std::isfinite(value)) throw std::invalid_argument(std::string(name) + " must be > 0");
-}
-
-void requireNonNegative(double value, const char* name) {
-  if (!(value >= 0) || !std::isfinite(value)) throw std::invalid_argument(std::string(name) + " must be >= 0");
-}
+constexpr double kNoLimit = DeclaredParameters::kNoLimit;
 
 }  // namespace
 
@@ -92,104 +79,48 @@ std::string ExplorationExpert::description() const {
          "only for the scenario's duration. Deterministic.";
 }
 
-std::vector<expert::ChannelSpec> ExplorationExpert::reads() const {
-  return {{channels::kHypotheses, "beft.hypotheses_t"},     {channels::kObstacleMap, "beft.obstacle_map_t"},
-          {channels::kRobotState, "beft.robot_state_t"},    {channels::kTaskStack, "beft.task_stack_t"},
-          {channels::kDynamicWeights, "beft.dynamic_weights_t"}, {channels::kGroundTruth, "beft.scene_objects_t"}};
+void ExplorationExpert::declareParameters(DeclaredParameters& parameters) {
+  ExplorerParameters& e = parameters_;
+  ViewpointParameters& v = e.viewpoints;
+  FrontierParameters& f = e.frontiers;
+  parameters.declare("verify_priority", e.verify_priority, 0, 1000000, "priority of verify tasks");
+  parameters.declare("explore_priority", e.explore_priority, 0, 1000000, "priority of explore tasks (look around, frontiers)");
+  parameters.declare("safety_margin_m", e.safety_margin_m, 0, kNoLimit, "added to the robot radius for where it may stand [m]");
+  parameters.declare("look_around", e.look_around, "turn a full circle at the start");
+  parameters.declare("verify_attempts", e.verify_attempts, 1, 1000, "viewpoints tried per heard hypothesis before giving up");
+  parameters.declare("inspect_attempts", e.inspect_attempts, 1, 1000, "viewpoints tried per glimpsed hypothesis");
+  parameters.declare("inspect_glimpsed", e.inspect_glimpsed, "approach hypotheses glimpsed by vision that may be persons");
+  parameters.declare("look_dwell_s", e.look_dwell_s, 0, kNoLimit, "after looking, wait this long for fusion to settle [s]");
+  parameters.declare("attempt_timeout_s", e.attempt_timeout_s, 0, kNoLimit,
+                     "an attempt fails after this plus travel / nominal_speed [s]", true);
+  parameters.declare("nominal_speed", e.nominal_speed, 0, kNoLimit, "speed used to scale attempt timeouts [m/s]", true);
+  parameters.declare("retry_after_s", e.retry_after_s, 0, kNoLimit,
+                     "a hypothesis without a viewpoint is reconsidered after this [s]");
+  parameters.declare("weight_gain_m", e.weight_gain_m, 0, kNoLimit,
+                     "travel a DW weight of 1 is worth when choosing a hypothesis [m]");
+  parameters.declare("min_view_m", v.min_distance_m, 0, kNoLimit, "closest viewpoint to a target [m]");
+  parameters.declare("max_view_m", v.max_distance_m, 0, kNoLimit, "farthest viewpoint from a target [m]", true);
+  parameters.declare("preferred_view_m", v.preferred_distance_m, 0, kNoLimit, "viewpoints farther than this cost extra [m]");
+  parameters.declare("target_radius_m", v.target_radius_m, 0, kNoLimit,
+                     "the sight lines to both sides of the target must be clear [m]");
+  parameters.declare("target_clearance_m", v.target_clearance_m, 0, kNoLimit,
+                     "occupied cells this close to the target are its own [m]");
+  parameters.declare("unknown_cost", v.unknown_cost, 0, kNoLimit, "cost per metre of sight line through unknown cells [m/m]");
+  parameters.declare("tried_radius_m", v.tried_radius_m, 0, kNoLimit, "a new viewpoint keeps this far from tried ones [m]");
+  parameters.declare("blind_radius_m", f.blind_radius_m, 0, kNoLimit,
+                     "unknown ground this close to where the robot stood is no frontier [m]");
+  parameters.declare("visited_radius_m", f.visited_radius_m, 0, kNoLimit,
+                     "frontier cells this close to a reached frontier goal are ignored [m]");
+  parameters.declare("min_frontier_cells", f.min_cells, 1, 1000000, "smaller frontiers are ignored [cells]");
+  parameters.declare("stop_when_done", e.stop_when_done,
+                     "request the stop when nothing is left (0: keep watching until the scenario's duration)");
 }
 
-std::vector<expert::ChannelSpec> ExplorationExpert::writes() const {
-  return {{channels::kTaskCommand, "beft.task_command_t"}, {channels::kStopRequest, "beft.run_status_t"}};
-}
-
-std::vector<std::vector<std::string>> ExplorationExpert::parameterHelp() const {
-  const ExplorerParameters d;
-  return {
-      {"verify_priority", std::to_string(d.verify_priority), "priority of verify tasks"},
-      {"explore_priority", std::to_string(d.explore_priority), "priority of explore tasks (look around, frontiers)"},
-      {"safety_margin_m", number(d.safety_margin_m), "added to the robot radius for where it may stand [m]"},
-      {"look_around", "1", "turn a full circle at the start"},
-      {"verify_attempts", std::to_string(d.verify_attempts), "viewpoints tried per heard hypothesis before giving up"},
-      {"inspect_attempts", std::to_string(d.inspect_attempts), "viewpoints tried per glimpsed hypothesis"},
-      {"inspect_glimpsed", "1", "approach hypotheses glimpsed by vision that may be persons"},
-      {"look_dwell_s", number(d.look_dwell_s), "after looking, wait this long for fusion to settle [s]"},
-      {"attempt_timeout_s", number(d.attempt_timeout_s), "an attempt fails after this plus travel / nominal_speed [s]"},
-      {"nominal_speed", number(d.nominal_speed), "speed used to scale attempt timeouts [m/s]"},
-      {"retry_after_s", number(d.retry_after_s), "a hypothesis without a viewpoint is reconsidered after this [s]"},
-      {"weight_gain_m", number(d.weight_gain_m), "travel a DW weight of 1 is worth when choosing a hypothesis [m]"},
-      {"min_view_m", number(d.viewpoints.min_distance_m), "closest viewpoint to a target [m]"},
-      {"max_view_m", number(d.viewpoints.max_distance_m), "farthest viewpoint from a target [m]"},
-      {"preferred_view_m", number(d.viewpoints.preferred_distance_m), "viewpoints farther than this cost extra [m]"},
-      {"target_radius_m", number(d.viewpoints.target_radius_m), "the sight lines to both sides of the target must be clear [m]"},
-      {"target_clearance_m", number(d.viewpoints.target_clearance_m), "occupied cells this close to the target are its own [m]"},
-      {"unknown_cost", number(d.viewpoints.unknown_cost), "cost per metre of sight line through unknown cells [m/m]"},
-      {"tried_radius_m", number(d.viewpoints.tried_radius_m), "a new viewpoint keeps this far from tried ones [m]"},
-      {"blind_radius_m", number(d.frontiers.blind_radius_m), "unknown ground this close to where the robot stood is no frontier [m]"},
-      {"visited_radius_m", number(d.frontiers.visited_radius_m), "frontier cells this close to a reached frontier goal are ignored [m]"},
-      {"min_frontier_cells", std::to_string(d.frontiers.min_cells), "smaller frontiers are ignored [cells]"},
-      {"stop_when_done", "1", "request the stop when nothing is left (0: keep watching until the scenario's duration)"},
-  };
-}
-
-void ExplorationExpert::onStartUp(const expert::Parameters& p) {
-  ExplorerParameters e;
-  e.origin = name();
-  e.verify_priority = static_cast<int32_t>(p.getInt("verify_priority", e.verify_priority));
-  e.explore_priority = static_cast<int32_t>(p.getInt("explore_priority", e.explore_priority));
-  e.safety_margin_m = p.getDouble("safety_margin_m", e.safety_margin_m);
-  e.look_around = p.getBool("look_around", e.look_around);
-  e.verify_attempts = static_cast<int>(p.getInt("verify_attempts", e.verify_attempts));
-  e.inspect_attempts = static_cast<int>(p.getInt("inspect_attempts", e.inspect_attempts));
-  e.inspect_glimpsed = p.getBool("inspect_glimpsed", e.inspect_glimpsed);
-  e.look_dwell_s = p.getDouble("look_dwell_s", e.look_dwell_s);
-  e.attempt_timeout_s = p.getDouble("attempt_timeout_s", e.attempt_timeout_s);
-  e.nominal_speed = p.getDouble("nominal_speed", e.nominal_speed);
-  e.retry_after_s = p.getDouble("retry_after_s", e.retry_after_s);
-  e.weight_gain_m = p.getDouble("weight_gain_m", e.weight_gain_m);
-  e.viewpoints.min_distance_m = p.getDouble("min_view_m", e.viewpoints.min_distance_m);
-  e.viewpoints.max_distance_m = p.getDouble("max_view_m", e.viewpoints.max_distance_m);
-  e.viewpoints.preferred_distance_m = p.getDouble("preferred_view_m", e.viewpoints.preferred_distance_m);
-  e.viewpoints.target_radius_m = p.getDouble("target_radius_m", e.viewpoints.target_radius_m);
-  e.viewpoints.target_clearance_m = p.getDouble("target_clearance_m", e.viewpoints.target_clearance_m);
-  e.viewpoints.unknown_cost = p.getDouble("unknown_cost", e.viewpoints.unknown_cost);
-  e.viewpoints.tried_radius_m = p.getDouble("tried_radius_m", e.viewpoints.tried_radius_m);
-  e.frontiers.blind_radius_m = p.getDouble("blind_radius_m", e.frontiers.blind_radius_m);
-  e.frontiers.visited_radius_m = p.getDouble("visited_radius_m", e.frontiers.visited_radius_m);
-  e.frontiers.min_cells = static_cast<int>(p.getInt("min_frontier_cells", e.frontiers.min_cells));
-  e.stop_when_done = p.getBool("stop_when_done", e.stop_when_done);
-
-  requireNonNegative(e.safety_margin_m, "safety_margin_m");
-  if (e.verify_attempts < 1) throw std::invalid_argument("verify_attempts must be >= 1");
-  if (e.inspect_attempts < 1) throw std::invalid_argument("inspect_attempts must be >= 1");
-  requireNonNegative(e.look_dwell_s, "look_dwell_s");
-  requirePositive(e.attempt_timeout_s, "attempt_timeout_s");
-  requirePositive(e.nominal_speed, "nominal_speed");
-  requireNonNegative(e.retry_after_s, "retry_after_s");
-  requireNonNegative(e.weight_gain_m, "weight_gain_m");
-  requireNonNegative(e.viewpoints.min_distance_m, "min_view_m");
-  requirePositive(e.viewpoints.max_distance_m, "max_view_m");
-  if (e.viewpoints.max_distance_m <= e.viewpoints.min_distance_m)
+void ExplorationExpert::onStartUp() {
+  if (parameters_.viewpoints.max_distance_m <= parameters_.viewpoints.min_distance_m)
     throw std::invalid_argument("max_view_m must be greater than min_view_m");
-  requireNonNegative(e.viewpoints.preferred_distance_m, "preferred_view_m");
-  requireNonNegative(e.viewpoints.target_radius_m, "target_radius_m");
-  requireNonNegative(e.viewpoints.target_clearance_m, "target_clearance_m");
-  requireNonNegative(e.viewpoints.unknown_cost, "unknown_cost");
-  requireNonNegative(e.viewpoints.tried_radius_m, "tried_radius_m");
-  requireNonNegative(e.frontiers.blind_radius_m, "blind_radius_m");
-  requireNonNegative(e.frontiers.visited_radius_m, "visited_radius_m");
-  if (e.frontiers.min_cells < 1) throw std::invalid_argument("min_frontier_cells must be >= 1");
-  parameters_ = e;
+  parameters_.origin = name();
   explorer_ = std::make_unique<Explorer>(parameters_);
-}
-
-bool ExplorationExpert::onMessage(const std::string& channel, const void* data, int size) {
-  if (channel == channels::kRobotState) return robot_.store(data, size);
-  if (channel == channels::kHypotheses) return hypotheses_.store(data, size);
-  if (channel == channels::kDynamicWeights) return weights_.store(data, size);
-  if (channel == channels::kObstacleMap) return map_messages_.store(data, size);
-  if (channel == channels::kTaskStack) return stack_.store(data, size);
-  if (channel == channels::kGroundTruth) return scene_.store(data, size);
-  return false;
 }
 
 bool ExplorationExpert::inputsReady(const expert::Firing& firing) const {
@@ -253,7 +184,7 @@ Observation ExplorationExpert::observe(const expert::Firing& firing) {
 }
 
 expert::Outcome ExplorationExpert::fire(const expert::Firing& firing, expert::Output& out) {
-  if (!explorer_) onStartUp({});
+  if (!explorer_) startUp();
   const Observation observation = observe(firing);
   if (!observation.robot_known)
     return expert::Outcome::failure("no ROBOT_STATE for tick " + std::to_string(firing.tick));
@@ -263,7 +194,7 @@ expert::Outcome ExplorationExpert::fire(const expert::Firing& firing, expert::Ou
     task_command_t command = commandOf(request, parameters_.origin);
     command.utime = firing.utime;
     command.command_id = next_command_id_++;
-    out.publish(channels::kTaskCommand, command);
+    task_command_out_.publish(out, command);
   }
   if (decision.stop) {
     run_status_t stop{};
@@ -271,7 +202,7 @@ expert::Outcome ExplorationExpert::fire(const expert::Firing& firing, expert::Ou
     stop.tick = firing.tick;
     stop.state = run_status_t::STATE_FINISHED;
     stop.message = *decision.stop;
-    out.publish(channels::kStopRequest, stop);
+    stop_request_out_.publish(out, stop);
   }
   return expert::Outcome::success();
 }

@@ -20,7 +20,6 @@
 
 #include "explorer.hpp"
 #include "expert.hpp"
-#include "tick_channel.hpp"
 
 namespace beft::exploration {
 
@@ -33,13 +32,12 @@ class ExplorationExpert : public expert::Expert {
  public:
   std::string name() const override { return "exploration"; }
   std::string description() const override;
-  std::vector<expert::ChannelSpec> reads() const override;
-  std::vector<expert::ChannelSpec> writes() const override;
-  std::vector<std::vector<std::string>> parameterHelp() const override;
-  void onStartUp(const expert::Parameters& parameters) override;
-  bool onMessage(const std::string& channel, const void* data, int size) override;
   bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
+
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override;
+  void onStartUp() override;
 
  private:
   Observation observe(const expert::Firing& firing);
@@ -53,12 +51,14 @@ class ExplorationExpert : public expert::Expert {
   std::shared_ptr<const planners::ObstacleCells> map_;
   bool map_warned_ = false;
 
-  expert::TickChannel<robot_state_t> robot_;
-  expert::TickChannel<hypotheses_t> hypotheses_{4};
-  expert::TickChannel<dynamic_weights_t> weights_{4};
-  expert::TickChannel<obstacle_map_t> map_messages_{2};
-  expert::TickChannel<task_stack_t> stack_{4};
-  expert::TickChannel<scene_objects_t> scene_{2};
+  expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
+  expert::TickInput<hypotheses_t> hypotheses_{*this, channels::kHypotheses, 4};
+  expert::TickInput<dynamic_weights_t> weights_{*this, channels::kDynamicWeights, 4};
+  expert::TickInput<obstacle_map_t> map_messages_{*this, channels::kObstacleMap, 2};
+  expert::TickInput<task_stack_t> stack_{*this, channels::kTaskStack, 4};
+  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth, 2};
+  expert::OutputPort<task_command_t> task_command_out_{*this, channels::kTaskCommand};
+  expert::OutputPort<run_status_t> stop_request_out_{*this, channels::kStopRequest};
 };
 
 }  // namespace beft::exploration

@@ -20,46 +20,12 @@ std::string FusionExpert::description() const {
          "lcm-logplayer of a recorded run) and FIRE tokens for 'fusion', or use --replay LOG.";
 }
 
-std::vector<expert::ChannelSpec> FusionExpert::reads() const {
-  return {{channels::kGroundTruth, "beft.scene_objects_t"},
-          {channels::kVision, "beft.visual_percepts_t"},
-          {channels::kLabelsVisual, "beft.labels_t"},
-          {channels::kAudio, "beft.acoustic_percepts_t"},
-          {channels::kLabelsAcoustic, "beft.labels_t"},
-          {channels::kHypotheses, "beft.hypotheses_t"}};  // to resume after a restart
+void FusionExpert::declareParameters(DeclaredParameters& parameters) {
+  parameters.declare("seen_threshold", config_.seen_threshold, 0, 1,
+                     "visual perceptibility v_P from which an object counts as seen");
 }
 
-std::vector<expert::ChannelSpec> FusionExpert::writes() const {
-  return {{channels::kHypotheses, "beft.hypotheses_t"}};
-}
-
-std::vector<std::vector<std::string>> FusionExpert::parameterHelp() const {
-  return {{"seen_threshold", "0.5", "visual perceptibility v_P from which an object counts as seen [0..1]"}};
-}
-
-void FusionExpert::onStartUp(const expert::Parameters& parameters) {
-  FusionConfig config;
-  config.seen_threshold = parameters.getDouble("seen_threshold", config.seen_threshold);
-  if (!(config.seen_threshold >= 0 && config.seen_threshold <= 1))
-    throw std::invalid_argument("seen_threshold must be within [0, 1]");
-  fusion_ = HypothesisFusion(config);
-}
-
-bool FusionExpert::onMessage(const std::string& channel, const void* data, int size) {
-  if (channel == channels::kGroundTruth) return scene_.store(data, size);
-  if (channel == channels::kVision) return vision_.store(data, size);
-  if (channel == channels::kLabelsVisual) return visual_labels_.store(data, size);
-  if (channel == channels::kAudio) return audio_.store(data, size);
-  if (channel == channels::kLabelsAcoustic) return acoustic_labels_.store(data, size);
-  if (channel == channels::kHypotheses) {
-    if (last_fused_tick_ >= 0) return true;  // our own hypotheses heard back
-    hypotheses_t previous{};
-    if (!expert::decodeMessage(data, size, previous)) return false;
-    resume_ = std::move(previous);
-    return true;
-  }
-  return false;
-}
+void FusionExpert::onStartUp() { fusion_ = HypothesisFusion(config_); }
 
 bool FusionExpert::inputsReady(const expert::Firing& firing) const {
   const int64_t k = firing.tick;
@@ -96,7 +62,7 @@ expert::Outcome FusionExpert::fire(const expert::Firing& firing, expert::Output&
     fusion_.update(evidence);
     last_fused_tick_ = k;
   }
-  out.publish(channels::kHypotheses, fusion_.hypotheses(evidence.scene->utime, k));
+  hypotheses_out_.publish(out, fusion_.hypotheses(evidence.scene->utime, k));
   return expert::Outcome::success();
 }
 

@@ -15,7 +15,6 @@
 
 #include "expert.hpp"
 #include "hypothesis_fusion.hpp"
-#include "tick_channel.hpp"
 
 namespace beft::fusion {
 
@@ -23,23 +22,28 @@ class FusionExpert : public expert::Expert {
  public:
   std::string name() const override { return "fusion"; }
   std::string description() const override;
-  std::vector<expert::ChannelSpec> reads() const override;
-  std::vector<expert::ChannelSpec> writes() const override;
-  std::vector<std::vector<std::string>> parameterHelp() const override;
-  void onStartUp(const expert::Parameters& parameters) override;
-  bool onMessage(const std::string& channel, const void* data, int size) override;
   bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override;
+  void onStartUp() override;
+
  private:
+  FusionConfig config_;
   HypothesisFusion fusion_;
   int64_t last_fused_tick_ = -1;
   std::optional<hypotheses_t> resume_;  // published before this process started
-  expert::TickChannel<scene_objects_t> scene_;
-  expert::TickChannel<visual_percepts_t> vision_;
-  expert::TickChannel<labels_t> visual_labels_;
-  expert::TickChannel<acoustic_percepts_t> audio_;
-  expert::TickChannel<labels_t> acoustic_labels_;
+  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::TickInput<visual_percepts_t> vision_{*this, channels::kVision};
+  expert::TickInput<labels_t> visual_labels_{*this, channels::kLabelsVisual};
+  expert::TickInput<acoustic_percepts_t> audio_{*this, channels::kAudio};
+  expert::TickInput<labels_t> acoustic_labels_{*this, channels::kLabelsAcoustic};
+  // To resume after a restart; its own hypotheses heard back are not decoded.
+  expert::HandledInput<hypotheses_t> previous_{
+      *this, channels::kHypotheses, [this](hypotheses_t&& previous) { resume_ = std::move(previous); },
+      [this] { return last_fused_tick_ < 0; }};
+  expert::OutputPort<hypotheses_t> hypotheses_out_{*this, channels::kHypotheses};
 };
 
 }  // namespace beft::fusion

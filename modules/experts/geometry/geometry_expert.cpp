@@ -15,20 +15,6 @@ std::string GeometryExpert::description() const {
          "arbiter), and watch GEOMETRY with lcm-spy.";
 }
 
-std::vector<expert::ChannelSpec> GeometryExpert::reads() const {
-  return {{channels::kGroundTruth, "beft.scene_objects_t"}, {channels::kRobotState, "beft.robot_state_t"}};
-}
-
-std::vector<expert::ChannelSpec> GeometryExpert::writes() const {
-  return {{channels::kGeometry, "beft.geometry_percepts_t"}};
-}
-
-bool GeometryExpert::onMessage(const std::string& channel, const void* data, int size) {
-  if (channel == channels::kGroundTruth) return scene_.store(data, size);
-  if (channel == channels::kRobotState) return robot_.store(data, size);
-  return false;
-}
-
 bool GeometryExpert::inputsReady(const expert::Firing& firing) const {
   return scene_.has(firing.tick) && robot_.has(firing.tick);
 }
@@ -39,7 +25,7 @@ expert::Outcome GeometryExpert::fire(const expert::Firing& firing, expert::Outpu
   if (scene == nullptr || robot == nullptr)
     return expert::Outcome::failure(std::string("no ") + (scene == nullptr ? "GT_OBJECTS" : "ROBOT_STATE") +
                                     " for tick " + std::to_string(firing.tick));
-  out.publish(channels::kGeometry, estimateGeometry(*scene, *robot));
+  geometry_out_.publish(out, estimateGeometry(*scene, *robot));
   return expert::Outcome::success();
 }
 

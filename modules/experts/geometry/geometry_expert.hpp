@@ -6,7 +6,6 @@
 #include <beft/scene_objects_t.hpp>
 
 #include "expert.hpp"
-#include "tick_channel.hpp"
 
 namespace beft::geometry {
 
@@ -14,15 +13,13 @@ class GeometryExpert : public expert::Expert {
  public:
   std::string name() const override { return "geometry"; }
   std::string description() const override;
-  std::vector<expert::ChannelSpec> reads() const override;
-  std::vector<expert::ChannelSpec> writes() const override;
-  bool onMessage(const std::string& channel, const void* data, int size) override;
   bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
  private:
-  expert::TickChannel<scene_objects_t> scene_;
-  expert::TickChannel<robot_state_t> robot_;
+  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
+  expert::OutputPort<geometry_percepts_t> geometry_out_{*this, channels::kGeometry};
 };
 
 }  // namespace beft::geometry

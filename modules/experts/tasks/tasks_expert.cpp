@@ -25,114 +25,46 @@ std::string TasksExpert::description() const {
          "task changes (assigned ids, ends and their reasons).";
 }
 
-std::vector<expert::ChannelSpec> TasksExpert::reads() const {
-  return {{channels::kTaskCommand, "beft.task_command_t"},
-          {channels::kRobotState, "beft.robot_state_t"},
-          {channels::kHypotheses, "beft.hypotheses_t"},
-          {channels::kAudio, "beft.acoustic_percepts_t"},
-          {channels::kObstacleMap, "beft.obstacle_map_t"},
-          {channels::kPlanResult, "beft.plan_result_t"}};
-}
-
-std::vector<expert::ChannelSpec> TasksExpert::writes() const {
-  return {{channels::kRobotCommand, "beft.robot_command_t"},
-          {channels::kTaskStack, "beft.task_stack_t"},
-          {channels::kTaskEvents, "beft.task_events_t"},
-          {channels::kPlanRequest, "beft.plan_request_t"}};
-}
-
-std::vector<std::vector<std::string>> TasksExpert::parameterHelp() const {
-  const ExecutorParameters d;
-  const auto s = [](double v) {
-    std::string text = std::to_string(v);
-    text.erase(text.find_last_not_of('0') + 1);
-    if (!text.empty() && text.back() == '.') text.pop_back();
-    return text;
+void TasksExpert::declareParameters(DeclaredParameters& parameters) {
+  ExecutorParameters& e = executor_parameters_;
+  constexpr double kNoLimit = DeclaredParameters::kNoLimit;
+  const auto positive = [&](const char* name, double& member, const char* meaning) {
+    parameters.declare(name, member, 0, kNoLimit, meaning, true);
   };
-  return {{"waypoint_tolerance_m", s(d.waypoint_tolerance_m), "a waypoint counts as reached within this [m]"},
-          {"goal_tolerance_m", s(d.goal_tolerance_m), "goto is done within this of its goal [m]"},
-          {"yaw_tolerance_deg", s(d.yaw_tolerance_deg), "goto and turn are done within this heading error [deg]"},
-          {"head_tolerance_deg", s(d.head_tolerance_deg), "turn_head is done within this [deg]"},
-          {"look_tolerance_deg", s(d.look_tolerance_deg), "look_at is done with the object within this of the nose [deg]"},
-          {"look_hold_s", s(d.look_hold_s), "look_at keeps facing the object this long before it is done [s]"},
-          {"head_yaw_limit_deg", s(d.head_yaw_limit_deg), "head pan range, +- around the nose [deg]"},
-          {"max_failed_plans", std::to_string(d.max_failed_plans), "goto fails after this many failed plans in a row"},
-          {"max_replans", std::to_string(d.max_replans), "goto fails after this many collisions or stalls"},
-          {"backoff_m", s(d.backoff_m), "after a collision, goto backs away this far before replanning [m]"},
-          {"stall_s", s(d.stall_s), "no progress for this long: goto replans, turns fail [s]"},
-          {"look_timeout_s", s(d.look_timeout_s), "look_at fails after this long [s]"},
-          {"owned_idle_s", s(d.owned_idle_s), "an owned task on top with no sub-task for this long fails [s]"},
-          {"plan_time_budget_s", s(d.plan_time_budget_s), "time budget sent with each plan request [s]"},
-          {"planner", "", "planner name sent with each plan request (empty: the service's default)"},
-          {"goto_centres_head", "1", "goto turns the head to the front so the camera maps the way"},
-          {"child_failure_fails_parent", "1", "a failed sub-task fails its parent (0: the parent resumes)"},
-          {"max_tasks", "256", "pushes beyond this many tasks are rejected"}};
+  positive("waypoint_tolerance_m", e.waypoint_tolerance_m, "a waypoint counts as reached within this [m]");
+  positive("goal_tolerance_m", e.goal_tolerance_m, "goto is done within this of its goal [m]");
+  positive("yaw_tolerance_deg", e.yaw_tolerance_deg, "goto and turn are done within this heading error [deg]");
+  positive("head_tolerance_deg", e.head_tolerance_deg, "turn_head is done within this [deg]");
+  positive("look_tolerance_deg", e.look_tolerance_deg, "look_at is done with the object within this of the nose [deg]");
+  parameters.declare("look_hold_s", e.look_hold_s, 0, kNoLimit, "look_at keeps facing the object this long before it is done [s]");
+  positive("head_yaw_limit_deg", e.head_yaw_limit_deg, "head pan range, +- around the nose [deg]");
+  parameters.declare("max_failed_plans", e.max_failed_plans, 1, 1000000, "goto fails after this many failed plans in a row");
+  parameters.declare("max_replans", e.max_replans, 0, 1000000, "goto fails after this many collisions or stalls");
+  parameters.declare("backoff_m", e.backoff_m, 0, 5, "after a collision, goto backs away this far before replanning [m]");
+  positive("stall_s", e.stall_s, "no progress for this long: goto replans, turns fail [s]");
+  positive("look_timeout_s", e.look_timeout_s, "look_at fails after this long [s]");
+  positive("owned_idle_s", e.owned_idle_s, "an owned task on top with no sub-task for this long fails [s]");
+  positive("plan_time_budget_s", e.plan_time_budget_s, "time budget sent with each plan request [s]");
+  parameters.declare("planner", e.planner, "planner name sent with each plan request (empty: the service's default)");
+  parameters.declare("goto_centres_head", e.goto_centres_head, "goto turns the head to the front so the camera maps the way");
+  parameters.declare("child_failure_fails_parent", stack_options_.child_failure_fails_parent,
+                     "a failed sub-task fails its parent (0: the parent resumes)");
+  parameters.declare("max_tasks", stack_options_.max_tasks, 1, 1000000, "pushes beyond this many tasks are rejected");
 }
 
-void TasksExpert::onStartUp(const expert::Parameters& p) {
-  ExecutorParameters e;
-  e.waypoint_tolerance_m = p.getDouble("waypoint_tolerance_m", e.waypoint_tolerance_m);
-  e.goal_tolerance_m = p.getDouble("goal_tolerance_m", e.goal_tolerance_m);
-  e.yaw_tolerance_deg = p.getDouble("yaw_tolerance_deg", e.yaw_tolerance_deg);
-  e.head_tolerance_deg = p.getDouble("head_tolerance_deg", e.head_tolerance_deg);
-  e.look_tolerance_deg = p.getDouble("look_tolerance_deg", e.look_tolerance_deg);
-  e.look_hold_s = p.getDouble("look_hold_s", e.look_hold_s);
-  e.head_yaw_limit_deg = p.getDouble("head_yaw_limit_deg", e.head_yaw_limit_deg);
-  e.max_failed_plans = static_cast<int>(p.getInt("max_failed_plans", e.max_failed_plans));
-  e.max_replans = static_cast<int>(p.getInt("max_replans", e.max_replans));
-  e.backoff_m = p.getDouble("backoff_m", e.backoff_m);
-  e.stall_s = p.getDouble("stall_s", e.stall_s);
-  e.look_timeout_s = p.getDouble("look_timeout_s", e.look_timeout_s);
-  e.owned_idle_s = p.getDouble("owned_idle_s", e.owned_idle_s);
-  e.plan_time_budget_s = p.getDouble("plan_time_budget_s", e.plan_time_budget_s);
-  e.planner = p.getString("planner", e.planner);
-  e.goto_centres_head = p.getBool("goto_centres_head", e.goto_centres_head);
-  const auto positive = [](double v, const char* name) {
-    if (!(v > 0) || !std::isfinite(v)) throw std::invalid_argument(std::string(name) + " must be > 0");
-  };
-  positive(e.waypoint_tolerance_m, "waypoint_tolerance_m");
-  positive(e.goal_tolerance_m, "goal_tolerance_m");
-  positive(e.yaw_tolerance_deg, "yaw_tolerance_deg");
-  positive(e.head_tolerance_deg, "head_tolerance_deg");
-  positive(e.look_tolerance_deg, "look_tolerance_deg");
-  positive(e.head_yaw_limit_deg, "head_yaw_limit_deg");
-  positive(e.stall_s, "stall_s");
-  positive(e.look_timeout_s, "look_timeout_s");
-  positive(e.owned_idle_s, "owned_idle_s");
-  positive(e.plan_time_budget_s, "plan_time_budget_s");
-  if (e.look_hold_s < 0) throw std::invalid_argument("look_hold_s must be >= 0");
-  if (!(e.backoff_m >= 0 && e.backoff_m <= 5)) throw std::invalid_argument("backoff_m must be in [0, 5]");
-  if (e.max_failed_plans < 1) throw std::invalid_argument("max_failed_plans must be >= 1");
-  if (e.max_replans < 0) throw std::invalid_argument("max_replans must be >= 0");
-  StackOptions options;
-  options.child_failure_fails_parent = p.getBool("child_failure_fails_parent", true);
-  const int64_t max_tasks = p.getInt("max_tasks", 256);
-  if (max_tasks < 1) throw std::invalid_argument("max_tasks must be >= 1");
-  options.max_tasks = static_cast<std::size_t>(max_tasks);
-  stack_ = std::make_unique<TaskStack>(options);
-  executor_ = std::make_unique<Executor>(e);
+void TasksExpert::onStartUp() {
+  stack_ = std::make_unique<TaskStack>(stack_options_);
+  executor_ = std::make_unique<Executor>(executor_parameters_);
 }
 
-bool TasksExpert::onMessage(const std::string& channel, const void* data, int size) {
-  if (channel == channels::kTaskCommand) {
-    task_command_t command;
-    if (!expert::decodeMessage(data, size, command)) return false;
-    if (commands_.size() < kMaxQueuedCommands) commands_.push_back(std::move(command));
-    else ++dropped_commands_;
-    return true;
-  }
-  if (channel == channels::kPlanResult) {
-    plan_result_t result;
-    if (!expert::decodeMessage(data, size, result)) return false;
-    plan_results_.push_back(std::move(result));
-    while (plan_results_.size() > 16) plan_results_.pop_front();
-    return true;
-  }
-  if (channel == channels::kRobotState) return robot_.store(data, size);
-  if (channel == channels::kHypotheses) return hypotheses_.store(data, size);
-  if (channel == channels::kAudio) return audio_.store(data, size);
-  if (channel == channels::kObstacleMap) return map_.store(data, size);
-  return false;
+void TasksExpert::onCommand(task_command_t&& command) {
+  if (commands_.size() < kMaxQueuedCommands) commands_.push_back(std::move(command));
+  else ++dropped_commands_;
+}
+
+void TasksExpert::onPlanResult(plan_result_t&& result) {
+  plan_results_.push_back(std::move(result));
+  while (plan_results_.size() > 16) plan_results_.pop_front();
 }
 
 bool TasksExpert::inputsReady(const expert::Firing& firing) const {
@@ -226,7 +158,7 @@ void TasksExpert::logEvents(const std::vector<TaskEvent>& events) const {
 }
 
 expert::Outcome TasksExpert::fire(const expert::Firing& firing, expert::Output& out) {
-  if (!stack_) onStartUp({});
+  if (!stack_) startUp();
   std::vector<task_command_t> commands;
   commands.swap(commands_);
   if (dropped_commands_ > 0) {
@@ -246,11 +178,11 @@ expert::Outcome TasksExpert::fire(const expert::Firing& firing, expert::Output& 
   const std::vector<TaskEvent> executor_events = stack_->takeEvents();  // the executor logged them
   events.insert(events.end(), executor_events.begin(), executor_events.end());
 
-  if (result.request) out.publish(channels::kPlanRequest, *result.request);
+  if (result.request) plan_request_out_.publish(out, *result.request);
   result.command.utime = firing.utime;
-  out.publish(channels::kRobotCommand, result.command);
-  out.publish(channels::kTaskStack, stackMessage(*stack_, firing.utime, firing.tick));
-  if (!events.empty()) out.publish(channels::kTaskEvents, eventsMessage(events, firing.utime, firing.tick));
+  robot_command_out_.publish(out, result.command);
+  task_stack_out_.publish(out, stackMessage(*stack_, firing.utime, firing.tick));
+  if (!events.empty()) task_events_out_.publish(out, eventsMessage(events, firing.utime, firing.tick));
   // Late inputs are not the stack's failure (a failure would make the arbiter
   // retry the tick): it ran on the latest robot state it had, and says so.
   if (robot_.ofTick(firing.tick) == nullptr)

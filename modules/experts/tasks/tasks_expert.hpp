@@ -21,7 +21,6 @@
 #include "executor.hpp"
 #include "expert.hpp"
 #include "task_stack.hpp"
-#include "tick_channel.hpp"
 
 namespace beft::tasks {
 
@@ -29,15 +28,16 @@ class TasksExpert : public expert::Expert {
  public:
   std::string name() const override { return "tasks"; }
   std::string description() const override;
-  std::vector<expert::ChannelSpec> reads() const override;
-  std::vector<expert::ChannelSpec> writes() const override;
-  std::vector<std::vector<std::string>> parameterHelp() const override;
-  void onStartUp(const expert::Parameters& parameters) override;
-  bool onMessage(const std::string& channel, const void* data, int size) override;
   bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override;
+  void onStartUp() override;
+
  private:
+  void onCommand(task_command_t&& command);
+  void onPlanResult(plan_result_t&& result);
   void applyCommand(const task_command_t& command);
   void updateExecutorInputs(const expert::Firing& firing);
   void logEvents(const std::vector<TaskEvent>& events) const;
@@ -48,13 +48,23 @@ class TasksExpert : public expert::Expert {
   std::vector<task_command_t> commands_;        // received since the last firing, in order
   int64_t dropped_commands_ = 0;                // beyond kMaxQueuedCommands
   std::deque<plan_result_t> plan_results_;      // recent answers of the planner service
-  expert::TickChannel<robot_state_t> robot_;
-  expert::TickChannel<hypotheses_t> hypotheses_{4};
-  expert::TickChannel<acoustic_percepts_t> audio_{4};
-  expert::TickChannel<obstacle_map_t> map_{2};
+  ExecutorParameters executor_parameters_;
+  StackOptions stack_options_;
+  expert::HandledInput<task_command_t> commands_in_{
+      *this, channels::kTaskCommand, [this](task_command_t&& command) { onCommand(std::move(command)); }};
+  expert::HandledInput<plan_result_t> plan_results_in_{
+      *this, channels::kPlanResult, [this](plan_result_t&& result) { onPlanResult(std::move(result)); }};
+  expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
+  expert::TickInput<hypotheses_t> hypotheses_{*this, channels::kHypotheses, 4};
+  expert::TickInput<acoustic_percepts_t> audio_{*this, channels::kAudio, 4};
+  expert::TickInput<obstacle_map_t> map_{*this, channels::kObstacleMap, 2};
   int64_t map_utime_ = -1;  // the obstacle map last given to the executor
   std::optional<obstacle_map_t> last_map_;  // as last decoded
   bool map_warned_ = false;
+  expert::OutputPort<robot_command_t> robot_command_out_{*this, channels::kRobotCommand};
+  expert::OutputPort<task_stack_t> task_stack_out_{*this, channels::kTaskStack};
+  expert::OutputPort<task_events_t> task_events_out_{*this, channels::kTaskEvents};
+  expert::OutputPort<plan_request_t> plan_request_out_{*this, channels::kPlanRequest};
 };
 
 }  // namespace beft::tasks

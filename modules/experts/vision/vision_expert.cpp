@@ -28,41 +28,10 @@ std::string VisionExpert::description() const {
          "the arbiter), and watch VISION with lcm-spy.";
 }
 
-std::vector<expert::ChannelSpec> VisionExpert::reads() const {
-  return {{channels::kGroundTruth, "beft.scene_objects_t"},
-          {channels::kCameraDepth, "beft.camera_frame_t"},
-          {channels::kCameraInstance, "beft.camera_frame_t"},
-          {channels::kObstacleMap, "beft.obstacle_map_t"}};  // to resume after a restart
-}
-
-std::vector<expert::ChannelSpec> VisionExpert::writes() const {
-  return {{channels::kVision, "beft.visual_percepts_t"}, {channels::kObstacleMap, "beft.obstacle_map_t"}};
-}
-
-std::vector<std::vector<std::string>> VisionExpert::parameterHelp() const {
-  return {{"resolution", "0.1", "obstacle map cell edge [m]"},
-          {"obstacle_min_height", "0.15", "depth returns above this height are obstacles [m]"}};
-}
-
-void VisionExpert::onStartUp(const expert::Parameters& parameters) {
-  map_config_.resolution = parameters.getDouble("resolution", map_config_.resolution);
-  map_config_.obstacle_min_height = parameters.getDouble("obstacle_min_height", map_config_.obstacle_min_height);
-  if (!(map_config_.resolution > 0)) throw std::invalid_argument("resolution must be > 0");
-  if (!(map_config_.obstacle_min_height >= 0)) throw std::invalid_argument("obstacle_min_height must be >= 0");
-}
-
-bool VisionExpert::onMessage(const std::string& channel, const void* data, int size) {
-  if (channel == channels::kGroundTruth) return scene_.store(data, size);
-  if (channel == channels::kCameraDepth) return depth_.store(data, size);
-  if (channel == channels::kCameraInstance) return instance_.store(data, size);
-  if (channel == channels::kObstacleMap) {
-    if (mapper_) return true;  // our own map heard back
-    obstacle_map_t map{};
-    if (!expert::decodeMessage(data, size, map)) return false;
-    resume_map_ = std::move(map);
-    return true;
-  }
-  return false;
+void VisionExpert::declareParameters(DeclaredParameters& parameters) {
+  parameters.declare("resolution", map_config_.resolution, 0, DeclaredParameters::kNoLimit, "obstacle map cell edge [m]", true);
+  parameters.declare("obstacle_min_height", map_config_.obstacle_min_height, 0, DeclaredParameters::kNoLimit,
+                     "depth returns above this height are obstacles [m]");
 }
 
 bool VisionExpert::inputsReady(const expert::Firing& firing) const {
@@ -143,8 +112,8 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     map_message_.tick = firing.tick;
     percepting_.wait();  // an error of the percepts ends up below
     // Both at the end: a publish wakes the readers, who would take the cores from the work.
-    out.publish(channels::kVision, percepts);
-    out.publish(channels::kObstacleMap, map_message_);
+    vision_out_.publish(out, percepts);
+    obstacle_map_out_.publish(out, map_message_);
   } catch (const std::exception& e) {
     return expert::Outcome::failure("tick " + std::to_string(firing.tick) + ": " + e.what());
   }

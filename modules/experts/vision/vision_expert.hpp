@@ -17,7 +17,6 @@
 #include "helper_task.hpp"
 #include "obstacle_mapper.hpp"
 #include "ray_caster.hpp"
-#include "tick_channel.hpp"
 
 namespace beft::vision {
 
@@ -25,13 +24,11 @@ class VisionExpert : public expert::Expert {
  public:
   std::string name() const override { return "vision"; }
   std::string description() const override;
-  std::vector<expert::ChannelSpec> reads() const override;
-  std::vector<expert::ChannelSpec> writes() const override;
-  std::vector<std::vector<std::string>> parameterHelp() const override;
-  void onStartUp(const expert::Parameters& parameters) override;
-  bool onMessage(const std::string& channel, const void* data, int size) override;
   bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
+
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override;
 
  private:
   void updateMap(const scene_objects_t& scene, const camera_frame_t& depth, int64_t tick);
@@ -56,10 +53,16 @@ class VisionExpert : public expert::Expert {
   std::vector<int> expected_;          // expected pixels per object for the pose and solids below
   camera_frame_t expected_pose_{};     // header only: the pixels do not matter to it
   scene_objects_t expected_scene_{};
-  expert::TickChannel<scene_objects_t> scene_;
-  expert::TickChannel<camera_frame_t> depth_{4};
-  expert::TickChannel<camera_frame_t> instance_{4};
+  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::TickInput<camera_frame_t> depth_{*this, channels::kCameraDepth, 4};
+  expert::TickInput<camera_frame_t> instance_{*this, channels::kCameraInstance, 4};
   expert::HelperTask percepting_;  // last: its thread ends before the state it works on goes
+  // To resume after a restart; its own map heard back is not decoded.
+  expert::HandledInput<obstacle_map_t> previous_map_{
+      *this, channels::kObstacleMap, [this](obstacle_map_t&& map) { resume_map_ = std::move(map); },
+      [this] { return mapper_ == nullptr; }};
+  expert::OutputPort<visual_percepts_t> vision_out_{*this, channels::kVision};
+  expert::OutputPort<obstacle_map_t> obstacle_map_out_{*this, channels::kObstacleMap};
 };
 
 }  // namespace beft::vision

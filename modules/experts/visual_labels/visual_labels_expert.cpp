@@ -15,30 +15,8 @@ std::string VisualLabelsExpert::description() const {
          "--replay LOG.";
 }
 
-std::vector<expert::ChannelSpec> VisualLabelsExpert::reads() const {
-  return {{channels::kGroundTruth, "beft.scene_objects_t"},
-          {channels::kGeometry, "beft.geometry_percepts_t"},
-          {channels::kVision, "beft.visual_percepts_t"}};
-}
-
-std::vector<expert::ChannelSpec> VisualLabelsExpert::writes() const {
-  return {{channels::kLabelsVisual, "beft.labels_t"}};
-}
-
-std::vector<std::vector<std::string>> VisualLabelsExpert::parameterHelp() const {
-  return {{"label_gain", "20", "gain g of eq. 3 (default form)"},
-          {"label_form", "default", "eq. 3 form: default (logistic with gain g) or printed (the paper's literal formula)"}};
-}
-
-void VisualLabelsExpert::onStartUp(const expert::Parameters& parameters) {
-  for (const auto& [key, value] : parameters.all()) model::setParameter(model_, key, value);
-}
-
-bool VisualLabelsExpert::onMessage(const std::string& channel, const void* data, int size) {
-  if (channel == channels::kGroundTruth) return scene_.store(data, size);
-  if (channel == channels::kGeometry) return geometry_.store(data, size);
-  if (channel == channels::kVision) return vision_.store(data, size);
-  return false;
+void VisualLabelsExpert::declareParameters(DeclaredParameters& parameters) {
+  model::declareParameters(parameters, model_, {"label_gain", "label_form"});
 }
 
 bool VisualLabelsExpert::inputsReady(const expert::Firing& firing) const {
@@ -55,7 +33,7 @@ expert::Outcome VisualLabelsExpert::fire(const expert::Firing& firing, expert::O
                                     " for tick " + std::to_string(firing.tick));
   const VisualLabelling result = labelVisually(*scene, *geometry, *vision, model_);
   for (const auto& reason : result.skipped) log::warn("tick ", firing.tick, ": not labelled: ", reason);
-  out.publish(channels::kLabelsVisual, result.labels);
+  labels_visual_out_.publish(out, result.labels);
   return expert::Outcome::success();
 }
 

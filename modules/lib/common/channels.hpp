@@ -1,39 +1,133 @@
-// LCM channel names of the blackboard: one place so no process misspells one.
+// Every LCM channel of the blackboard with the message type it carries,
+// declared once. A constant such as channels::kVision is the channel's name
+// (it converts to const char*) and knows its type, so an expert's port, the
+// blackboard's channel table, spy and replay all take both from here.
 #pragma once
 
-namespace beft::channels {
-// Sensor side (world process).
-inline constexpr const char* kGroundTruth = "GT_OBJECTS";          // scene_objects_t
-inline constexpr const char* kRobotState = "ROBOT_STATE";          // robot_state_t
-inline constexpr const char* kCameraColor = "CAMERA_COLOR";        // camera_frame_t
-inline constexpr const char* kCameraDepth = "CAMERA_DEPTH";        // camera_frame_t
-inline constexpr const char* kCameraInstance = "CAMERA_INSTANCE";  // camera_frame_t
-inline constexpr const char* kRobotCommand = "ROBOT_CMD";          // robot_command_t
-// Low-level experts.
-inline constexpr const char* kGeometry = "GEOMETRY";               // geometry_percepts_t
-inline constexpr const char* kVision = "VISION";                   // visual_percepts_t
-inline constexpr const char* kObstacleMap = "OBSTACLE_MAP";        // obstacle_map_t
-inline constexpr const char* kAudio = "AUDIO";                     // acoustic_percepts_t
-// Mid-level experts.
-inline constexpr const char* kLabelsVisual = "LABELS_VISUAL";      // labels_t
-inline constexpr const char* kLabelsAcoustic = "LABELS_ACOUSTIC";  // labels_t
-// High-level experts.
-inline constexpr const char* kHypotheses = "HYPOTHESES";           // hypotheses_t
-inline constexpr const char* kDynamicWeights = "DYNAMIC_WEIGHTS";  // dynamic_weights_t
-// Tasks and planning.
-inline constexpr const char* kTaskStack = "TASK_STACK";            // task_stack_t
-inline constexpr const char* kTaskCommand = "TASK_COMMAND";        // task_command_t
-inline constexpr const char* kTaskEvents = "TASK_EVENTS";          // task_events_t
-inline constexpr const char* kPlanRequest = "PLAN_REQUEST";        // plan_request_t
-inline constexpr const char* kPlanResult = "PLAN_RESULT";          // plan_result_t
-// Control plane (arbiter).
-inline constexpr const char* kFire = "FIRE";                       // fire_t
-inline constexpr const char* kDone = "DONE";                       // done_t
-inline constexpr const char* kHeartbeat = "HEARTBEAT";             // heartbeat_t
-inline constexpr const char* kMarking = "MARKING";                 // marking_t
-inline constexpr const char* kRunStatus = "RUN_STATUS";            // run_status_t
-inline constexpr const char* kStopRequest = "STOP_REQUEST";        // run_status_t: end the run after this tick
-// Blackboard service.
-inline constexpr const char* kBlackboardQuery = "BB_QUERY";        // bb_query_t
-inline constexpr const char* kBlackboardSnapshotPrefix = "BB_SNAPSHOT_";  // + requester: bb_snapshot_t
-}  // namespace beft::channels
+#include <cstring>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <beft/acoustic_percepts_t.hpp>
+#include <beft/bb_query_t.hpp>
+#include <beft/bb_snapshot_t.hpp>
+#include <beft/camera_frame_t.hpp>
+#include <beft/done_t.hpp>
+#include <beft/dynamic_weights_t.hpp>
+#include <beft/fire_t.hpp>
+#include <beft/geometry_percepts_t.hpp>
+#include <beft/heartbeat_t.hpp>
+#include <beft/hypotheses_t.hpp>
+#include <beft/labels_t.hpp>
+#include <beft/marking_t.hpp>
+#include <beft/obstacle_map_t.hpp>
+#include <beft/plan_request_t.hpp>
+#include <beft/plan_result_t.hpp>
+#include <beft/robot_command_t.hpp>
+#include <beft/robot_state_t.hpp>
+#include <beft/run_status_t.hpp>
+#include <beft/scene_objects_t.hpp>
+#include <beft/task_command_t.hpp>
+#include <beft/task_events_t.hpp>
+#include <beft/task_stack_t.hpp>
+#include <beft/visual_percepts_t.hpp>
+
+namespace beft {
+
+// "beft.robot_state_t": the name LCM tools show for a generated type.
+template <typename Message>
+std::string lcmTypeName() {
+  return std::string("beft.") + Message::getTypeName();
+}
+
+namespace channels {
+
+// A channel's name and, in its type, the message it carries. It stands for
+// its name wherever a std::string is taken (lcm::LCM::publish, subscribe).
+template <typename Message>
+struct Channel {
+  using message_type = Message;
+  const char* name;
+  operator std::string() const { return name; }
+  std::string typeName() const { return lcmTypeName<Message>(); }
+};
+
+template <typename Message>
+bool operator==(std::string_view channel, Channel<Message> known) { return channel == known.name; }
+template <typename Message>
+bool operator==(Channel<Message> known, std::string_view channel) { return channel == known.name; }
+template <typename Message>
+bool operator!=(std::string_view channel, Channel<Message> known) { return channel != known.name; }
+template <typename Message>
+std::ostream& operator<<(std::ostream& out, Channel<Message> channel) { return out << channel.name; }
+
+// X(constant, name, type): the one list of the blackboard's channels.
+#define BEFT_CHANNELS(X)                                                                        \
+  /* Sensor side (world process). */                                                         \
+  X(kGroundTruth, "GT_OBJECTS", scene_objects_t)                                              \
+  X(kRobotState, "ROBOT_STATE", robot_state_t)                                                \
+  X(kCameraColor, "CAMERA_COLOR", camera_frame_t)                                             \
+  X(kCameraDepth, "CAMERA_DEPTH", camera_frame_t)                                             \
+  X(kCameraInstance, "CAMERA_INSTANCE", camera_frame_t)                                       \
+  X(kRobotCommand, "ROBOT_CMD", robot_command_t)                                              \
+  /* Low-level experts. */                                                                   \
+  X(kGeometry, "GEOMETRY", geometry_percepts_t)                                               \
+  X(kVision, "VISION", visual_percepts_t)                                                     \
+  X(kObstacleMap, "OBSTACLE_MAP", obstacle_map_t)                                             \
+  X(kAudio, "AUDIO", acoustic_percepts_t)                                                     \
+  /* Mid-level experts. */                                                                   \
+  X(kLabelsVisual, "LABELS_VISUAL", labels_t)                                                 \
+  X(kLabelsAcoustic, "LABELS_ACOUSTIC", labels_t)                                             \
+  /* High-level experts. */                                                                  \
+  X(kHypotheses, "HYPOTHESES", hypotheses_t)                                                  \
+  X(kDynamicWeights, "DYNAMIC_WEIGHTS", dynamic_weights_t)                                    \
+  /* Tasks and planning. */                                                                  \
+  X(kTaskStack, "TASK_STACK", task_stack_t)                                                   \
+  X(kTaskCommand, "TASK_COMMAND", task_command_t)                                             \
+  X(kTaskEvents, "TASK_EVENTS", task_events_t)                                                \
+  X(kPlanRequest, "PLAN_REQUEST", plan_request_t)                                             \
+  X(kPlanResult, "PLAN_RESULT", plan_result_t)                                                \
+  /* Control plane (arbiter). */                                                             \
+  X(kFire, "FIRE", fire_t)                                                                    \
+  X(kDone, "DONE", done_t)                                                                    \
+  X(kHeartbeat, "HEARTBEAT", heartbeat_t)                                                     \
+  X(kMarking, "MARKING", marking_t)                                                           \
+  X(kRunStatus, "RUN_STATUS", run_status_t)                                                   \
+  X(kStopRequest, "STOP_REQUEST", run_status_t) /* end the run after this tick */            \
+  /* Blackboard service. */                                                                  \
+  X(kBlackboardQuery, "BB_QUERY", bb_query_t)
+
+#define BEFT_DECLARE_CHANNEL(constant, name, type) inline constexpr Channel<type> constant{name};
+BEFT_CHANNELS(BEFT_DECLARE_CHANNEL)
+#undef BEFT_DECLARE_CHANNEL
+
+// The blackboard answers a query on BB_SNAPSHOT_<requester> (bb_snapshot_t).
+inline constexpr Channel<bb_snapshot_t> kBlackboardSnapshotPrefix{"BB_SNAPSHOT_"};
+
+struct ChannelEntry {
+  const char* name;
+  std::string type;  // e.g. "beft.robot_state_t"
+};
+
+// Every channel of the list above with its type, in that order.
+inline const std::vector<ChannelEntry>& allChannels() {
+#define BEFT_CHANNEL_ENTRY(constant, name, type) ChannelEntry{name, lcmTypeName<type>()},
+  static const std::vector<ChannelEntry> entries = {BEFT_CHANNELS(BEFT_CHANNEL_ENTRY)};
+#undef BEFT_CHANNEL_ENTRY
+  return entries;
+}
+
+// The type carried on a channel: "beft.bb_snapshot_t" for any
+// "BB_SNAPSHOT_<requester>", "" for a channel not in the list.
+inline std::string typeOfChannel(const std::string& channel) {
+  for (const auto& entry : allChannels())
+    if (channel == entry.name) return entry.type;
+  const char* prefix = kBlackboardSnapshotPrefix.name;
+  if (channel.compare(0, std::strlen(prefix), prefix) == 0) return kBlackboardSnapshotPrefix.typeName();
+  return "";
+}
+
+}  // namespace channels
+}  // namespace beft

@@ -1,13 +1,21 @@
-// One way to write an expert (DESIGN.md, "Anatomy of an expert"): a class that
-// declares what it reads and writes, stores messages in onMessage, computes
-// and publishes only in fire(), and is driven by the arbiter's FIRE tokens.
-// The same class runs live (run_expert.hpp) or offline against a log.
+// One way to write an expert (DESIGN.md, "Anatomy of an expert"): a class
+// that declares its inputs and outputs as port members (ports.hpp) and its
+// parameters in declareParameters, stores messages through its ports,
+// computes and publishes only in fire(), and is driven by the arbiter's FIRE
+// tokens. The same class runs live (run_expert.hpp) or offline against a log.
 #pragma once
 
 #include <cstdint>
 #include <map>
+#include <memory>
+#include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "channels.hpp"
+#include "declared_parameters.hpp"
+#include "ports.hpp"
 
 namespace beft::expert {
 
@@ -33,74 +41,89 @@ struct ChannelSpec {
   std::string type;  // e.g. "beft.robot_state_t"
 };
 
-// Named parameters from the command line (--param key=value) and defaults.
-class Parameters {
- public:
-  void set(const std::string& key, const std::string& value) { values_[key] = value; }
-  bool has(const std::string& key) const { return values_.count(key) > 0; }
-  const std::map<std::string, std::string>& all() const { return values_; }
-  // Typed getters: the default when absent; std::invalid_argument naming the
-  // key when the value does not parse.
-  double getDouble(const std::string& key, double fallback) const;
-  int64_t getInt(const std::string& key, int64_t fallback) const;
-  bool getBool(const std::string& key, bool fallback) const;
-  std::string getString(const std::string& key, const std::string& fallback) const;
-
- private:
-  std::map<std::string, std::string> values_;
-};
+// Parameter values given on the command line (--param NAME=VALUE), by name.
+using Parameters = std::map<std::string, std::string>;
 
 // Where fire() writes its outputs: live it publishes on LCM; in replay it
-// collects them for comparison. Use publish<T>() with any generated LCM type.
+// collects them for comparison. Only channels the expert declared an
+// OutputPort for can be published on (once the runner has told it which).
 class Output {
  public:
   virtual ~Output() = default;
+  // publishEncoded gets bytes valid only during the call.
   virtual void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) = 0;
 
-  // publishEncoded gets bytes valid only during the call.
+  // From here on, a publish on any other channel throws std::logic_error.
+  void restrictTo(const std::vector<ChannelSpec>& declared);
+
   template <typename Message>
-  void publish(const std::string& channel, const Message& message) {
+  void publish(channels::Channel<Message> channel, const Message& message) {
+    if (!declared_.empty() && !declared_.count(channel.name))
+      throw std::logic_error(std::string("publish on ") + channel.name + ", which the expert does not declare");
     // One buffer for every message: camera frames are tens of kB, and a
     // fresh buffer each time costs an allocation, zeroing and page faults.
     encoded_.resize(message.getEncodedSize());
     message.encode(encoded_.data(), 0, static_cast<int>(encoded_.size()));
-    publishEncoded(channel, encoded_);
+    publishEncoded(channel.name, encoded_);
   }
 
  private:
   std::vector<uint8_t> encoded_;
+  std::set<std::string> declared_;
 };
+
+template <typename Message>
+void OutputPort<Message>::publish(Output& out, const Message& message) const {
+  out.publish(channels::Channel<Message>{channel()}, message);
+}
 
 class Expert {
  public:
+  Expert() = default;
   virtual ~Expert() = default;
+  // Ports point at their expert: never copied.
+  Expert(const Expert&) = delete;
+  Expert& operator=(const Expert&) = delete;
 
   virtual std::string name() const = 0;         // default process name, e.g. "vision"
   virtual std::string description() const = 0;  // one paragraph for --help
-  virtual std::vector<ChannelSpec> reads() const = 0;
-  virtual std::vector<ChannelSpec> writes() const = 0;
-  // Parameter names with their defaults and meaning, for --help and to report
-  // unknown --param keys: {name, default, meaning}.
-  virtual std::vector<std::vector<std::string>> parameterHelp() const { return {}; }
 
-  // Called once before any message, with the parameters given. Throw
-  // std::invalid_argument for a bad value: the process stops with that message.
-  virtual void onStartUp(const Parameters& parameters) { (void)parameters; }
-  // Store only, never compute. The bytes are an encoded message of the type
-  // declared for the channel. Return false if the message was not understood
-  // (it is then reported).
-  virtual bool onMessage(const std::string& channel, const void* data, int size) = 0;
+  // What it reads and writes, from its ports, in the order declared.
+  std::vector<ChannelSpec> reads() const;
+  std::vector<ChannelSpec> writes() const;
+
+  // Its parameters with defaults, ranges and meanings (declared once).
+  const DeclaredParameters& parameters();
+  // Sets the parameters given (every other one back to its default) and
+  // calls onStartUp. std::invalid_argument for an unknown name, a value out
+  // of its range, or what onStartUp refuses.
+  void startUp(const Parameters& given = {});
+
+  // Hands a received message to the port that reads its channel (store
+  // only, never compute). False if no port reads the channel or the bytes
+  // are not a message of its type (the runner reports it).
+  bool onMessage(const std::string& channel, const void* data, int size);
+
   // True when what this firing needs has arrived (e.g. the inputs of its tick).
   // The runner waits a bounded time for it, then fires anyway with a warning.
   virtual bool inputsReady(const Firing& firing) const { (void)firing; return true; }
   // Compute from what was stored, publish through out, say how it went.
   virtual Outcome fire(const Firing& firing, Output& out) = 0;
-};
 
-// Decodes an LCM message; false if the bytes are not a T.
-template <typename Message>
-bool decodeMessage(const void* data, int size, Message& message) {
-  return message.decode(data, 0, size) == size;
-}
+ protected:
+  // Declare each parameter: parameters.declare("name", member_, min, max, "meaning").
+  virtual void declareParameters(DeclaredParameters& parameters) { (void)parameters; }
+  // Called by startUp with the parameters set: check what the ranges do not
+  // (relations between parameters), build the logic. Throw
+  // std::invalid_argument for a bad value: the process stops with that message.
+  virtual void onStartUp() {}
+
+ private:
+  friend class InputPortBase;
+  friend class OutputPortBase;
+  std::vector<InputPortBase*> inputs_;
+  std::vector<OutputPortBase*> outputs_;
+  std::unique_ptr<DeclaredParameters> parameters_;
+};
 
 }  // namespace beft::expert

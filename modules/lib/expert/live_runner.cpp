@@ -54,7 +54,9 @@ class LcmOutput : public Output {
 class Runner {
  public:
   Runner(Expert& expert, const LiveOptions& options, lcm::LCM& lcm)
-      : expert_(expert), options_(options), lcm_(lcm), output_(lcm) {}
+      : expert_(expert), options_(options), lcm_(lcm), output_(lcm) {
+    output_.restrictTo(expert_.writes());
+  }
 
   int run() {
     for (const auto& spec : expert_.reads()) read_channels_.insert(spec.channel);

@@ -42,6 +42,7 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
 
   ReplayResult result;
   CapturingOutput output;
+  output.restrictTo(expert.writes());
   OutputsByFiring recorded;
   std::optional<Firing> pending;
   int64_t last_firing_id = -1;

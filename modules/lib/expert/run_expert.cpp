@@ -3,7 +3,6 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <set>
 #include <sstream>
 
 #include "heap_retention.hpp"
@@ -12,31 +11,26 @@
 #include "log.hpp"
 #include "log_replay.hpp"
 #include "blackboard/message_decoder.hpp"
+#include "channels.hpp"
 
 namespace beft::expert {
 
 namespace {
 
-std::string interfaceText(const Expert& expert, const std::string& process_name) {
+std::string interfaceText(Expert& expert, const std::string& process_name) {
   std::ostringstream out;
   out << "process: " << process_name << "\n";
   out << "reads:\n";
   for (const auto& spec : expert.reads()) out << "  " << spec.channel << "  (" << spec.type << ")\n";
-  out << "  FIRE  (beft.fire_t, tokens addressed to " << process_name << ")\n";
-  out << "  RUN_STATUS  (beft.run_status_t, stops at the end of the run)\n";
+  out << "  " << channels::kFire << "  (" << channels::kFire.typeName() << ", tokens addressed to " << process_name
+      << ")\n";
+  out << "  " << channels::kRunStatus << "  (" << channels::kRunStatus.typeName() << ", stops at the end of the run)\n";
   out << "writes:\n";
   for (const auto& spec : expert.writes()) out << "  " << spec.channel << "  (" << spec.type << ")\n";
-  out << "  DONE  (beft.done_t)\n  HEARTBEAT  (beft.heartbeat_t)\n";
-  const auto parameters = expert.parameterHelp();
-  if (!parameters.empty()) {
-    out << "parameters (--param NAME=VALUE):\n";
-    for (const auto& row : parameters) {
-      out << "  " << (row.size() > 0 ? row[0] : "?");
-      if (row.size() > 1) out << " (default " << row[1] << ")";
-      if (row.size() > 2) out << ": " << row[2];
-      out << "\n";
-    }
-  }
+  out << "  " << channels::kDone << "  (" << channels::kDone.typeName() << ")\n";
+  out << "  " << channels::kHeartbeat << "  (" << channels::kHeartbeat.typeName() << ")\n";
+  const std::string parameters = expert.parameters().describe();
+  if (!parameters.empty()) out << "parameters (--param NAME=VALUE):\n" << parameters;
   return out.str();
 }
 
@@ -46,8 +40,8 @@ int runExpertMain(int argc, char** argv, Expert& expert) {
   return runExpertMain(argc, argv, expert, nullptr);
 }
 
-int runExpertMain(int argc, char** argv, Expert& expert,
-                  const std::function<void(CLI::App&)>& add_options) {
+int runExpertMain(int argc, char** argv, Expert& expert, const std::function<void(CLI::App&)>& add_options,
+                  const std::function<std::optional<int>(const std::string& lcm_url)>& run_instead) {
   retainFreedHeapMemory();
   LiveOptions options;
   options.lcm_url = defaultLcmUrl();
@@ -86,9 +80,6 @@ int runExpertMain(int argc, char** argv, Expert& expert,
     return 0;
   }
 
-  std::set<std::string> known;
-  for (const auto& row : expert.parameterHelp())
-    if (!row.empty()) known.insert(row[0]);
   Parameters parameters;
   for (const auto& arg : parameter_args) {
     const auto eq = arg.find('=');
@@ -96,17 +87,10 @@ int runExpertMain(int argc, char** argv, Expert& expert,
       log::error("--param '", arg, "' is not NAME=VALUE");
       return 2;
     }
-    const std::string key = arg.substr(0, eq);
-    if (!known.count(key)) {
-      std::string names;
-      for (const auto& name : known) names += (names.empty() ? "" : ", ") + name;
-      log::error("unknown parameter '", key, "' (known: ", names.empty() ? "none" : names, ")");
-      return 2;
-    }
-    parameters.set(key, arg.substr(eq + 1));
+    parameters[arg.substr(0, eq)] = arg.substr(eq + 1);
   }
   try {
-    expert.onStartUp(parameters);
+    expert.startUp(parameters);
   } catch (const std::exception& e) {
     log::error("start-up failed: ", e.what());
     return 2;
@@ -126,6 +110,8 @@ int runExpertMain(int argc, char** argv, Expert& expert,
       return 1;
     }
   }
+  if (run_instead)
+    if (const std::optional<int> code = run_instead(options.lcm_url)) return *code;
   return runLive(expert, options);
 }
 

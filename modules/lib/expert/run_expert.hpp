@@ -2,6 +2,8 @@
 #pragma once
 
 #include <functional>
+#include <optional>
+#include <string>
 
 #include "expert.hpp"
 
@@ -23,13 +25,15 @@ namespace beft::expert {
 // fire(), publishes DONE. A FIRE it already ran gets its DONE again (the first
 // may have been lost); an older one is logged and dropped. Sends HEARTBEAT
 // every period. Exits on SIGINT/SIGTERM or when RUN_STATUS says the run ended.
-// Unknown --param keys (not in parameterHelp()) are refused.
+// Unknown --param names and values out of a parameter's range are refused.
 int runExpertMain(int argc, char** argv, Expert& expert);
 
 // The same, for a process with options of its own (e.g. the world's
 // --scenario): add_options adds them to the command line before parsing; the
-// variables they bind are set before onStartUp is called.
-int runExpertMain(int argc, char** argv, Expert& expert,
-                  const std::function<void(CLI::App&)>& add_options);
+// variables they bind are set before startUp is called. run_instead, if
+// given, is asked after start-up (with the --lcm-url given): an exit code means the process ran some
+// other way (the world's free-running mode) instead of waiting for FIREs.
+int runExpertMain(int argc, char** argv, Expert& expert, const std::function<void(CLI::App&)>& add_options,
+                  const std::function<std::optional<int>(const std::string& lcm_url)>& run_instead = {});
 
 }  // namespace beft::expert

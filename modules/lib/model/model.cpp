@@ -83,33 +83,29 @@ double weightFalling(int t, double c, const Parameters& p) {
   return clamp01(2.0 * c - (curveTerm(t, p) + c));
 }
 
-LabelForm parseLabelForm(const std::string& text) {
-  if (text == "default") return LabelForm::Default;
-  if (text == "printed") return LabelForm::Printed;
-  throw std::invalid_argument("label_form must be 'default' or 'printed', not '" + text + "'");
+void declareParameters(DeclaredParameters& declared, Parameters& p, const std::vector<std::string>& names) {
+  const auto wanted = [&](const char* name) {
+    return names.empty() || std::find(names.begin(), names.end(), name) != names.end();
+  };
+  constexpr double kNoLimit = DeclaredParameters::kNoLimit;
+  if (wanted("aw_variance_deg2"))
+    declared.declare("aw_variance_deg2", p.aw_variance_deg2, 0, kNoLimit,
+                     "variance s of a_w(alpha) in eq. 2 [deg^2]; the paper prints 90", true);
+  if (wanted("label_gain"))
+    declared.declare("label_gain", p.label_gain, 0, kNoLimit, "gain g of eq. 3 (default form)", true);
+  if (wanted("label_form"))
+    declared.declareChoice("label_form", p.label_form,
+                           {{"default", LabelForm::Default}, {"printed", LabelForm::Printed}},
+                           "eq. 3 form: default (logistic with gain g) or printed (the paper's literal formula)");
+  if (wanted("t_max"))
+    declared.declare("t_max", p.t_max, 2, 1000000, "T_max of eq. 4: curve length and re-evaluation delay [steps]");
+  if (wanted("n")) declared.declare("n", p.n, 1, kNoLimit, "n of eq. 4 (T_max^2: one curve spans 0.25)", true);
 }
 
 void setParameter(Parameters& p, const std::string& name, const std::string& value) {
-  auto number = [&](double min_exclusive) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-      v = std::stod(value, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != value.size() || !std::isfinite(v) || v <= min_exclusive)
-      throw std::invalid_argument("parameter " + name + ": '" + value +
-                                  "' is not a number > " + std::to_string(min_exclusive));
-    return v;
-  };
-  if (name == "aw_variance_deg2") p.aw_variance_deg2 = number(0);
-  else if (name == "label_gain") p.label_gain = number(0);
-  else if (name == "label_form") p.label_form = parseLabelForm(value);
-  else if (name == "t_max") p.t_max = static_cast<int>(number(1));
-  else if (name == "n") p.n = number(1);
-  else throw std::invalid_argument("unknown model parameter '" + name +
-                                   "' (known: aw_variance_deg2, label_gain, label_form, t_max, n)");
+  DeclaredParameters declared;
+  declareParameters(declared, p);
+  declared.set(name, value);
 }
 
 }  // namespace beft::model

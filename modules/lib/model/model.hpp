@@ -6,6 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "declared_parameters.hpp"
+
+#include <string>
+#include <vector>
+
 namespace beft::model {
 
 // Named parameters; the defaults are the readings of spec/model.md, the
@@ -64,10 +69,11 @@ double weightRising(int t, double c, const Parameters& p = {});
 // Falling curve: 2c - (log(min(t, T_max)) / (2 log n) + c), clamped to [0, 1].
 double weightFalling(int t, double c, const Parameters& p = {});
 
-// Parses "default" / "printed" (for --param label_form=...); throws on others.
-LabelForm parseLabelForm(const std::string& text);
-// Sets one parameter by name (aw_variance_deg2, label_gain, label_form, t_max,
-// n); throws std::invalid_argument naming the parameter on a bad name or value.
+// Declares the parameters named (all when none are) as members of p, for the
+// experts that use them: aw_variance_deg2, label_gain, label_form, t_max, n.
+void declareParameters(DeclaredParameters& declared, Parameters& p, const std::vector<std::string>& names = {});
+// Sets one parameter by name through those declarations; throws
+// std::invalid_argument naming the parameter and its range.
 void setParameter(Parameters& p, const std::string& name, const std::string& value);
 
 }  // namespace beft::model

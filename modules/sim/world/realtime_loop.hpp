@@ -11,13 +11,13 @@
 namespace beft::world {
 
 struct RealtimeOptions {
-  double rate_hz = 10;   // ticks per wall-clock second
+  double rate_hz = 0;    // ticks per wall-clock second; 0: not free-running
   std::string lcm_url;
   int64_t last_tick = -1;  // stop after publishing this tick; -1: at the scenario's end
 };
 
 // Runs until the last tick or SIGINT/SIGTERM; returns the exit code. The
-// expert must have been started (onStartUp) already.
+// expert must have been started (startUp) already.
 int runRealtime(WorldExpert& world, const RealtimeOptions& options);
 
 }  // namespace beft::world

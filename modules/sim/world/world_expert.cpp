@@ -17,34 +17,16 @@ std::string WorldExpert::description() const {
          "then publishes ground truth, robot state and the RGBD camera frame of that tick.";
 }
 
-std::vector<beft::expert::ChannelSpec> WorldExpert::reads() const {
-  return {{channels::kRobotCommand, "beft.robot_command_t"}};
+void WorldExpert::declareParameters(DeclaredParameters& parameters) {
+  parameters.declare("depth_noise", options_.depth_noise, 0, DeclaredParameters::kNoLimit,
+                     "depth noise: standard deviation depth_noise * depth^2 [m], seeded by --seed and the tick");
+  parameters.declare("render_threads", options_.render_threads, 1, 16,
+                     "threads the camera renders on; the images are the same for any count");
 }
 
-std::vector<beft::expert::ChannelSpec> WorldExpert::writes() const {
-  return {{channels::kGroundTruth, "beft.scene_objects_t"},
-          {channels::kRobotState, "beft.robot_state_t"},
-          {channels::kCameraColor, "beft.camera_frame_t"},
-          {channels::kCameraDepth, "beft.camera_frame_t"},
-          {channels::kCameraInstance, "beft.camera_frame_t"}};
-}
-
-std::vector<std::vector<std::string>> WorldExpert::parameterHelp() const {
-  return {{"depth_noise", "0",
-           "depth noise: standard deviation depth_noise * depth^2 [m], seeded by --seed and the tick"},
-          {"render_threads", "2", "threads the camera renders on (1 to 16); the images are the same for any count"}};
-}
-
-void WorldExpert::onStartUp(const beft::expert::Parameters& parameters) {
+void WorldExpert::onStartUp() {
   if (scenario_path.empty()) throw std::invalid_argument("--scenario FILE is required");
-  WorldOptions options;
-  options.depth_noise = parameters.getDouble("depth_noise", 0.0);
-  if (!(options.depth_noise >= 0) || !std::isfinite(options.depth_noise)) {
-    throw std::invalid_argument("depth_noise must be finite and >= 0");
-  }
-  const int64_t threads = parameters.getInt("render_threads", 2);
-  if (threads < 1 || threads > 16) throw std::invalid_argument("render_threads must be from 1 to 16");
-  options.render_threads = static_cast<int>(threads);
+  WorldOptions options = options_;
   try {
     scenario_ = std::make_unique<scenario::Scenario>(scenario::loadScenario(scenario_path));
   } catch (const scenario::ScenarioError& e) {
@@ -62,10 +44,8 @@ void WorldExpert::onStartUp(const beft::expert::Parameters& parameters) {
   logNotes();
 }
 
-bool WorldExpert::onMessage(const std::string& channel, const void* data, int size) {
-  if (channel != channels::kRobotCommand || !simulation_) return false;
-  beft::robot_command_t command;
-  if (!beft::expert::decodeMessage(data, size, command)) return false;
+void WorldExpert::onCommand(robot_command_t&& command) {
+  if (!simulation_) return;
   const CommandCheck check = simulation_->submitCommand(command);
   if (!check.command) {
     ++refused_commands_;
@@ -76,7 +56,6 @@ bool WorldExpert::onMessage(const std::string& channel, const void* data, int si
     log::info("ROBOT_CMD adjusted: ", check.adjustments);
   }
   if (check.command) last_adjustment_logged_ = check.adjustments;
-  return true;
 }
 
 void WorldExpert::logNotes() {
@@ -87,11 +66,11 @@ void WorldExpert::publishState(beft::expert::Output& out) {
   // Render first: each publish wakes every process that reads the channel,
   // and they would take the cores from the rendering threads.
   simulation_->cameraMessages(camera_messages_);
-  out.publish(channels::kGroundTruth, simulation_->groundTruth());
-  out.publish(channels::kRobotState, simulation_->robotState());
-  out.publish(channels::kCameraColor, camera_messages_.color);
-  out.publish(channels::kCameraDepth, camera_messages_.depth);
-  out.publish(channels::kCameraInstance, camera_messages_.instance);
+  ground_truth_out_.publish(out, simulation_->groundTruth());
+  robot_state_out_.publish(out, simulation_->robotState());
+  color_out_.publish(out, camera_messages_.color);
+  depth_out_.publish(out, camera_messages_.depth);
+  instance_out_.publish(out, camera_messages_.instance);
   published_any_ = true;
 }
 

@@ -14,19 +14,12 @@ namespace beft::world {
 
 class WorldExpert : public beft::expert::Expert {
  public:
-  // Set from the command line (--scenario, --seed) before onStartUp.
+  // Set from the command line (--scenario, --seed) before startUp.
   std::string scenario_path;
   std::optional<uint64_t> seed;  // empty: the scenario's seed
 
   std::string name() const override { return "world"; }
   std::string description() const override;
-  std::vector<beft::expert::ChannelSpec> reads() const override;
-  std::vector<beft::expert::ChannelSpec> writes() const override;
-  std::vector<std::vector<std::string>> parameterHelp() const override;
-
-  // Loads the scenario (std::invalid_argument with FILE:LINE on a bad file).
-  void onStartUp(const beft::expert::Parameters& parameters) override;
-  bool onMessage(const std::string& channel, const void* data, int size) override;
   // Tick 0 publishes the initial state; tick k > current steps up to k (one
   // step per tick, each with the command in force). A tick already passed
   // is refused (the world cannot go back).
@@ -37,8 +30,14 @@ class WorldExpert : public beft::expert::Expert {
   // Publishes the current tick's messages.
   void publishState(beft::expert::Output& out);
 
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override;
+  // Loads the scenario (std::invalid_argument with FILE:LINE on a bad file).
+  void onStartUp() override;
+
  private:
   void logNotes();
+  void onCommand(robot_command_t&& command);
 
   std::unique_ptr<scenario::Scenario> scenario_;
   std::unique_ptr<WorldSimulation> simulation_;
@@ -47,6 +46,15 @@ class WorldExpert : public beft::expert::Expert {
   std::string last_adjustment_logged_;
   int64_t refused_commands_ = 0;
   bool warned_time_mismatch_ = false;
+  WorldOptions options_;
+
+  beft::expert::HandledInput<robot_command_t> commands_{
+      *this, channels::kRobotCommand, [this](robot_command_t&& command) { onCommand(std::move(command)); }};
+  beft::expert::OutputPort<scene_objects_t> ground_truth_out_{*this, channels::kGroundTruth};
+  beft::expert::OutputPort<robot_state_t> robot_state_out_{*this, channels::kRobotState};
+  beft::expert::OutputPort<camera_frame_t> color_out_{*this, channels::kCameraColor};
+  beft::expert::OutputPort<camera_frame_t> depth_out_{*this, channels::kCameraDepth};
+  beft::expert::OutputPort<camera_frame_t> instance_out_{*this, channels::kCameraInstance};
 };
 
 }  // namespace beft::world

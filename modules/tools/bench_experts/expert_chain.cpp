@@ -38,11 +38,8 @@ ExpertChain::ExpertChain(const std::map<std::string, std::map<std::string, std::
   levels_ = {{0, 1, 2}, {3, 4}, {5}};
   for (auto& e : experts_) {
     names_.push_back(e->name());
-    expert::Parameters given;
     const auto it = parameters.find(e->name());
-    if (it != parameters.end())
-      for (const auto& [key, value] : it->second) given.set(key, value);
-    e->onStartUp(given);
+    e->startUp(it != parameters.end() ? expert::Parameters(it->second.begin(), it->second.end()) : expert::Parameters{});
   }
 }
 

@@ -71,7 +71,7 @@ int sendCommand(lcm::LCM& lcm, beft::task_command_t command, bool wait, double t
     stack_subscription = lcm.subscribe(beft::channels::kTaskStack, &Handler<beft::task_stack_t>::handle, &stack_handler);
   }
   if (lcm.publish(beft::channels::kTaskCommand, &command) != 0) {
-    std::fprintf(stderr, "beft-task: error: could not publish on %s\n", beft::channels::kTaskCommand);
+    std::fprintf(stderr, "beft-task: error: could not publish on %s\n", beft::channels::kTaskCommand.name);
     return 1;
   }
   if (!wait) {

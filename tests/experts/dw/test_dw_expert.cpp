@@ -33,7 +33,7 @@ class DwExpertTest : public ::testing::Test {
  protected:
   void SetUp() override {
     expert::Parameters p;
-    expert_.onStartUp(p);
+    expert_.startUp(p);
   }
 
   // Everything of one tick except what a test leaves out.
@@ -209,16 +209,16 @@ TEST_F(DwExpertTest, ShowsTheCurrentTask) {
 TEST(DwExpertParameters, RefusesBadValues) {
   DwExpert expert;
   expert::Parameters p;
-  p.set("dw_step_s", "0");
-  EXPECT_THROW(expert.onStartUp(p), std::invalid_argument);
-  p.set("dw_step_s", "0.25");
-  p.set("t_max", "0");
-  EXPECT_THROW(expert.onStartUp(p), std::invalid_argument);
-  p.set("t_max", "10");
-  p.set("n", "abc");
-  EXPECT_THROW(expert.onStartUp(p), std::invalid_argument);
-  p.set("n", "100");
-  EXPECT_NO_THROW(expert.onStartUp(p));
+  p["dw_step_s"] = "0";
+  EXPECT_THROW(expert.startUp(p), std::invalid_argument);
+  p["dw_step_s"] = "0.25";
+  p["t_max"] = "0";
+  EXPECT_THROW(expert.startUp(p), std::invalid_argument);
+  p["t_max"] = "10";
+  p["n"] = "abc";
+  EXPECT_THROW(expert.startUp(p), std::invalid_argument);
+  p["n"] = "100";
+  EXPECT_NO_THROW(expert.startUp(p));
 }
 
 }  // namespace

@@ -70,7 +70,7 @@ hypotheses_t fireQuietTick(fusion::FusionExpert& fusion, int64_t tick) {
 
 TEST(FusionExpert, ResumesTheHypothesesOfItsRunAfterARestart) {
   fusion::FusionExpert fusion;
-  fusion.onStartUp({});
+  fusion.startUp();
   ASSERT_TRUE(feed(fusion, channels::kHypotheses, publishedAt(499)));
   const hypotheses_t out = fireQuietTick(fusion, 500);
   ASSERT_EQ(out.num_hypotheses, 1);
@@ -82,7 +82,7 @@ TEST(FusionExpert, ResumesTheHypothesesOfItsRunAfterARestart) {
 
 TEST(FusionExpert, IgnoresHypothesesOfAnEarlierRunAndItsOwnEcho) {
   fusion::FusionExpert fusion;
-  fusion.onStartUp({});
+  fusion.startUp();
   ASSERT_TRUE(feed(fusion, channels::kHypotheses, publishedAt(900)));  // an earlier, longer run
   EXPECT_EQ(fireQuietTick(fusion, 0).num_hypotheses, 0);
   ASSERT_TRUE(feed(fusion, channels::kHypotheses, publishedAt(0)));  // heard back while running

@@ -27,7 +27,7 @@ using testing_support::firing;
 
 class TasksExpertTest : public ::testing::Test {
  protected:
-  void SetUp() override { expert_.onStartUp({}); }
+  void SetUp() override { expert_.startUp(); }
 
   void robotAt(int64_t tick, double x, double y) {
     robot_state_t s{};
@@ -185,16 +185,16 @@ TEST_F(TasksExpertTest, PopOfAnOwnedTaskAndClear) {
 TEST(TasksExpertParameters, RefusesBadValues) {
   TasksExpert expert;
   expert::Parameters p;
-  p.set("goal_tolerance_m", "-1");
-  EXPECT_THROW(expert.onStartUp(p), std::invalid_argument);
-  p.set("goal_tolerance_m", "0.2");
-  p.set("max_failed_plans", "0");
-  EXPECT_THROW(expert.onStartUp(p), std::invalid_argument);
-  p.set("max_failed_plans", "2");
-  p.set("stall_s", "x");
-  EXPECT_THROW(expert.onStartUp(p), std::invalid_argument);
-  p.set("stall_s", "3");
-  EXPECT_NO_THROW(expert.onStartUp(p));
+  p["goal_tolerance_m"] = "-1";
+  EXPECT_THROW(expert.startUp(p), std::invalid_argument);
+  p["goal_tolerance_m"] = "0.2";
+  p["max_failed_plans"] = "0";
+  EXPECT_THROW(expert.startUp(p), std::invalid_argument);
+  p["max_failed_plans"] = "2";
+  p["stall_s"] = "x";
+  EXPECT_THROW(expert.startUp(p), std::invalid_argument);
+  p["stall_s"] = "3";
+  EXPECT_NO_THROW(expert.startUp(p));
 }
 
 }  // namespace

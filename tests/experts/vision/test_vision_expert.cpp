@@ -64,7 +64,7 @@ expert::Firing firingFor(int64_t tick, int64_t id) {
 
 TEST(VisionExpert, FiresOnlyWithTheInputsOfItsTick) {
   vision::VisionExpert vision;
-  vision.onStartUp({});
+  vision.startUp();
   feedTick(vision, 0);
   EXPECT_TRUE(vision.inputsReady(firingFor(0, 1)));
   EXPECT_FALSE(vision.inputsReady(firingFor(1, 2)));
@@ -91,7 +91,7 @@ TEST(VisionExpert, ResumesTheMapOfAPreviousRunAndIgnoresItsOwnEcho) {
   const auto previous = planners::makeObstacleMap(before, obstacle_map_t::ENCODING_RLE, 0, 41);
 
   vision::VisionExpert vision;
-  vision.onStartUp({});
+  vision.startUp();
   ASSERT_TRUE(feed(vision, channels::kObstacleMap, previous));
   feedTick(vision, 42);
   Collected out;
@@ -120,7 +120,7 @@ TEST(VisionExpert, AMapFromAnEarlierRunIsNotResumed) {
   stale.resolution = 0.1;
   stale.cells.assign(200 * 100, obstacle_map_t::CELL_OCCUPIED);
   vision::VisionExpert vision;
-  vision.onStartUp({});
+  vision.startUp();
   ASSERT_TRUE(feed(vision, channels::kObstacleMap, planners::makeObstacleMap(stale, obstacle_map_t::ENCODING_RLE, 0, 900)));
   feedTick(vision, 0);
   Collected out;
@@ -136,7 +136,7 @@ TEST(VisionExpert, AMapForAnotherGridIsNotResumed) {
   other.resolution = 0.2;
   other.cells.assign(50 * 50, obstacle_map_t::CELL_OCCUPIED);
   vision::VisionExpert vision;
-  vision.onStartUp({});
+  vision.startUp();
   ASSERT_TRUE(feed(vision, channels::kObstacleMap, planners::makeObstacleMap(other, obstacle_map_t::ENCODING_RLE, 0, 4)));
   feedTick(vision, 5);
   Collected out;
@@ -149,7 +149,7 @@ TEST(VisionExpert, AMapForAnotherGridIsNotResumed) {
 TEST(VisionExpert, ABadDepthFrameFailsTheFiringAndTheNextTickWorks) {
   // The map is built beside the percepts: its error must still reach the outcome.
   vision::VisionExpert vision;
-  vision.onStartUp({});
+  vision.startUp();
   feedTick(vision, 0);
   camera_frame_t broken{};
   broken.tick = 0;

@@ -28,25 +28,13 @@ using namespace std::chrono_literals;
 
 namespace {
 
+constexpr channels::Channel<beft::robot_state_t> kScaled{"SCALED"};
+
 // Doubles the robot's x: reads ROBOT_STATE, writes it scaled on "SCALED".
 class ScalingExpert : public expert::Expert {
  public:
   std::string name() const override { return "scaler"; }
   std::string description() const override { return "test expert"; }
-  std::vector<expert::ChannelSpec> reads() const override {
-    return {{channels::kRobotState, "beft.robot_state_t"}};
-  }
-  std::vector<expert::ChannelSpec> writes() const override { return {{"SCALED", "beft.robot_state_t"}}; }
-  std::vector<std::vector<std::string>> parameterHelp() const override {
-    return {{"factor", "2", "scale of x"}};
-  }
-  void onStartUp(const expert::Parameters& p) override { factor_ = p.getDouble("factor", 2.0); }
-  bool onMessage(const std::string&, const void* data, int size) override {
-    beft::robot_state_t state;
-    if (!expert::decodeMessage(data, size, state)) return false;
-    states_.store(state, state.utime);
-    return true;
-  }
   bool inputsReady(const expert::Firing& f) const override { return states_.at(f.utime) != nullptr; }
   expert::Outcome fire(const expert::Firing& f, expert::Output& out) override {
     fires.fetch_add(1);
@@ -54,14 +42,22 @@ class ScalingExpert : public expert::Expert {
     if (!entry) return expert::Outcome::failure("no robot state for tick");
     beft::robot_state_t scaled = entry->message;
     scaled.x *= factor_;
-    out.publish("SCALED", scaled);
+    scaled_out_.publish(out, scaled);
     return expert::Outcome::success();
   }
   std::atomic<int> fires{0};
 
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override {
+    parameters.declare("factor", factor_, 0, 100, "scale of x");
+  }
+
  private:
   double factor_ = 2.0;
   blackboard::ChannelHistory<beft::robot_state_t> states_;
+  expert::HandledInput<beft::robot_state_t> robot_{
+      *this, channels::kRobotState, [this](beft::robot_state_t&& s) { states_.store(s, s.utime); }};
+  expert::OutputPort<beft::robot_state_t> scaled_out_{*this, kScaled};
 };
 
 // Reads nothing and takes a second per firing, like the task executor waiting for a plan.
@@ -69,12 +65,6 @@ class SlowExpert : public expert::Expert {
  public:
   std::string name() const override { return "slow"; }
   std::string description() const override { return "test expert"; }
-  std::vector<expert::ChannelSpec> reads() const override { return {}; }
-  std::vector<expert::ChannelSpec> writes() const override { return {}; }
-  std::vector<std::vector<std::string>> parameterHelp() const override { return {}; }
-  void onStartUp(const expert::Parameters&) override {}
-  bool onMessage(const std::string&, const void*, int) override { return false; }
-  bool inputsReady(const expert::Firing&) const override { return true; }
   expert::Outcome fire(const expert::Firing&, expert::Output&) override {
     std::this_thread::sleep_for(1s);
     return expert::Outcome::success();
@@ -140,7 +130,7 @@ void pump(lcm::LCM& lcm, std::chrono::milliseconds how_long) {
 
 TEST(LiveRunner, FiresOncePerFiringAndRepeatsDoneForDuplicates) {
   ScalingExpert scaler;
-  scaler.onStartUp({});
+  scaler.startUp();
   expert::LiveOptions options = scalerOptions(1);
   options.heartbeat_period_s = 0.05;
   const std::string url = options.lcm_url;
@@ -189,7 +179,7 @@ TEST(LiveRunner, FiresOncePerFiringAndRepeatsDoneForDuplicates) {
 
 TEST(LiveRunner, AnswersAWaitingArbiterWithAHeartbeatAtOnce) {
   ScalingExpert scaler;
-  scaler.onStartUp({});
+  scaler.startUp();
   expert::LiveOptions options = scalerOptions(3);
   options.heartbeat_period_s = 30;  // only the first one comes by itself
   const std::string url = options.lcm_url;
@@ -249,7 +239,7 @@ TEST(LiveRunner, KeepsItsHeartbeatDuringALongFiring) {
 
 TEST(LiveRunner, WaitsForInputsThenFiresAnyway) {
   ScalingExpert scaler;
-  scaler.onStartUp({});
+  scaler.startUp();
   expert::LiveOptions options = scalerOptions(2);
   options.ready_timeout_s = 0.2;
   const std::string url = options.lcm_url;
@@ -280,7 +270,7 @@ TEST(LiveRunner, AnInputArrivingAfterItsFireIsWaitedFor) {
   for (const bool direct : {true, false}) {
     if (!direct) setenv("BEFT_UDPM_RECEIVER", "0", 1);
     ScalingExpert scaler;
-    scaler.onStartUp({});
+    scaler.startUp();
     expert::LiveOptions options = scalerOptions(direct ? 3 : 4);
     const std::string url = options.lcm_url;
     std::thread runner([&] { expert::runLive(scaler, options); });
@@ -317,24 +307,89 @@ TEST(LiveRunner, AnInputArrivingAfterItsFireIsWaitedFor) {
   }
 }
 
-TEST(Parameters, TypedGettersRefuseBadValuesByName) {
-  expert::Parameters p;
-  p.set("gain", "2.5");
-  p.set("count", "7");
-  p.set("flag", "true");
-  p.set("bad", "x1");
-  EXPECT_DOUBLE_EQ(p.getDouble("gain", 0), 2.5);
-  EXPECT_EQ(p.getInt("count", 0), 7);
-  EXPECT_TRUE(p.getBool("flag", false));
-  EXPECT_DOUBLE_EQ(p.getDouble("absent", 4.0), 4.0);
+TEST(Ports, ReadsWritesAndDispatchComeFromTheDeclaredPorts) {
+  ScalingExpert scaler;
+  ASSERT_EQ(scaler.reads().size(), 1u);
+  EXPECT_EQ(scaler.reads()[0].channel, "ROBOT_STATE");
+  EXPECT_EQ(scaler.reads()[0].type, "beft.robot_state_t");
+  ASSERT_EQ(scaler.writes().size(), 1u);
+  EXPECT_EQ(scaler.writes()[0].channel, "SCALED");
+  EXPECT_EQ(scaler.writes()[0].type, "beft.robot_state_t");
+  const auto state = stateAt(3, 1.5);
+  std::vector<uint8_t> bytes(state.getEncodedSize());
+  state.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  EXPECT_TRUE(scaler.onMessage("ROBOT_STATE", bytes.data(), static_cast<int>(bytes.size())));
+  EXPECT_FALSE(scaler.onMessage("GT_OBJECTS", bytes.data(), static_cast<int>(bytes.size()))) << "no port reads it";
+  EXPECT_FALSE(scaler.onMessage("ROBOT_STATE", bytes.data(), 5)) << "not a robot_state_t";
+  EXPECT_TRUE(scaler.inputsReady({"scaler", "t", 3, 300000, 1}));
+}
+
+TEST(Ports, PublishingOnAnUndeclaredChannelFails) {
+  struct Sink : expert::Output {
+    std::vector<std::string> channels;
+    void publishEncoded(const std::string& channel, const std::vector<uint8_t>&) override {
+      channels.push_back(channel);
+    }
+  } sink;
+  ScalingExpert scaler;
+  sink.restrictTo(scaler.writes());
+  sink.publish(kScaled, stateAt(1, 1));
+  EXPECT_THROW(sink.publish(channels::kRobotState, stateAt(1, 1)), std::logic_error);
+  EXPECT_EQ(sink.channels, std::vector<std::string>{"SCALED"});
+}
+
+TEST(Parameters, DeclaredOnceWithDefaultRangeAndMeaning) {
+  ScalingExpert scaler;
+  const auto& list = scaler.parameters().list();
+  ASSERT_EQ(list.size(), 1u);
+  EXPECT_EQ(list[0].name, "factor");
+  EXPECT_EQ(list[0].default_value, "2");
+  EXPECT_EQ(list[0].range, "[0, 100]");
+  EXPECT_NE(scaler.parameters().describe().find("factor (default 2, [0, 100]): scale of x"), std::string::npos);
+}
+
+TEST(Parameters, OutOfRangeAndUnknownAreRefusedWithTheRange) {
+  ScalingExpert scaler;
   try {
-    p.getDouble("bad", 0);
+    scaler.startUp({{"factor", "250"}});
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("bad"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("factor='250' is not [0, 100]"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(p.getInt("gain", 0), std::invalid_argument);
-  EXPECT_THROW(p.getBool("count", false), std::invalid_argument);
+  EXPECT_THROW(scaler.startUp({{"factor", "x1"}}), std::invalid_argument);
+  try {
+    scaler.startUp({{"gain", "2"}});
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown parameter 'gain' (known: factor)"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Parameters, EachStartUpBeginsFromTheDefaults) {
+  DeclaredParameters declared;
+  double gain = 2.5;
+  int count = 7;
+  bool flag = false;
+  std::string word = "a";
+  declared.declare("gain", gain, 0, 10, "g", true);
+  declared.declare("count", count, 1, 9, "c");
+  declared.declare("flag", flag, "f");
+  declared.declare("word", word, "w");
+  declared.setAll({{"gain", "4"}, {"count", "3"}, {"flag", "yes"}, {"word", "b"}});
+  EXPECT_DOUBLE_EQ(gain, 4);
+  EXPECT_EQ(count, 3);
+  EXPECT_TRUE(flag);
+  EXPECT_EQ(word, "b");
+  EXPECT_EQ(declared.current("count"), "3");
+  EXPECT_THROW(declared.set("gain", "0"), std::invalid_argument) << "(0, 10] excludes 0";
+  EXPECT_THROW(declared.set("count", "2.5"), std::invalid_argument);
+  EXPECT_THROW(declared.set("flag", "maybe"), std::invalid_argument);
+  declared.resetToDefaults();
+  EXPECT_DOUBLE_EQ(gain, 2.5);
+  EXPECT_EQ(count, 7);
+  EXPECT_FALSE(flag);
+  EXPECT_EQ(word, "a");
+  EXPECT_THROW(declared.declare("gain", gain, 0, 1, "again"), std::logic_error);
 }
 
 namespace {
@@ -371,7 +426,7 @@ std::string writeRecordedLog(double recorded_factor, int64_t lost_tick = -1) {
 TEST(Replay, SameParametersMatchExactly) {
   const std::string log_path = writeRecordedLog(2.0);
   ScalingExpert scaler;
-  scaler.onStartUp({});
+  scaler.startUp();
   const auto result = expert::replayLog(scaler, "scaler", log_path);
   EXPECT_EQ(result.firings, 5);
   EXPECT_EQ(result.outputs_compared, 5);
@@ -382,9 +437,7 @@ TEST(Replay, SameParametersMatchExactly) {
 TEST(Replay, ChangedParameterShowsTheDifference) {
   const std::string log_path = writeRecordedLog(2.0);
   ScalingExpert scaler;
-  expert::Parameters p;
-  p.set("factor", "3");
-  scaler.onStartUp(p);
+  scaler.startUp({{"factor", "3"}});
   const auto result = expert::replayLog(scaler, "scaler", log_path);
   EXPECT_EQ(result.firings, 5);
   EXPECT_FALSE(result.exactMatch());
@@ -398,7 +451,7 @@ TEST(Replay, ChangedParameterShowsTheDifference) {
 TEST(Replay, AnOutputLostByTheLoggerShiftsNothing) {
   const std::string log_path = writeRecordedLog(2.0, 1);
   ScalingExpert scaler;
-  scaler.onStartUp({});
+  scaler.startUp();
   const auto result = expert::replayLog(scaler, "scaler", log_path);
   EXPECT_EQ(result.outputs_compared, 4);
   EXPECT_EQ(result.outputs_matching, 4);

@@ -1,0 +1,53 @@
+#include "expert.hpp"
+
+namespace beft::expert {
+
+InputPortBase::InputPortBase(Expert& owner, const char* channel, std::string type)
+    : channel_(channel), type_(std::move(type)) {
+  owner.inputs_.push_back(this);
+}
+
+OutputPortBase::OutputPortBase(Expert& owner, const char* channel, std::string type)
+    : channel_(channel), type_(std::move(type)) {
+  owner.outputs_.push_back(this);
+}
+
+void Output::restrictTo(const std::vector<ChannelSpec>& declared) {
+  declared_.clear();
+  for (const auto& spec : declared) declared_.insert(spec.channel);
+}
+
+std::vector<ChannelSpec> Expert::reads() const {
+  std::vector<ChannelSpec> specs;
+  for (const auto* port : inputs_) specs.push_back({port->channel(), port->type()});
+  return specs;
+}
+
+std::vector<ChannelSpec> Expert::writes() const {
+  std::vector<ChannelSpec> specs;
+  for (const auto* port : outputs_) specs.push_back({port->channel(), port->type()});
+  return specs;
+}
+
+const DeclaredParameters& Expert::parameters() {
+  if (!parameters_) {
+    parameters_ = std::make_unique<DeclaredParameters>();
+    declareParameters(*parameters_);
+  }
+  return *parameters_;
+}
+
+void Expert::startUp(const Parameters& given) {
+  parameters();
+  parameters_->resetToDefaults();
+  parameters_->setAll(given);
+  onStartUp();
+}
+
+bool Expert::onMessage(const std::string& channel, const void* data, int size) {
+  for (auto* port : inputs_)
+    if (channel == port->channel()) return port->receive(data, size);
+  return false;
+}
+
+}  // namespace beft::expert

@@ -1,0 +1,133 @@
+// An expert's inputs and outputs, each declared once as a member:
+//
+//   expert::TickInput<visual_percepts_t> vision_{*this, channels::kVision};
+//   expert::OutputPort<hypotheses_t> hypotheses_out_{*this, channels::kHypotheses};
+//
+// A port registers itself with its expert; the channel's type comes from the
+// channel table (channels.hpp). What the expert reads and writes
+// (--interface, subscriptions, kernel filters, replay) and how a received
+// message reaches its store are derived from the ports, and decoding happens
+// here, in one place.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+
+#include "channel_history.hpp"
+#include "channels.hpp"
+
+namespace beft::expert {
+
+class Expert;
+class Output;
+
+// Decodes an LCM message; false if the bytes are not exactly one Message.
+template <typename Message>
+bool decodeMessage(const void* data, int size, Message& message) {
+  return message.decode(data, 0, size) == size;
+}
+
+class InputPortBase {
+ public:
+  InputPortBase(Expert& owner, const char* channel, std::string type);
+  virtual ~InputPortBase() = default;
+  InputPortBase(const InputPortBase&) = delete;
+  InputPortBase& operator=(const InputPortBase&) = delete;
+
+  const char* channel() const { return channel_; }
+  const std::string& type() const { return type_; }
+  // Decodes and keeps one received message; false if the bytes are not one.
+  virtual bool receive(const void* data, int size) = 0;
+
+ private:
+  const char* channel_;
+  std::string type_;
+};
+
+// Messages kept by the tick they belong to (every type an expert reads this
+// way carries `utime` and `tick`), looked up by the tick a firing is for.
+template <typename Message>
+class TickInput : public InputPortBase {
+ public:
+  TickInput(Expert& owner, channels::Channel<Message> channel, std::size_t capacity = 16)
+      : InputPortBase(owner, channel.name, channel.typeName()), history_(capacity) {}
+
+  bool receive(const void* data, int size) override {
+    Message message{};
+    if (!decodeMessage(data, size, message)) return false;
+    const int64_t utime = message.utime;
+    history_.store(std::move(message), utime);  // moved: a camera frame's pixels are not copied again
+    return true;
+  }
+  void store(const Message& message) { history_.store(message, message.utime); }
+
+  // The newest stored message of tick k, or null. Walks back one simulated
+  // time at a time (utime strictly falls), so it ends on any history.
+  const Message* ofTick(int64_t tick) const {
+    for (const auto* entry = history_.latest(); entry != nullptr; entry = history_.atOrBefore(entry->utime - 1)) {
+      if (entry->message.tick == tick) return &entry->message;
+    }
+    return nullptr;
+  }
+  const Message* latest() const {
+    const auto* newest = history_.latest();
+    return newest == nullptr ? nullptr : &newest->message;
+  }
+  bool has(int64_t tick) const { return ofTick(tick) != nullptr; }
+  bool empty() const { return history_.empty(); }
+
+ private:
+  blackboard::ChannelHistory<Message> history_;
+};
+
+// Each message handed, decoded, to a handler of the expert's (a queue of
+// commands, a state to resume from). `wanted`, when given, is asked first:
+// a message not wanted is not decoded (an expert's own output heard back).
+template <typename Message>
+class HandledInput : public InputPortBase {
+ public:
+  using Handler = std::function<void(Message&&)>;
+  HandledInput(Expert& owner, channels::Channel<Message> channel, Handler handler,
+               std::function<bool()> wanted = {})
+      : InputPortBase(owner, channel.name, channel.typeName()),
+        handler_(std::move(handler)),
+        wanted_(std::move(wanted)) {}
+
+  bool receive(const void* data, int size) override {
+    if (wanted_ && !wanted_()) return true;
+    Message message{};
+    if (!decodeMessage(data, size, message)) return false;
+    handler_(std::move(message));
+    return true;
+  }
+
+ private:
+  Handler handler_;
+  std::function<bool()> wanted_;
+};
+
+class OutputPortBase {
+ public:
+  OutputPortBase(Expert& owner, const char* channel, std::string type);
+  OutputPortBase(const OutputPortBase&) = delete;
+  OutputPortBase& operator=(const OutputPortBase&) = delete;
+  const char* channel() const { return channel_; }
+  const std::string& type() const { return type_; }
+
+ private:
+  const char* channel_;
+  std::string type_;
+};
+
+template <typename Message>
+class OutputPort : public OutputPortBase {
+ public:
+  OutputPort(Expert& owner, channels::Channel<Message> channel)
+      : OutputPortBase(owner, channel.name, channel.typeName()) {}
+  void publish(Output& out, const Message& message) const;
+};
+
+}  // namespace beft::expert
