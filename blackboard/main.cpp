@@ -21,8 +21,7 @@
 #include "heap_retention.hpp"
 #include "lcm_url.hpp"
 #include "log.hpp"
-#include "message_source.hpp"
-#include "udpm_filter.hpp"
+#include "transport.hpp"
 
 namespace {
 
@@ -53,7 +52,7 @@ class BlackboardProcess {
   explicit BlackboardProcess(lcm::LCM& lcm, BlackboardService& service) : lcm_(lcm), service_(service) {}
 
   // Queries by name; everything else is stored (or refused by the service).
-  void onMessage(const beft::lcm_wire::Message& message) {
+  void onMessage(const beft::transport::Message& message) {
     const std::string channel(message.channel);
     if (channel == beft::channels::kBlackboardQuery) {
       beft::bb_query_t query;
@@ -198,16 +197,16 @@ int main(int argc, char** argv) {
   // wakes the process at once. Excluded channels named plainly (FIRE, DONE,
   // ...) are dropped in the kernel.
   BlackboardProcess process(lcm, *service);
-  beft::udpm_filter::Spec stored;
-  stored.mode = beft::udpm_filter::Spec::Mode::RejectListed;
+  beft::transport::Selection stored;
+  stored.mode = beft::transport::Selection::Mode::RejectListed;
   for (const auto& pattern : options.exclude)
-    if (beft::udpm_filter::isPlainChannel(pattern))
-      stored.rules.push_back(beft::udpm_filter::channelRule(pattern));
-  beft::udpm_filter::Spec queries;
-  queries.rules.push_back(beft::udpm_filter::channelRule(beft::channels::kBlackboardQuery));
-  std::unique_ptr<beft::MessageSource> stored_source, query_source;
+    if (beft::transport::isPlainChannel(pattern))
+      stored.rules.push_back(beft::transport::channelRule(pattern));
+  beft::transport::Selection queries;
+  queries.rules.push_back(beft::transport::channelRule(beft::channels::kBlackboardQuery));
+  std::unique_ptr<beft::transport::Receiver> stored_source, query_source;
   try {
-    beft::SplitSources sources = beft::openSplitSources(lcm, lcm_url, queries, stored, 64, queue_capacity);
+    beft::transport::SplitReceivers sources = beft::transport::openSplitReceivers(lcm, lcm_url, queries, stored, 64, queue_capacity);
     query_source = std::move(sources.wake);
     stored_source = std::move(sources.queued);
   } catch (const std::exception& error) {
@@ -220,10 +219,10 @@ int main(int argc, char** argv) {
   } else {
     beft::log::info("receiving: ", query_source->description());  // one LCM subscription: queries and the rest
   }
-  const beft::udpm::MessageHandler handler = [&process](const beft::lcm_wire::Message& message) {
+  const beft::transport::Handler handler = [&process](const beft::transport::Message& message) {
     process.onMessage(message);
   };
-  const bool gather = stored_source && beft::roomToGather(stored_source->receiveBufferBytes());
+  const bool gather = stored_source && beft::transport::roomToGather(stored_source->receiveBufferBytes());
   std::signal(SIGINT, onSignal);
   std::signal(SIGTERM, onSignal);
   std::string excluded;
@@ -235,7 +234,7 @@ int main(int argc, char** argv) {
   auto next_status = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(status_period));
   while (!g_stop) {
     // A query wakes it at once; stored traffic is read at least every batch.
-    beft::udpm::waitReadable({query_source->fd(), stored_source && !gather ? stored_source->fd() : -1},
+    beft::transport::waitReadable({query_source->fd(), stored_source && !gather ? stored_source->fd() : -1},
                              gather ? batch_ms : 200);
     // Stored traffic first: a query is answered with everything sent before it.
     if ((stored_source && stored_source->drain(handler) < 0) || query_source->drain(handler) < 0) {

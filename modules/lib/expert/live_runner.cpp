@@ -20,8 +20,8 @@
 #include "channels.hpp"
 #include "heartbeat_thread.hpp"
 #include "log.hpp"
-#include "message_source.hpp"
-#include "udpm_filter.hpp"
+#include "control_messages.hpp"
+#include "transport.hpp"
 
 namespace beft::expert {
 
@@ -68,12 +68,12 @@ class Runner {
 
     log::info("ready: waiting for FIRE on ", options_.lcm_url);
     heartbeat_.emplace(lcm_, options_.process_name, options_.heartbeat_period_s);
-    const udpm::MessageHandler handler = [this](const lcm_wire::Message& message) { onMessage(message); };
+    const transport::Handler handler = [this](const transport::Message& message) { onMessage(message); };
     while (!g_stop_requested && !run_ended_) {
       // Short waits while a firing waits for its inputs (then their socket
       // wakes it too); else 100 ms, so a signal is seen.
       const bool waiting_for_inputs = pending_ && !pending_fired_;
-      udpm::waitReadable({control_->fd(), inputs_ && waiting_for_inputs ? inputs_->fd() : -1},
+      transport::waitReadable({control_->fd(), inputs_ && waiting_for_inputs ? inputs_->fd() : -1},
                          waiting_for_inputs ? 5 : 100);
       // Inputs first: what was published before a FIRE is then stored before
       // the FIRE is served.
@@ -92,7 +92,7 @@ class Runner {
 
  private:
   // One handler for both sources: the control channels by name, then inputs.
-  void onMessage(const lcm_wire::Message& message) {
+  void onMessage(const transport::Message& message) {
     const std::string channel(message.channel);
     const int size = static_cast<int>(message.size);
     if (channel == channels::kFire) {
@@ -208,23 +208,23 @@ class Runner {
   // Everything else is dropped in the kernel. Without the direct receiver
   // (another provider, BEFT_UDPM_RECEIVER=0) one LCM subscription takes both.
   bool openSources() {
-    udpm_filter::Spec control_spec, input_spec;
+    transport::Selection control_spec, input_spec;
     for (const auto& channel : read_channels_) {
-      if (!udpm_filter::isPlainChannel(channel)) {
+      if (!transport::isPlainChannel(channel)) {
         log::error("reads() names '", channel, "': an expert reads channels by name, not by pattern");
         return false;
       }
-      input_spec.rules.push_back(udpm_filter::channelRule(channel));
+      input_spec.rules.push_back(transport::channelRule(channel));
     }
-    control_spec.rules.push_back(udpm_filter::fireFor(channels::kFire, options_.process_name));
+    control_spec.rules.push_back(control::firesFor(options_.process_name));
     // Only an arbiter waiting for heartbeats and the end of the run matter
     // here, not the status of every tick.
     for (int8_t state : {beft::run_status_t::STATE_WAITING, beft::run_status_t::STATE_FINISHED,
                          beft::run_status_t::STATE_FAILED})
-      control_spec.rules.push_back(udpm_filter::runStatusIn(channels::kRunStatus, state, "waiting and end of run"));
-    if (!snapshot_channel_.empty()) control_spec.rules.push_back(udpm_filter::channelRule(snapshot_channel_));
+      control_spec.rules.push_back(control::runStatusIn(state, "waiting and end of run"));
+    if (!snapshot_channel_.empty()) control_spec.rules.push_back(transport::channelRule(snapshot_channel_));
     try {
-      SplitSources sources = openSplitSources(lcm_, options_.lcm_url, control_spec, input_spec);
+      transport::SplitReceivers sources = transport::openSplitReceivers(lcm_, options_.lcm_url, control_spec, input_spec);
       control_ = std::move(sources.wake);
       inputs_ = std::move(sources.queued);
       if (inputs_) log::info("inputs: ", inputs_->description());
@@ -272,7 +272,7 @@ class Runner {
   Clock::time_point pending_since_;
   Clock::time_point last_waiting_answer_;
   int64_t last_fired_id_ = -1;
-  std::unique_ptr<MessageSource> control_, inputs_;  // openSplitSources: inputs_ only with the direct receiver
+  std::unique_ptr<transport::Receiver> control_, inputs_;  // openSplitReceivers: inputs_ only with the direct receiver
   std::optional<HeartbeatThread> heartbeat_;  // from the start of the loop to its end
   beft::done_t last_done_;
   int64_t firings_run_ = 0;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "control_messages.hpp"
 #include "log.hpp"
 
 namespace beft::arbiter {
@@ -375,12 +376,8 @@ void ArbiterCore::startFiring(int transition, int attempt, int64_t tick) {
 
 void ArbiterCore::sendFire(int e) {
   Running& running = *experts_[e].running;
-  beft::fire_t fire;
-  fire.utime = utimeOfTick(running.tick);
-  fire.expert = experts_[e].name;
-  fire.transition = net_.transitions[running.transition].id;
-  fire.tick = running.tick;
-  fire.firing_id = running.firing_id;
+  const beft::fire_t fire = control::makeFire(experts_[e].name, net_.transitions[running.transition].id,
+                                              running.tick, utimeOfTick(running.tick), running.firing_id);
   running.last_send = clock_.now();
   output_.sendFire(fire);
 }
@@ -489,12 +486,7 @@ void ArbiterCore::endRun(RunState state, const std::string& why) {
 }
 
 void ArbiterCore::sendStatus(int8_t state, const std::string& message) {
-  beft::run_status_t status;
-  status.utime = utimeOfTick(tick_);
-  status.tick = tick_;
-  status.state = state;
-  status.message = message;
-  output_.sendRunStatus(status);
+  output_.sendRunStatus(control::makeRunStatus(state, tick_, utimeOfTick(tick_), message));
 }
 
 void ArbiterCore::publishMarking(const std::string& event) {

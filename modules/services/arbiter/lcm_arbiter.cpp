@@ -40,9 +40,9 @@ std::vector<std::string> ArbiterEventQueue::channelsRead() {
 }
 
 ArbiterEventQueue::ArbiterEventQueue(lcm::LCM& lcm, const std::string& url) {
-  udpm_filter::Spec spec;
-  for (const auto& channel : channelsRead()) spec.rules.push_back(udpm_filter::channelRule(channel));
-  source_ = openMessageSource(lcm, url, spec, 16, kQueueCapacity);
+  transport::Selection spec;
+  for (const auto& channel : channelsRead()) spec.rules.push_back(transport::channelRule(channel));
+  source_ = transport::openReceiver(lcm, url, spec, 16, kQueueCapacity);
 }
 
 ArbiterEventQueue::~ArbiterEventQueue() = default;
@@ -50,7 +50,7 @@ ArbiterEventQueue::~ArbiterEventQueue() = default;
 std::string ArbiterEventQueue::description() const { return source_->description(); }
 
 bool ArbiterEventQueue::receive(int timeout_ms, int spin_us) {
-  const udpm::MessageHandler handler = [this](const lcm_wire::Message& message) { onMessage(message); };
+  const transport::Handler handler = [this](const transport::Message& message) { onMessage(message); };
   if (spin_us > 0 && timeout_ms > 0) {
     // Poll before sleeping: a short firing's DONE is then taken as it comes,
     // without this process going to sleep and being woken again (on a
@@ -61,7 +61,7 @@ bool ArbiterEventQueue::receive(int timeout_ms, int spin_us) {
     using SteadyTime = std::chrono::steady_clock;
     const auto start = SteadyTime::now();
     const auto give_up = start + std::chrono::microseconds(std::min<int64_t>(spin_us, int64_t{timeout_ms} * 1000));
-    while (!udpm::waitReadable({source_->fd()}, 0)) {
+    while (!transport::waitReadable({source_->fd()}, 0)) {
       if (SteadyTime::now() >= give_up) {
         const auto spun_ms = std::chrono::duration_cast<std::chrono::milliseconds>(SteadyTime::now() - start).count();
         timeout_ms = std::max<int>(0, timeout_ms - static_cast<int>(spun_ms));
@@ -74,7 +74,7 @@ bool ArbiterEventQueue::receive(int timeout_ms, int spin_us) {
 }
 
 // Queue only; what does not decode is reported and dropped.
-void ArbiterEventQueue::onMessage(const lcm_wire::Message& message) {
+void ArbiterEventQueue::onMessage(const transport::Message& message) {
   const int size = static_cast<int>(message.size);
   if (message.channel == channels::kDone) {
     beft::done_t done;

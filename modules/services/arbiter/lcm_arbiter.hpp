@@ -14,7 +14,7 @@
 
 #include "arbiter_core.hpp"
 #include "firing_log.hpp"
-#include "message_source.hpp"
+#include "transport.hpp"
 
 namespace beft::arbiter {
 
@@ -42,7 +42,7 @@ struct StopRequest {
 };
 using ArbiterEvent = std::variant<beft::done_t, beft::heartbeat_t, StopRequest>;
 
-// Receives DONE, HEARTBEAT and STOP_REQUEST (message_source.hpp: on udpm a
+// Receives DONE, HEARTBEAT and STOP_REQUEST (transport.hpp: on udpm a
 // socket of its own, read in the loop's thread) and queues what arrives.
 class ArbiterEventQueue {
  public:
@@ -65,9 +65,9 @@ class ArbiterEventQueue {
   std::string description() const;
 
  private:
-  void onMessage(const lcm_wire::Message& message);
+  void onMessage(const transport::Message& message);
 
-  std::unique_ptr<MessageSource> source_;
+  std::unique_ptr<transport::Receiver> source_;
   std::vector<ArbiterEvent> events_;
 };
 

@@ -12,7 +12,6 @@
 #include "heap_retention.hpp"
 #include "lcm_arbiter.hpp"
 #include "lcm_url.hpp"
-#include "udpm_filter.hpp"
 #include "log.hpp"
 #include "pnml_reader.hpp"
 

@@ -8,8 +8,8 @@
 #include "ompl_planner.hpp"
 #include "planner_factory.hpp"
 #include "planner_service.hpp"
-#include "message_source.hpp"
-#include "udpm_filter.hpp"
+#include "control_messages.hpp"
+#include "transport.hpp"
 
 #include <beft/heartbeat_t.hpp>
 #include <beft/run_status_t.hpp>
@@ -46,7 +46,7 @@ std::string hostName() {
 // requests in arrival order.
 class Inbox {
  public:
-  void onMessage(const beft::lcm_wire::Message& message) {
+  void onMessage(const beft::transport::Message& message) {
     const int size = static_cast<int>(message.size);
     if (message.channel == beft::channels::kObstacleMap) {
       latest_map.assign(message.data, message.data + message.size);
@@ -125,15 +125,15 @@ int main(int argc, char** argv) {
   // On udpm the maps (one a tick) queue on a socket nothing waits on and are
   // read when a request comes; requests wake the process.
   Inbox inbox;
-  const beft::udpm::MessageHandler to_inbox = [&inbox](const beft::lcm_wire::Message& m) { inbox.onMessage(m); };
-  beft::udpm_filter::Spec maps, requests;
-  maps.rules = {beft::udpm_filter::channelRule(beft::channels::kObstacleMap)};
-  requests.rules = {beft::udpm_filter::channelRule(beft::channels::kPlanRequest)};
-  requests.rules.push_back(beft::udpm_filter::runStatusIn(
-      beft::channels::kRunStatus, beft::run_status_t::STATE_WAITING, "an arbiter waiting for heartbeats"));
-  std::unique_ptr<beft::MessageSource> request_source, map_source;
+  const beft::transport::Handler to_inbox = [&inbox](const beft::transport::Message& m) { inbox.onMessage(m); };
+  beft::transport::Selection maps, requests;
+  maps.rules = {beft::transport::channelRule(beft::channels::kObstacleMap)};
+  requests.rules = {beft::transport::channelRule(beft::channels::kPlanRequest)};
+  requests.rules.push_back(
+      beft::control::runStatusIn(beft::run_status_t::STATE_WAITING, "an arbiter waiting for heartbeats"));
+  std::unique_ptr<beft::transport::Receiver> request_source, map_source;
   try {
-    beft::SplitSources sources = beft::openSplitSources(lcm, lcm_url, requests, maps, 16, 1000);
+    beft::transport::SplitReceivers sources = beft::transport::openSplitReceivers(lcm, lcm_url, requests, maps, 16, 1000);
     request_source = std::move(sources.wake);
     map_source = std::move(sources.queued);
   } catch (const std::exception& e) {
@@ -169,7 +169,7 @@ int main(int argc, char** argv) {
       if (answer_waiting) last_waiting_answer = now;
       if (now >= next_heartbeat) next_heartbeat += std::chrono::seconds(1);
     }
-    beft::udpm::waitReadable({request_source->fd()}, 100);
+    beft::transport::waitReadable({request_source->fd()}, 100);
     // The maps first: a request sees the map sent before it.
     if ((map_source && map_source->drain(to_inbox) < 0) || request_source->drain(to_inbox) < 0) {
       if (g_stop) break;  // interrupted by the stop signal

@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
   try {
     beft::record::Recorder recorder(lcm, lcm_url, options);
     beft::log::info("receiving: ", recorder.description());
-    if (batch_ms > 0 && !beft::roomToGather(recorder.receiveBufferBytes())) batch_ms = 0;
+    if (batch_ms > 0 && !beft::transport::roomToGather(recorder.receiveBufferBytes())) batch_ms = 0;
     beft::log::info("recording ", lcm_url, " into ", options.path);
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);

@@ -25,10 +25,10 @@ Recorder::Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options)
   // Listening before the file appears: whoever waits for the file to start
   // publishing (the launcher) loses nothing. Every channel: an empty list of
   // channels to drop.
-  udpm_filter::Spec everything;
-  everything.mode = udpm_filter::Spec::Mode::RejectListed;
-  source_ = openMessageSource(lcm, url, everything, 64, options_.queue_capacity);
-  take_ = [this](const lcm_wire::Message& message) {
+  transport::Selection everything;
+  everything.mode = transport::Selection::Mode::RejectListed;
+  source_ = transport::openReceiver(lcm, url, everything, 64, options_.queue_capacity);
+  take_ = [this](const transport::Message& message) {
     if (has_exclude_ && std::regex_match(message.channel.begin(), message.channel.end(), exclude_)) return;
     order_.add({std::string(message.channel), std::vector<uint8_t>(message.data, message.data + message.size),
                 message.recv_utime});

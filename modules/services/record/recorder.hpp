@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "message_source.hpp"
+#include "transport.hpp"
 #include "timestamp_order.hpp"
 #include <regex>
 #include <string>
@@ -67,8 +67,8 @@ class Recorder {
 
   RecordOptions options_;
   std::unique_ptr<lcm::LogFile> log_;
-  std::unique_ptr<MessageSource> source_;
-  udpm::MessageHandler take_;
+  std::unique_ptr<transport::Receiver> source_;
+  transport::Handler take_;
   TimestampOrder order_;
   std::regex exclude_;
   bool has_exclude_ = false;

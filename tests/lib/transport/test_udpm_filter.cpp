@@ -21,6 +21,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "free_port.hpp"
+#include "control_messages.hpp"
 #include "lcm_url.hpp"
 
 namespace {
@@ -37,24 +38,16 @@ std::string shortDatagram(const std::string& channel, const std::string& encoded
   return datagram + encoded;
 }
 
+// FIRE and RUN_STATUS as the arbiter writes them (control_messages.hpp).
 std::string encodedFire(const std::string& expert) {
-  beft::fire_t fire;
-  fire.utime = 123456789;
-  fire.expert = expert;
-  fire.transition = "t_" + expert;
-  fire.tick = 42;
-  fire.firing_id = 99;
+  const beft::fire_t fire = beft::control::makeFire(expert, "t_" + expert, 42, 123456789, 99);
   std::string bytes(static_cast<std::size_t>(fire.getEncodedSize()), '\0');
   fire.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
   return bytes;
 }
 
 std::string encodedStatus(int8_t state) {
-  beft::run_status_t status;
-  status.utime = 5000000;
-  status.tick = 50;
-  status.state = state;
-  status.message = "tick 50";
+  const beft::run_status_t status = beft::control::makeRunStatus(state, 50, 5000000, "tick 50");
   std::string bytes(static_cast<std::size_t>(status.getEncodedSize()), '\0');
   status.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
   return bytes;
@@ -135,7 +128,7 @@ TEST(UdpmFilter, FragmentsAlwaysPassAndForeignDatagramsNever) {
 
 TEST(UdpmFilter, FireRuleMatchesTheExpertNameInsideTheRealEncoding) {
   Spec spec;
-  spec.rules = {beft::udpm_filter::fireFor("FIRE", "vision"), channelRule("RUN_STATUS")};
+  spec.rules = {beft::control::firesFor("vision"), channelRule("RUN_STATUS")};
   FilteredSocket socket(spec);
   ASSERT_TRUE(socket.attached());
   EXPECT_TRUE(socket.passes(shortDatagram("FIRE", encodedFire("vision"))));
@@ -149,7 +142,7 @@ TEST(UdpmFilter, FireRuleMatchesTheExpertNameInsideTheRealEncoding) {
 TEST(UdpmFilter, RunStatusRuleMatchesTheStateInsideTheRealEncoding) {
   using beft::run_status_t;
   Spec spec;
-  spec.rules = {beft::udpm_filter::runStatusIn("RUN_STATUS", run_status_t::STATE_WAITING, "waiting")};
+  spec.rules = {beft::control::runStatusIn(run_status_t::STATE_WAITING, "waiting")};
   FilteredSocket socket(spec);
   ASSERT_TRUE(socket.attached());
   EXPECT_TRUE(socket.passes(shortDatagram("RUN_STATUS", encodedStatus(run_status_t::STATE_WAITING))));
@@ -176,7 +169,7 @@ TEST(UdpmFilter, AcceptsAgreesWithTheKernelProgram) {
   // accepts() judges whole messages where the program cannot (fragments):
   // both must give the same verdict on every short message.
   Spec accept_spec;
-  accept_spec.rules = {beft::udpm_filter::fireFor("FIRE", "vision"), channelRule("RUN_STATUS"), channelRule("A")};
+  accept_spec.rules = {beft::control::firesFor("vision"), channelRule("RUN_STATUS"), channelRule("A")};
   Spec reject_spec;
   reject_spec.mode = Spec::Mode::RejectListed;
   reject_spec.rules = {channelRule("FIRE"), channelRule("DONE")};

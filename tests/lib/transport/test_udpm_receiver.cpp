@@ -15,8 +15,9 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "free_port.hpp"
+#include "control_messages.hpp"
 #include "lcm_url.hpp"
-#include "message_source.hpp"
+#include "transport.hpp"
 
 namespace {
 
@@ -156,7 +157,7 @@ TEST_F(UdpmReceiverTest, PutsLcmsFragmentsTogetherAndFiltersTheWholeMessage) {
 
 TEST_F(UdpmReceiverTest, TakesOnlyItsOwnFirings) {
   Spec spec;
-  spec.rules = {beft::udpm_filter::fireFor("FIRE", "vision")};
+  spec.rules = {beft::control::firesFor("vision")};
   Receiver receiver(endpoint_, spec);
   lcm::LCM sender(url_);
   for (const std::string expert : {"geometry", "vision", "visual_labels", "vision"})
@@ -220,13 +221,13 @@ TEST_F(UdpmReceiverTest, WaitingTimesOutWhenNothingComes) {
 
 TEST_F(UdpmReceiverTest, TheLcmFallbackDeliversTheSameMessages) {
   Spec spec;
-  spec.rules = {channelRule("KEEP"), beft::udpm_filter::fireFor("FIRE", "dw")};
+  spec.rules = {channelRule("KEEP"), beft::control::firesFor("dw")};
   for (const bool direct : {true, false}) {
     if (!direct) setenv("BEFT_UDPM_RECEIVER", "0", 1);
     std::string why;
-    EXPECT_EQ(beft::directReceiveFor(url_, &why), direct) << why;
+    EXPECT_EQ(beft::transport::directReceiveFor(url_, &why), direct) << why;
     lcm::LCM lcm(url_);
-    auto source = beft::openMessageSource(lcm, url_, spec);
+    auto source = beft::transport::openReceiver(lcm, url_, spec);
     EXPECT_NE(source->description().find(direct ? "own receive socket" : "LCM's receive thread"), std::string::npos)
         << source->description();
     lcm::LCM sender(url_);
@@ -243,8 +244,8 @@ TEST_F(UdpmReceiverTest, TheLcmFallbackDeliversTheSameMessages) {
     unsetenv("BEFT_UDPM_RECEIVER");
   }
   lcm::LCM memq("memq://");
-  EXPECT_FALSE(beft::directReceiveFor("memq://"));
-  auto source = beft::openMessageSource(memq, "memq://", spec);
+  EXPECT_FALSE(beft::transport::directReceiveFor("memq://"));
+  auto source = beft::transport::openReceiver(memq, "memq://", spec);
   publish(memq, "KEEP", "over memq");
   publish(memq, "DROP", "not this");
   const auto got = receiveAtLeast(*source, 1);
@@ -252,7 +253,7 @@ TEST_F(UdpmReceiverTest, TheLcmFallbackDeliversTheSameMessages) {
   EXPECT_EQ(got[0].data, "over memq");
 }
 
-TEST_F(UdpmReceiverTest, SplitSourcesWakeOnOneChannelSetAndQueueTheRest) {
+TEST_F(UdpmReceiverTest, SplitReceiversWakeOnOneChannelSetAndQueueTheRest) {
   Spec wake;
   wake.rules = {channelRule("WAKE")};
   Spec queued;  // everything but DROP, as the blackboard stores
@@ -261,7 +262,7 @@ TEST_F(UdpmReceiverTest, SplitSourcesWakeOnOneChannelSetAndQueueTheRest) {
   for (const bool direct : {true, false}) {
     if (!direct) setenv("BEFT_UDPM_RECEIVER", "0", 1);
     lcm::LCM lcm(url_);
-    beft::SplitSources sources = beft::openSplitSources(lcm, url_, wake, queued);
+    beft::transport::SplitReceivers sources = beft::transport::openSplitReceivers(lcm, url_, wake, queued);
     ASSERT_TRUE(sources.wake);
     EXPECT_EQ(sources.queued != nullptr, direct) << "LCM's thread: one subscription takes both";
     lcm::LCM sender(url_);
@@ -282,14 +283,14 @@ TEST_F(UdpmReceiverTest, SplitSourcesWakeOnOneChannelSetAndQueueTheRest) {
     unsetenv("BEFT_UDPM_RECEIVER");
   }
   lcm::LCM lcm(url_);
-  EXPECT_FALSE(beft::openSplitSources(lcm, url_, wake, Spec{}).queued) << "nothing to queue: no socket";
-  EXPECT_THROW(beft::openSplitSources(lcm, url_, queued, wake), std::invalid_argument);
+  EXPECT_FALSE(beft::transport::openSplitReceivers(lcm, url_, wake, Spec{}).queued) << "nothing to queue: no socket";
+  EXPECT_THROW(beft::transport::openSplitReceivers(lcm, url_, queued, wake), std::invalid_argument);
 }
 
 TEST(RoomToGather, NeedsTwoMebibytesOfKernelBufferOrLcmsOwnQueue) {
-  EXPECT_TRUE(beft::roomToGather(-1));
-  EXPECT_TRUE(beft::roomToGather(8 << 20));
-  EXPECT_FALSE(beft::roomToGather(416 << 10));
+  EXPECT_TRUE(beft::transport::roomToGather(-1));
+  EXPECT_TRUE(beft::transport::roomToGather(8 << 20));
+  EXPECT_FALSE(beft::transport::roomToGather(416 << 10));
 }
 
 TEST_F(UdpmReceiverTest, RefusesWhatItCannotOpenWithTheReason) {

@@ -44,7 +44,7 @@ struct Endpoint {
 // `why` then says which.
 std::optional<Endpoint> parseUrl(const std::string& url, std::string* why = nullptr);
 
-using MessageHandler = std::function<void(const lcm_wire::Message&)>;
+using MessageHandler = transport::Handler;
 
 class Receiver {
  public:

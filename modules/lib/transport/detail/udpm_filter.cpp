@@ -81,30 +81,13 @@ std::vector<sock_filter> compileRule(const std::vector<Pattern>& patterns, uint3
 
 }  // namespace
 
+}  // namespace beft::udpm_filter
+
+namespace beft::transport {
+
 Rule channelRule(const std::string& channel) {
   Rule rule;
   rule.channel = channel;
-  return rule;
-}
-
-Rule fireFor(const std::string& channel, const std::string& expert) {
-  Rule rule;
-  rule.channel = channel;
-  rule.field_offset = 8;  // after utime
-  const uint32_t length = static_cast<uint32_t>(expert.size() + 1);
-  for (int shift = 24; shift >= 0; shift -= 8) rule.field.push_back(static_cast<char>((length >> shift) & 0xff));
-  rule.field += expert;
-  rule.field.push_back('\0');
-  rule.what = "own firings";
-  return rule;
-}
-
-Rule runStatusIn(const std::string& channel, int8_t state, const std::string& what) {
-  Rule rule;
-  rule.channel = channel;
-  rule.field_offset = 16;  // after utime and tick
-  rule.field = std::string(1, static_cast<char>(state));
-  rule.what = what;
   return rule;
 }
 
@@ -114,6 +97,15 @@ bool isPlainChannel(const std::string& pattern) {
     if (std::string_view("\\^$.|?*+()[]{}").find(c) != std::string_view::npos) return false;
   return true;
 }
+
+int udpmPort(const std::string& url) {
+  const auto endpoint = udpm::parseUrl(url);
+  return endpoint ? endpoint->port : -1;
+}
+
+}  // namespace beft::transport
+
+namespace beft::udpm_filter {
 
 std::vector<sock_filter> compile(const Spec& spec) {
   const bool accept_listed = spec.mode == Spec::Mode::AcceptListed;
@@ -156,11 +148,6 @@ bool attach(int fd, const Spec& spec) {
   auto code = compile(spec);
   sock_fprog program{static_cast<unsigned short>(code.size()), code.data()};
   return setsockopt(fd, SOL_SOCKET, SO_ATTACH_FILTER, &program, sizeof(program)) == 0;
-}
-
-int udpmPort(const std::string& url) {
-  const auto endpoint = udpm::parseUrl(url);
-  return endpoint ? endpoint->port : -1;
 }
 
 int findReceiveSocket(int port) {

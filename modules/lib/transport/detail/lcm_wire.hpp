@@ -19,6 +19,8 @@
 #include <utility>
 #include <vector>
 
+#include "transport.hpp"
+
 namespace beft::lcm_wire {
 
 constexpr uint32_t kMagicShort = 0x4c433032;     // "LC02"
@@ -48,12 +50,7 @@ struct Packet {
 Packet parsePacket(const uint8_t* bytes, std::size_t size);
 
 // A complete message: the channel and its encoded bytes.
-struct Message {
-  std::string_view channel;
-  const uint8_t* data = nullptr;
-  std::size_t size = 0;
-  int64_t recv_utime = 0;  // receive time of its last datagram [us since the epoch]
-};
+using Message = transport::Message;
 
 // Puts fragmented messages back together, per sender and sequence number.
 // Fragments may come in any order. A message whose fragments stop coming is

@@ -1,4 +1,4 @@
-#include "message_source.hpp"
+#include "transport.hpp"
 
 #include <cstdlib>
 #include <set>
@@ -6,19 +6,21 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "detail/udpm_filter.hpp"
+#include "detail/udpm_receiver.hpp"
 #include "log.hpp"
 
-namespace beft {
+namespace beft::transport {
 
 namespace {
 
-class DirectSource : public MessageSource {
+class DirectSource : public Receiver {
  public:
-  DirectSource(const udpm::Endpoint& endpoint, const udpm_filter::Spec& spec, std::size_t batch)
+  DirectSource(const udpm::Endpoint& endpoint, const Selection& spec, std::size_t batch)
       : receiver_(endpoint, spec, batch), what_(udpm_filter::describe(spec)) {}
 
   int fd() const override { return receiver_.fd(); }
-  int drain(const udpm::MessageHandler& handler) override { return receiver_.drain(handler); }
+  int drain(const Handler& handler) override { return receiver_.drain(handler); }
   std::string description() const override {
     return "own receive socket (" + std::to_string(receiver_.receiveBufferBytes() / 1024) + " KiB buffer), " +
            (receiver_.countsLosses() ? std::string("every channel, losses counted") : "kernel filter: " + what_);
@@ -33,14 +35,14 @@ class DirectSource : public MessageSource {
 
 // LCM's own receive path: subscriptions to the spec's channels (or to every
 // channel when it lists what to drop), checked against the spec here.
-class LcmSource : public MessageSource {
+class LcmSource : public Receiver {
  public:
-  LcmSource(lcm::LCM& lcm, const std::string& url, udpm_filter::Spec spec, int queue_capacity)
+  LcmSource(lcm::LCM& lcm, const std::string& url, Selection spec, int queue_capacity)
       : lcm_(lcm), spec_(std::move(spec)) {
     std::set<std::string> channels;
-    bool everything = spec_.mode == udpm_filter::Spec::Mode::RejectListed;
+    bool everything = spec_.mode == Selection::Mode::RejectListed;
     for (const auto& rule : spec_.rules) {
-      if (!udpm_filter::isPlainChannel(rule.channel)) everything = true;
+      if (!isPlainChannel(rule.channel)) everything = true;
       channels.insert(rule.channel);
     }
     if (everything) channels = {".*"};
@@ -61,7 +63,7 @@ class LcmSource : public MessageSource {
 
   int fd() const override { return lcm_.getFileno(); }
 
-  int drain(const udpm::MessageHandler& handler) override {
+  int drain(const Handler& handler) override {
     handler_ = &handler;
     handed_ = 0;
     int status = 0;
@@ -75,7 +77,7 @@ class LcmSource : public MessageSource {
 
   static void onMessageOf(const lcm::ReceiveBuffer* buffer, const std::string& channel, LcmSource* self) {
     if (!self->handler_ || !udpm_filter::accepts(self->spec_, channel, buffer->data, buffer->data_size)) return;
-    lcm_wire::Message message;
+    Message message;
     message.channel = channel;
     message.data = static_cast<const uint8_t*>(buffer->data);
     message.size = buffer->data_size;
@@ -86,16 +88,16 @@ class LcmSource : public MessageSource {
 
  private:
   lcm::LCM& lcm_;
-  udpm_filter::Spec spec_;
+  Selection spec_;
   std::vector<lcm::Subscription*> subscriptions_;
-  const udpm::MessageHandler* handler_ = nullptr;
+  const Handler* handler_ = nullptr;
   int handed_ = 0;
   std::string what_;
 };
 
 }  // namespace
 
-int MessageSource::receive(int timeout_ms, const udpm::MessageHandler& handler) {
+int Receiver::receive(int timeout_ms, const Handler& handler) {
   if (!udpm::waitReadable({fd()}, timeout_ms)) return 0;
   return drain(handler);
 }
@@ -108,24 +110,24 @@ bool directReceiveFor(const std::string& url, std::string* why) {
   return udpm::parseUrl(url, why).has_value();
 }
 
-SplitSources openSplitSources(lcm::LCM& lcm, const std::string& url, const udpm_filter::Spec& wake,
-                              const udpm_filter::Spec& queued, std::size_t queued_batch, int lcm_queue_capacity) {
-  using Mode = udpm_filter::Spec::Mode;
-  if (wake.mode != Mode::AcceptListed) throw std::invalid_argument("openSplitSources: wake must list its channels");
+SplitReceivers openSplitReceivers(lcm::LCM& lcm, const std::string& url, const Selection& wake,
+                                  const Selection& queued, std::size_t queued_batch, int lcm_queue_capacity) {
+  using Mode = Selection::Mode;
+  if (wake.mode != Mode::AcceptListed) throw std::invalid_argument("openSplitReceivers: wake must list its channels");
   std::set<std::string> wake_channels;
   for (const auto& rule : wake.rules) wake_channels.insert(rule.channel);
   const bool queues_nothing = queued.mode == Mode::AcceptListed && queued.rules.empty();
-  SplitSources sources;
+  SplitReceivers sources;
   if (directReceiveFor(url)) {
-    udpm_filter::Spec only_queued = queued;
+    Selection only_queued = queued;
     if (queued.mode == Mode::RejectListed)
-      for (const auto& channel : wake_channels) only_queued.rules.push_back(udpm_filter::channelRule(channel));
-    if (!queues_nothing) sources.queued = openMessageSource(lcm, url, only_queued, queued_batch);
-    sources.wake = openMessageSource(lcm, url, wake, 4);
+      for (const auto& channel : wake_channels) only_queued.rules.push_back(channelRule(channel));
+    if (!queues_nothing) sources.queued = openReceiver(lcm, url, only_queued, queued_batch);
+    sources.wake = openReceiver(lcm, url, wake, 4);
     return sources;
   }
   // One spec that takes both.
-  udpm_filter::Spec both = queued;
+  Selection both = queued;
   if (queued.mode == Mode::AcceptListed) {
     both.rules.insert(both.rules.end(), wake.rules.begin(), wake.rules.end());
   } else {
@@ -133,7 +135,7 @@ SplitSources openSplitSources(lcm::LCM& lcm, const std::string& url, const udpm_
     for (const auto& rule : queued.rules)
       if (!wake_channels.count(rule.channel)) both.rules.push_back(rule);
   }
-  sources.wake = openMessageSource(lcm, url, both, queued_batch, lcm_queue_capacity);
+  sources.wake = openReceiver(lcm, url, both, queued_batch, lcm_queue_capacity);
   return sources;
 }
 
@@ -146,11 +148,12 @@ bool roomToGather(int receive_buffer_bytes) {
   return false;
 }
 
-std::unique_ptr<MessageSource> openMessageSource(lcm::LCM& lcm, const std::string& url,
-                                                 const udpm_filter::Spec& spec, std::size_t batch,
-                                                 int lcm_queue_capacity) {
+std::unique_ptr<Receiver> openReceiver(lcm::LCM& lcm, const std::string& url, const Selection& spec,
+                                       std::size_t batch, int lcm_queue_capacity) {
   if (directReceiveFor(url)) return std::make_unique<DirectSource>(*udpm::parseUrl(url), spec, batch);
   return std::make_unique<LcmSource>(lcm, url, spec, lcm_queue_capacity);
 }
 
-}  // namespace beft
+bool waitReadable(std::initializer_list<int> fds, int timeout_ms) { return udpm::waitReadable(fds, timeout_ms); }
+
+}  // namespace beft::transport

@@ -22,41 +22,19 @@
 #include <string_view>
 #include <vector>
 
+#include "transport.hpp"
+
 namespace lcm {
 class LCM;
 }
 
 namespace beft::udpm_filter {
 
-// A datagram matches when its channel is `channel` and, when `field` is not
-// empty, the encoded message (after its 8-byte fingerprint) holds exactly the
-// bytes `field` at `field_offset`.
-struct Rule {
-  std::string channel;
-  std::size_t field_offset = 0;  // [bytes] from the first byte after the fingerprint
-  std::string field;             // encoded bytes that must be there
-  std::string what;              // what the field selects, for the log ("own firings")
-};
-
-struct Spec {
-  enum class Mode { AcceptListed, RejectListed };
-  Mode mode = Mode::AcceptListed;
-  std::vector<Rule> rules;
-};
-
-// Every message on one channel.
-Rule channelRule(const std::string& channel);
-
-// FIRE messages for one expert only: fire_t encodes utime (8 bytes) and then
-// the expert's name as an LCM string (big-endian length with the NUL, bytes, NUL).
-Rule fireFor(const std::string& channel, const std::string& expert);
-
-// RUN_STATUS messages in one state only: run_status_t encodes utime and tick
-// (8 bytes each) and then its state byte. `what` names it for the log.
-Rule runStatusIn(const std::string& channel, int8_t state, const std::string& what);
-
-// True when an LCM subscription pattern is a plain channel name (no regex).
-bool isPlainChannel(const std::string& pattern);
+using Rule = transport::Rule;
+using Spec = transport::Selection;
+using transport::channelRule;
+using transport::isPlainChannel;
+using transport::udpmPort;
 
 // The BPF program for a spec. Throws std::invalid_argument for a rule too long
 // to jump over (a channel or field of hundreds of bytes).
@@ -82,8 +60,5 @@ bool installAndReport(lcm::LCM& lcm, const std::string& url, const Spec& spec);
 
 // Finds the UDP socket bound to `port` in this process (-1 if none or several).
 int findReceiveSocket(int port);
-
-// The port of a udpm:// URL, or -1 for any other provider.
-int udpmPort(const std::string& url);
 
 }  // namespace beft::udpm_filter
