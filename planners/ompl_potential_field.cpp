@@ -21,16 +21,15 @@ PotentialFieldOmplPlanner::PotentialFieldOmplPlanner(const ob::SpaceInformationP
   specs_.approximateSolutions = false;
   specs_.optimizingPaths = false;
   specs_.multithreaded = false;
-  // Recorded by OMPL's benchmark log beside the results.
-  PotentialFieldParams& p = planner_.params();
-  params_.declareParam<int>("particles", [&p](int v) { p.particles = v; }, [&p] { return p.particles; });
-  params_.declareParam<double>("sigma", [this, &p](double v) { p.sigma = v; map_ready_ = false; },
-                               [&p] { return p.sigma; });
-  params_.declareParam<double>("obstacle_weight", [&p](double v) { p.obstacle_weight = v; },
-                               [&p] { return p.obstacle_weight; });
-  params_.declareParam<double>("noise", [&p](double v) { p.noise = v; }, [&p] { return p.noise; });
-  params_.declareParam<double>("noise_decay", [&p](double v) { p.noise_decay = v; }, [&p] { return p.noise_decay; });
-  params_.declareParam<double>("step", [&p](double v) { p.step = v; }, [&p] { return p.step; });
+  // Every parameter, as declared, recorded by OMPL's benchmark log beside the
+  // results and settable through OMPL's ParamSet (a new sigma re-blurs the map).
+  planner_.params().declare(declared_);
+  for (const auto& info : declared_.list()) {
+    const std::string name = info.name;
+    params_.declareParam<std::string>(
+        name, [this, name](std::string value) { declared_.set(name, value); map_ready_ = false; },
+        [this, name] { return declared_.current(name); });
+  }
 }
 
 void PotentialFieldOmplPlanner::setup() {

@@ -27,6 +27,7 @@ class PotentialFieldOmplPlanner : public ompl::base::Planner {
  private:
   std::shared_ptr<const PlanningMap> map_;
   PotentialFieldPlanner planner_;
+  DeclaredParameters declared_;  // the planner's parameters, for OMPL's ParamSet
   bool map_ready_ = false;
   uint64_t next_seed_;
   Path last_path_;

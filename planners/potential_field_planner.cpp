@@ -37,28 +37,6 @@ class ParticleRandom {
   uint64_t state_;
 };
 
-double parseNumber(const std::string& name, const std::string& value) {
-  size_t used = 0;
-  double number = 0;
-  try {
-    number = std::stod(value, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != value.size() || value.empty() || !std::isfinite(number)) {
-    throw std::invalid_argument("parameter " + name + ": '" + value + "' is not a number");
-  }
-  return number;
-}
-
-void requirePositive(const std::string& name, double value) {
-  if (!(value > 0)) throw std::invalid_argument("parameter " + name + " must be > 0");
-}
-
-void requireNonNegative(const std::string& name, double value) {
-  if (!(value >= 0)) throw std::invalid_argument("parameter " + name + " must be >= 0");
-}
-
 Path resample(const Path& path, double spacing) {
   if (path.size() < 2) return path;
   Path out{path.front()};
@@ -85,62 +63,43 @@ bool moveAllowed(const GridMap& grid, int x, int y, int dx, int dy) {
 
 }  // namespace
 
+void PotentialFieldParams::declare(DeclaredParameters& p) {
+  constexpr double kNoLimit = DeclaredParameters::kNoLimit;
+  p.declareChoice("target", target,
+                  {{"euclidean", TargetPotential::Euclidean}, {"paper", TargetPotential::Euclidean},
+                   {"geodesic", TargetPotential::Geodesic}},
+                  "target potential M_D: euclidean (the paper's) or geodesic (around obstacles, no local minima)");
+  p.declare("particles", particles, 1, 100000, "particles emitted, N_P");
+  p.declare("sigma", sigma, 0, kNoLimit, "Gaussian blur of M_O giving M_P [cells]", true);
+  p.declare("target_weight", target_weight, 0, kNoLimit, "weight of unit(M_T)", true);
+  p.declare("obstacle_weight", obstacle_weight, 0, kNoLimit, "weight of the scaled M_F");
+  p.declare("noise", noise, 0, kNoLimit, "initial random component (RMS), relative to target_weight");
+  p.declare("noise_decay", noise_decay, 0, kNoLimit,
+            "the random component falls by 1/e in noise_decay / step steps [cells]", true);
+  p.declare("noise_correlation", noise_correlation, 1, kNoLimit, "correlation time of the random component [steps]");
+  p.declare("step", step, 0, 1, "particle step [cells]", true);
+  p.declare("goal_tolerance", goal_tolerance, 0, kNoLimit,
+            "distance at which a particle heads straight for the goal [cells]", true);
+  p.declare("straightness_weight", straightness_weight, 0, kNoLimit, "cost of turning in the winner choice [cells/rad]");
+  p.declare("stall_steps", stall_steps, 2, 1000000,
+            "steps without headway that stop (or, geodesic, redirect) a particle");
+  p.declare("max_travel", max_travel, 0, kNoLimit, "particle travel limit, in multiples of (width + height)", true);
+}
+
 void PotentialFieldParams::set(const std::string& name, const std::string& value) {
-  if (name == "target") {
-    if (value == "euclidean" || value == "paper") target = TargetPotential::Euclidean;
-    else if (value == "geodesic") target = TargetPotential::Geodesic;
-    else throw std::invalid_argument("parameter target: '" + value + "' is not euclidean or geodesic");
-    return;
-  }
-  const double number = parseNumber(name, value);
-  if (name == "particles") {
-    if (number < 1 || number != std::floor(number) || number > 100000) {
-      throw std::invalid_argument("parameter particles must be a whole number in [1, 100000]");
-    }
-    particles = static_cast<int>(number);
-  } else if (name == "sigma") { requirePositive(name, number); sigma = number; }
-  else if (name == "target_weight") { requirePositive(name, number); target_weight = number; }
-  else if (name == "obstacle_weight") { requireNonNegative(name, number); obstacle_weight = number; }
-  else if (name == "noise") { requireNonNegative(name, number); noise = number; }
-  else if (name == "noise_decay") { requirePositive(name, number); noise_decay = number; }
-  else if (name == "noise_correlation") {
-    if (!(number >= 1)) throw std::invalid_argument("parameter noise_correlation must be >= 1 step");
-    noise_correlation = number;
-  }
-  else if (name == "step") {
-    if (!(number > 0 && number <= 1)) throw std::invalid_argument("parameter step must be in (0, 1] cells");
-    step = number;
-  }
-  else if (name == "goal_tolerance") { requirePositive(name, number); goal_tolerance = number; }
-  else if (name == "straightness_weight") { requireNonNegative(name, number); straightness_weight = number; }
-  else if (name == "stall_steps") {
-    if (number < 2 || number != std::floor(number)) throw std::invalid_argument("parameter stall_steps must be a whole number >= 2");
-    stall_steps = static_cast<int>(number);
-  }
-  else if (name == "max_travel") { requirePositive(name, number); max_travel = number; }
-  else throw std::invalid_argument("unknown potential-field parameter '" + name + "'");
+  DeclaredParameters declared;
+  declare(declared);
+  declared.set(name, value);
 }
 
 std::vector<std::string> PotentialFieldParams::names() {
-  const PotentialFieldParams d;
-  const auto text = [](double value) {
-    std::ostringstream out;
-    out << value;
-    return out.str();
-  };
-  return {"target=euclidean|geodesic",
-          "particles=" + text(d.particles),
-          "sigma=" + text(d.sigma),
-          "target_weight=" + text(d.target_weight),
-          "obstacle_weight=" + text(d.obstacle_weight),
-          "noise=" + text(d.noise),
-          "noise_decay=" + text(d.noise_decay),
-          "noise_correlation=" + text(d.noise_correlation),
-          "step=" + text(d.step),
-          "goal_tolerance=" + text(d.goal_tolerance),
-          "straightness_weight=" + text(d.straightness_weight),
-          "stall_steps=" + text(d.stall_steps),
-          "max_travel=" + text(d.max_travel)};
+  PotentialFieldParams defaults;
+  DeclaredParameters declared;
+  defaults.declare(declared);
+  std::vector<std::string> names;
+  for (const auto& info : declared.list())
+    names.push_back(info.name + "=" + (info.name == "target" ? std::string("euclidean|geodesic") : info.default_value));
+  return names;
 }
 
 double particleCost(const Path& trace, double straightness_weight) {

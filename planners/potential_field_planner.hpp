@@ -32,6 +32,7 @@
 //    reaches a reachable goal.
 #pragma once
 
+#include "declared_parameters.hpp"
 #include "octile_search.hpp"
 #include "planner.hpp"
 #include "potential_fields.hpp"
@@ -58,10 +59,13 @@ struct PotentialFieldParams {
   int stall_steps = 40;              // steps without headway that stop (or, geodesic, redirect) a particle
   double max_travel = 4.0;           // particle travel limit, in multiples of (width + height)
 
-  // Sets one parameter by name (the member names above; target = euclidean
-  // or geodesic). Throws std::invalid_argument naming the parameter.
+  // Declares every member above by its name, with its range and meaning
+  // (the defaults are the initialisers above).
+  void declare(DeclaredParameters& parameters);
+  // Sets one parameter by name through those declarations. Throws
+  // std::invalid_argument naming the parameter and its range.
   void set(const std::string& name, const std::string& value);
-  // "name=value" pairs for --help.
+  // "name=default" pairs for --help.
   static std::vector<std::string> names();
 };
 

@@ -64,6 +64,22 @@ TEST(OmplAdapter, SimpleSetupSolvesWithThePotentialFieldPlanner) {
   EXPECT_NEAR(points.back().x, 56.5, 1e-9);
 }
 
+TEST(OmplAdapter, EveryDeclaredParameterIsInOmplsParamSetWithItsRange) {
+  Fixture f = uTrapSetup();
+  auto planner = std::make_shared<PotentialFieldOmplPlanner>(f.si, f.map, PotentialFieldParams{});
+  PotentialFieldParams defaults;
+  DeclaredParameters declared;
+  defaults.declare(declared);
+  for (const auto& info : declared.list()) {
+    ASSERT_TRUE(planner->params().hasParam(info.name)) << info.name;
+    EXPECT_EQ(planner->params().getParam(info.name)->getValue(), info.default_value) << info.name;
+  }
+  EXPECT_TRUE(planner->params().setParam("straightness_weight", "0.5"));
+  EXPECT_EQ(planner->params().getParam("straightness_weight")->getValue(), "0.5");
+  EXPECT_FALSE(planner->params().setParam("step", "3")) << "outside (0, 1]";
+  EXPECT_EQ(planner->params().getParam("step")->getValue(), "1");
+}
+
 TEST(OmplAdapter, AMotionIntoAWallIsInvalidAndStopsBeforeIt) {
   Fixture f = uTrapSetup();
   ob::ScopedState<> a(f.si), b(f.si), last(f.si);
