@@ -14,6 +14,7 @@
 
 #include "arbiter_core.hpp"
 #include "firing_log.hpp"
+#include "service.hpp"
 #include "transport.hpp"
 
 namespace beft::arbiter {
@@ -72,10 +73,8 @@ class ArbiterEventQueue {
 };
 
 // Set by signal handlers, read by the loop.
-struct StopSignals {
-  std::atomic<int> interrupts{0};      // SIGINT: first ends the run after the tick, second aborts
-  std::atomic<bool> terminated{false}; // SIGTERM: end now
-};
+// SIGINT: the first ends the run after the tick, a second aborts; SIGTERM: end now.
+using StopSignals = service::StopSignals;
 
 // Runs the core until it is done (final status sent). While a firing is in
 // flight, each wait polls for up to `spin_us` microseconds before it sleeps.

@@ -1,0 +1,96 @@
+// One way to write a process that serves rather than fires (the planner, the
+// blackboard, the recorder, the arbiter): a class that says what it is, what
+// it reads and writes and which options it takes, and a serve() loop. The
+// runner around it does what every such process needs: the command line with
+// --help, --interface, --lcm-url and --name, heap retention, logging, LCM,
+// and SIGINT/SIGTERM.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include <beft/heartbeat_t.hpp>
+
+#include "channels.hpp"
+
+namespace CLI {
+class App;
+}
+namespace lcm {
+class LCM;
+}
+
+namespace beft::service {
+
+// A channel a service reads or writes, with what it does with it.
+struct Port {
+  std::string channel;
+  std::string type;  // e.g. "beft.done_t"
+  std::string note;  // e.g. "an expert finished a firing"
+};
+template <typename Message>
+Port port(channels::Channel<Message> channel, std::string note = "") {
+  return {channel.name, channel.typeName(), std::move(note)};
+}
+
+// What stops a service: SIGINT (counted: the arbiter ends the run after the
+// tick on the first, at once on the second) and SIGTERM.
+struct StopSignals {
+  std::atomic<int> interrupts{0};
+  std::atomic<bool> terminated{false};
+  bool any() const { return interrupts.load() > 0 || terminated.load(); }
+};
+
+struct Context {
+  lcm::LCM& lcm;
+  std::string lcm_url;
+  std::string process_name;
+  StopSignals& stop;
+};
+
+class Service {
+ public:
+  virtual ~Service() = default;
+  virtual std::string name() const = 0;         // default process name, e.g. "planner"
+  virtual std::string description() const = 0;  // the paragraph of --help
+  virtual std::vector<Port> reads() const = 0;
+  virtual std::vector<Port> writes() const = 0;
+  // Its own command-line options.
+  virtual void addOptions(CLI::App& app) { (void)app; }
+  // After parsing, before LCM: check the options, build the logic. Throw
+  // std::invalid_argument (or another std::exception) for bad input: exit 2.
+  virtual void onStartUp() {}
+  // Serves until context.stop says so or the work is done; the exit code.
+  virtual int serve(Context& context) = 0;
+};
+
+// The whole main() of a service process:
+//   int main(int argc, char** argv) { Planner p; return beft::service::runServiceMain(argc, argv, p); }
+int runServiceMain(int argc, char** argv, Service& service);
+
+// What --interface prints.
+std::string interfaceText(const Service& service, const std::string& process_name);
+
+// Heartbeats of a service the run waits for (the planner): one every period,
+// and one at once (at most every 50 ms) when an arbiter says it waits, as
+// the experts answer, so a run never waits a period for it.
+class HeartbeatSender {
+ public:
+  HeartbeatSender(lcm::LCM& lcm, const std::string& process_name, double period_s = 1.0);
+  // Call on every turn of the service's loop.
+  void update(bool arbiter_waiting);
+  int sent() const { return sent_; }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  lcm::LCM& lcm_;
+  beft::heartbeat_t heartbeat_;
+  Clock::duration period_;
+  Clock::time_point next_;
+  Clock::time_point last_waiting_answer_;
+  int sent_ = 0;
+};
+
+}  // namespace beft::service

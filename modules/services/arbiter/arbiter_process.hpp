@@ -1,0 +1,33 @@
+// beft-arbiter as a service: loads a PNML net and fires the experts it
+// names, in lockstep ticks, until the run ends.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "arbiter_core.hpp"
+#include "service.hpp"
+
+namespace beft::arbiter {
+
+class ArbiterProcess : public service::Service {
+ public:
+  std::string name() const override { return "arbiter"; }
+  std::string description() const override;
+  std::vector<service::Port> reads() const override;
+  std::vector<service::Port> writes() const override;
+  void addOptions(CLI::App& app) override;
+  // Reads the net (std::invalid_argument with every problem, FILE:LINE).
+  void onStartUp() override;
+  int serve(service::Context& context) override;
+
+ private:
+  std::string net_path_;
+  std::string firing_log_path_;
+  ArbiterConfig config_;
+  bool quiet_ = false;
+  int spin_us_ = 1000;
+  Net net_;
+};
+
+}  // namespace beft::arbiter

@@ -1,0 +1,166 @@
+#include "planner_process.hpp"
+
+#include <chrono>
+
+#include <CLI/CLI.hpp>
+#include <beft/obstacle_map_t.hpp>
+#include <beft/plan_result_t.hpp>
+#include <beft/run_status_t.hpp>
+#include <lcm/lcm-cpp.hpp>
+
+#include "channels.hpp"
+#include "control_messages.hpp"
+#include "log.hpp"
+#include "ompl_planner.hpp"
+#include "planner_factory.hpp"
+
+namespace beft::planner_service {
+
+namespace {
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
+  return out;
+}
+
+int64_t wallMicros() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+}  // namespace
+
+std::string PlannerProcess::description() const {
+  return "The planner service: plans on the robot's current obstacle map (OBSTACLE_MAP: what the camera has "
+         "seen so far; unknown cells count as free) and answers each PLAN_REQUEST (start, goal, planner, time "
+         "budget; world metres) once on PLAN_RESULT with sparse waypoints, each with its heading of travel and "
+         "the goal heading at the end. Obstacles are inflated by the robot radius.";
+}
+
+std::vector<service::Port> PlannerProcess::reads() const {
+  return {service::port(channels::kObstacleMap, "the newest is planned on"),
+          service::port(channels::kPlanRequest, "each answered once"),
+          service::port(channels::kRunStatus, "an arbiter waiting for heartbeats is answered at once")};
+}
+
+std::vector<service::Port> PlannerProcess::writes() const {
+  return {service::port(channels::kPlanResult), service::port(channels::kHeartbeat, "every second")};
+}
+
+void PlannerProcess::addOptions(CLI::App& app) {
+  namespace bp = beft::planners;
+  app.add_option("--planner", config_.default_planner, "planner for requests that name none: " + joined(bp::plannerNames()))
+      ->capture_default_str();
+  app.add_option("--robot-radius", config_.robot_radius, "obstacle inflation [m]")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--default-budget", config_.default_budget, "time budget of requests without one [s]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--goal-snap", config_.goal_snap, "how far a blocked goal may move to a free cell [m]")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--seed", config_.seed, "seed of randomised planners (plus the request id)")->capture_default_str();
+  app.add_option("--param", pf_params_,
+                 "potential-field parameter name=value, repeatable: " + joined(bp::PotentialFieldParams::names()));
+}
+
+void PlannerProcess::onStartUp() {
+  for (const auto& p : pf_params_) config_.pf_params.push_back(planners::splitParameter(p));
+  planners::seedOmpl(config_.seed);
+  planner_ = std::make_unique<PlannerService>(config_);
+}
+
+void PlannerProcess::onMessage(const transport::Message& message) {
+  const int size = static_cast<int>(message.size);
+  if (message.channel == channels::kObstacleMap) {
+    latest_map_.assign(message.data, message.data + message.size);
+    has_map_ = true;
+  } else if (message.channel == channels::kPlanRequest) {
+    beft::plan_request_t request;
+    if (request.decode(message.data, 0, size) == size) requests_.push_back(std::move(request));
+    else log::warn("dropped a ", size, "-byte PLAN_REQUEST that does not decode");
+  } else if (message.channel == channels::kRunStatus) {
+    beft::run_status_t status;
+    if (status.decode(message.data, 0, size) == size && status.state == beft::run_status_t::STATE_WAITING)
+      arbiter_waiting_ = true;
+  }
+}
+
+// Decoded only when a request needs it: the map arrives every tick, requests rarely.
+void PlannerProcess::takeNewestMap() {
+  if (!has_map_ || requests_.empty()) return;
+  try {
+    beft::obstacle_map_t map;
+    const int size = static_cast<int>(latest_map_.size());
+    if (map.decode(latest_map_.data(), 0, size) != size) throw std::invalid_argument("not an obstacle_map_t");
+    planner_->setObstacleMap(map);
+  } catch (const std::exception& e) {
+    log::warn("ignoring a malformed obstacle map: ", e.what());
+  }
+  has_map_ = false;
+}
+
+void PlannerProcess::answerRequests(lcm::LCM& lcm) {
+  while (!requests_.empty()) {
+    const beft::plan_request_t request = requests_.front();
+    requests_.pop_front();
+    try {
+      const auto result = planner_->handle(request, wallMicros());
+      if (!result) {
+        log::debug("request ", request.request_id, " was answered before; ignored");
+        continue;
+      }
+      lcm.publish(channels::kPlanResult, &*result);
+      ++answered_;
+      if (result->success)
+        log::info("request ", request.request_id, " (", result->planner, "): ", result->num_waypoints,
+                  " waypoints, ", result->length, " m, ", 1000 * result->planning_time, " ms",
+                  result->message.empty() ? "" : " - " + result->message);
+      else
+        log::warn("request ", request.request_id, " (", result->planner, ") failed: ", result->message);
+    } catch (const std::exception& e) {
+      log::error("request ", request.request_id, ": ", e.what());
+    }
+  }
+}
+
+int PlannerProcess::serve(service::Context& context) {
+  // On udpm the maps (one a tick) queue on a socket nothing waits on and are
+  // read when a request comes; requests wake the process.
+  transport::Selection maps, requests;
+  maps.rules = {transport::channelRule(channels::kObstacleMap)};
+  requests.rules = {transport::channelRule(channels::kPlanRequest),
+                    control::runStatusIn(beft::run_status_t::STATE_WAITING, "an arbiter waiting for heartbeats")};
+  transport::SplitReceivers sources;
+  try {
+    sources = transport::openSplitReceivers(context.lcm, context.lcm_url, requests, maps, 16, 1000);
+  } catch (const std::exception& e) {
+    log::error("cannot receive on ", context.lcm_url, ": ", e.what());
+    return 1;
+  }
+  if (sources.queued) log::info("maps: ", sources.queued->description());
+  log::info("requests: ", sources.wake->description());
+  log::info("planning with ", config_.default_planner, " (robot radius ", config_.robot_radius, " m) on ",
+            context.lcm_url);
+  const transport::Handler to_inbox = [this](const transport::Message& m) { onMessage(m); };
+  service::HeartbeatSender heartbeats(context.lcm, context.process_name);
+  while (!context.stop.any()) {
+    heartbeats.update(arbiter_waiting_);
+    arbiter_waiting_ = false;
+    transport::waitReadable({sources.wake->fd()}, 100);
+    // The maps first: a request sees the map sent before it.
+    if ((sources.queued && sources.queued->drain(to_inbox) < 0) || sources.wake->drain(to_inbox) < 0) {
+      if (context.stop.any()) break;  // interrupted by the stop signal
+      log::error("LCM receive failed");
+      return 1;
+    }
+    takeNewestMap();
+    answerRequests(context.lcm);
+  }
+  log::info("stopping after ", answered_, " answers");
+  return 0;
+}
+
+}  // namespace beft::planner_service
