@@ -1,0 +1,32 @@
+// beft-record as a service: writes every message heard into an LCM log file
+// (lcm-logplayer plays it), and on SIGINT or SIGTERM what is still arriving.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "recorder.hpp"
+#include "service.hpp"
+
+namespace beft::record {
+
+class RecordProcess : public service::Service {
+ public:
+  std::string name() const override { return "record"; }
+  std::string description() const override;
+  std::vector<service::Port> reads() const override;
+  std::vector<service::Port> writes() const override { return {}; }
+  void addOptions(CLI::App& app) override;
+  void onStartUp() override;
+  int serve(service::Context& context) override;
+
+ private:
+  void recordUntilStopped(Recorder& recorder, const service::StopSignals& stop);
+  void reportEnd(const Recorder& recorder) const;
+
+  RecordOptions options_;
+  bool quiet_ = false;
+  int batch_ms_ = 5;
+};
+
+}  // namespace beft::record
