@@ -159,36 +159,45 @@ void Explorer::finishStrayComposites(const Observation& o, Decision& d) {
 
 void Explorer::followJob(const Observation& o, Decision& d) {
   Job& job = *job_;
-  const std::string composite_kind = (job.kind == JobKind::Verify || job.kind == JobKind::Inspect) ? kVerifyKind : kExploreKind;
-
-  if (job.composite_id == 0) {  // waiting to learn the id the stack gave our composite
-    for (const auto& entry : o.stack) {
-      if (entry.origin == parameters_.origin && entry.parent == 0 && entry.kind == composite_kind &&
-          entry.object_id == job.object_id && !contains(known_task_ids_, entry.id)) {
-        job.composite_id = entry.id;
-        job.sub_tasks_pushed_t = o.t;
-        known_task_ids_.push_back(entry.id);
-        for (auto sub : job.sub_tasks) {
-          sub.parent = entry.id;
-          d.requests.push_back(sub);
-        }
-        return;
-      }
-    }
-    if (o.t - job.pushed_t > parameters_.confirm_timeout_s) {
-      if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect)
-        recordFailedAttempt(job.object_id, {job.x, job.y}, "its task never showed on the stack", d);
-      endJob(o, d, false, "the task never showed on the stack", false);
-    }
-    return;
-  }
-
+  if (job.composite_id == 0) return awaitCompositeId(o, d);  // waiting to learn the id the stack gave our composite
   const bool on_stack = std::any_of(o.stack.begin(), o.stack.end(),
                                     [&](const StackEntry& e) { return e.id == job.composite_id; });
   int sub_tasks = 0;
   for (const auto& entry : o.stack)
     if (entry.parent == job.composite_id) ++sub_tasks;
+  if (endIfSettledOrGone(o, d, on_stack)) return;
+  if (endIfInterrupted(o, d)) return;
+  if (endIfLookedOrLate(o, d, sub_tasks)) return;
+  revalidate(o, d);
+}
 
+void Explorer::awaitCompositeId(const Observation& o, Decision& d) {
+  Job& job = *job_;
+  const std::string composite_kind = (job.kind == JobKind::Verify || job.kind == JobKind::Inspect) ? kVerifyKind : kExploreKind;
+  for (const auto& entry : o.stack) {
+    if (entry.origin == parameters_.origin && entry.parent == 0 && entry.kind == composite_kind &&
+        entry.object_id == job.object_id && !contains(known_task_ids_, entry.id)) {
+      job.composite_id = entry.id;
+      job.sub_tasks_pushed_t = o.t;
+      known_task_ids_.push_back(entry.id);
+      for (auto sub : job.sub_tasks) {
+        sub.parent = entry.id;
+        d.requests.push_back(sub);
+      }
+      return;
+    }
+  }
+  if (o.t - job.pushed_t > parameters_.confirm_timeout_s) {
+    if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect)
+      recordFailedAttempt(job.object_id, {job.x, job.y}, "its task never showed on the stack", d);
+    endJob(o, d, false, "the task never showed on the stack", false);
+  }
+}
+
+// A verify or inspect job ends when its hypothesis is settled; any job ends
+// when the stack ended its task. True if the job ended.
+bool Explorer::endIfSettledOrGone(const Observation& o, Decision& d, bool on_stack) {
+  Job& job = *job_;
   if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect) {
     const HypothesisView* h = findHypothesis(o, job.object_id);
     if (h != nullptr) {
@@ -196,42 +205,50 @@ void Explorer::followJob(const Observation& o, Decision& d) {
       if (settled) {
         const std::string what = h->verified ? "verified" : h->falsified ? "falsified" : h->seen ? "seen" : "heard";
         endJob(o, d, true, job.object_id + " " + what, on_stack);
-        return;
+        return true;
       }
     }
     if (!on_stack) {  // the stack ended it: a sub-task failed, or it was removed
       recordFailedAttempt(job.object_id, {job.x, job.y}, "the task ended before it was settled", d);
       endJob(o, d, false, "the task ended on the stack before " + job.object_id + " was settled", false);
-      return;
+      return true;
     }
   } else if (!on_stack) {
     if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
     endJob(o, d, false, "the task ended on the stack", false);
-    return;
+    return true;
   }
+  return false;
+}
 
-  if (job.kind == JobKind::Explore) {
-    for (const auto& h : o.hypotheses) {
-      const auto it = targets_.find(h.object_id);
-      // Only a hypothesis not known to lack a viewpoint: those wait for this job to end.
-      const bool available = it == targets_.end() || (!it->second.given_up && !it->second.no_viewpoint);
-      if (wantsVerify(h) && available) {
-        endJob(o, d, true, "interrupted: " + h.object_id + " to verify", true);
-        return;
-      }
+// Exploring gives way to a hypothesis to verify. True if the job ended.
+bool Explorer::endIfInterrupted(const Observation& o, Decision& d) {
+  if (job_->kind != JobKind::Explore) return false;
+  for (const auto& h : o.hypotheses) {
+    const auto it = targets_.find(h.object_id);
+    // Only a hypothesis not known to lack a viewpoint: those wait for this job to end.
+    const bool available = it == targets_.end() || (!it->second.given_up && !it->second.no_viewpoint);
+    if (wantsVerify(h) && available) {
+      endJob(o, d, true, "interrupted: " + h.object_id + " to verify", true);
+      return true;
     }
   }
+  return false;
+}
 
-  // The stack seen now has applied the sub-tasks pushed at an earlier step:
-  // none left means the robot got there and looked.
+// The stack seen now has applied the sub-tasks pushed at an earlier step:
+// none left means the robot got there and looked. Past its deadline a job
+// fails. True if the job ended (or waits out its look).
+bool Explorer::endIfLookedOrLate(const Observation& o, Decision& d, int sub_tasks) {
+  Job& job = *job_;
   if (sub_tasks == 0 && o.t > job.sub_tasks_pushed_t) {
     if (job.done_looking_t < 0) job.done_looking_t = o.t;
     switch (job.kind) {
-      case JobKind::LookAround: endJob(o, d, true, "looked around", true); return;
+      case JobKind::LookAround: endJob(o, d, true, "looked around", true); return true;
       case JobKind::Explore:
         memory_.addVisited({job.x, job.y});
         endJob(o, d, true, "frontier at " + at(job.x, job.y) + " reached", true);
-        return;
+        return true;
       case JobKind::Verify:
       case JobKind::Inspect:
         if (o.t - job.done_looking_t >= parameters_.look_dwell_s) {
@@ -239,28 +256,29 @@ void Explorer::followJob(const Observation& o, Decision& d) {
           recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
           endJob(o, d, false, why, true);
         }
-        return;
+        return true;
     }
   }
-
   if (o.t > job.deadline_t) {
     if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect)
       recordFailedAttempt(job.object_id, {job.x, job.y}, "timed out", d);
     if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
     endJob(o, d, false, "timed out", true);
-    return;
+    return true;
   }
+  return false;
+}
 
-  if (o.t - job.last_check_t >= parameters_.revalidate_period_s) {
-    job.last_check_t = o.t;
-    std::string why;
-    if (!jobStillValid(o, why)) {
-      if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect)
-        recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
-      if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
-      endJob(o, d, job.kind == JobKind::Explore, why, true);
-    }
-  }
+void Explorer::revalidate(const Observation& o, Decision& d) {
+  Job& job = *job_;
+  if (o.t - job.last_check_t < parameters_.revalidate_period_s) return;
+  job.last_check_t = o.t;
+  std::string why;
+  if (jobStillValid(o, why)) return;
+  if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect)
+    recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
+  if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
+  endJob(o, d, job.kind == JobKind::Explore, why, true);
 }
 
 bool Explorer::jobStillValid(const Observation& o, std::string& why) {

@@ -163,6 +163,11 @@ class Explorer {
   const HypothesisView* findHypothesis(const Observation& o, const std::string& id) const;
 
   void followJob(const Observation& o, Decision& d);
+  void awaitCompositeId(const Observation& o, Decision& d);
+  bool endIfSettledOrGone(const Observation& o, Decision& d, bool on_stack);
+  bool endIfInterrupted(const Observation& o, Decision& d);
+  bool endIfLookedOrLate(const Observation& o, Decision& d, int sub_tasks);
+  void revalidate(const Observation& o, Decision& d);
   void endJob(const Observation& o, Decision& d, bool success, const std::string& reason, bool finish_on_stack);
   void recordFailedAttempt(const std::string& object_id, const Point& viewpoint, const std::string& why, Decision& d);
   void finishStrayComposites(const Observation& o, Decision& d);

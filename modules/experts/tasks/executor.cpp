@@ -77,10 +77,7 @@ bool Executor::stalled(Run& run, double error, double min_gain, int64_t utime) c
   return utime - run.progress_utime >= micros(parameters_.stall_s);
 }
 
-Executor::TickOutput Executor::tick(TaskStack& stack, int64_t utime) {
-  TickOutput out;
-  out.command = hold(utime);
-
+void Executor::forgetGoneTasks(const TaskStack& stack) {
   // Forget the tasks that left the stack, and an answer nobody waits for.
   for (auto it = runs_.begin(); it != runs_.end();)
     it = stack.find(it->first) == nullptr ? runs_.erase(it) : std::next(it);
@@ -90,6 +87,58 @@ Executor::TickOutput Executor::tick(TaskStack& stack, int64_t utime) {
     awaited_request_ = 0;
     plan_result_.reset();
   }
+}
+
+// Started, or resumed after an interruption: start the watches afresh from
+// where the robot is now.
+void Executor::startOrResume(const Task& task, Run& run, bool is_new, int64_t utime, TickOutput& out) {
+  if (!is_new && task.kind == kinds::kGoto && !run.path.empty() && !run.need_plan &&
+      std::hypot(robot_->x - run.hold_x, robot_->y - run.hold_y) > parameters_.waypoint_tolerance_m)
+    run.need_plan = true;  // moved while suspended: the old path may not start here
+  run.started_utime = utime;
+  run.hold_x = robot_->x;
+  run.hold_y = robot_->y;
+  run.best_error = 1e300;
+  run.progress_utime = utime;
+  run.aligned_since = -1;
+  run.turning_platform = false;
+  run.idle_since = -1;
+  if (is_new) run.collisions_seen = robot_->collisions;
+  out.log.push_back(std::string(is_new ? "start " : "resume ") + std::to_string(task.id) + " " + describe(task) +
+                    " (priority " + std::to_string(task.priority) + ", from " +
+                    (task.origin.empty() ? "?" : task.origin) + ")");
+}
+
+Executor::Finish Executor::runTask(const Task& task, Run& run, int64_t utime, TickOutput& out) {
+  if (task.kind == kinds::kTurnHead) return runTurnHead(task, run, utime, out);
+  if (task.kind == kinds::kTurn) return runTurn(task, run, utime, out);
+  if (task.kind == kinds::kLookAt) return runLookAt(task, run, utime, out);
+  if (task.kind == kinds::kWait) return runWait(task, run, utime, out);
+  if (task.kind != kinds::kGoto) return runOwned(task, run, utime, out);
+  Finish finish = runGoto(task, run, utime, out);
+  run.hold_x = robot_->x;  // where it was last active, to notice a move while suspended
+  run.hold_y = robot_->y;
+  return finish;
+}
+
+void Executor::finishTask(TaskStack& stack, const Task& task, const std::pair<Status, std::string>& finish,
+                          TickOutput& out) {
+  const std::size_t seen = stack.pendingEvents().size();
+  stack.finish(task.id, finish.first, finish.second);
+  for (std::size_t i = seen; i < stack.pendingEvents().size(); ++i) {
+    const auto& event = stack.pendingEvents()[i];
+    if (event.kind != TaskEvent::Kind::Started && event.kind != TaskEvent::Kind::Suspended &&
+        event.kind != TaskEvent::Kind::Resumed)
+      out.log.push_back(describeEvent(event));  // in order with the start/resume lines
+  }
+  runs_.erase(task.id);
+}
+
+Executor::TickOutput Executor::tick(TaskStack& stack, int64_t utime) {
+  TickOutput out;
+  out.command = hold(utime);
+
+  forgetGoneTasks(stack);
 
   if (!robot_) {
     if (!warned_no_robot_ && !stack.empty())
@@ -110,49 +159,12 @@ Executor::TickOutput Executor::tick(TaskStack& stack, int64_t utime) {
     const Task task = *top;
     auto [it, is_new] = runs_.try_emplace(task.id);
     Run& run = it->second;
-    if (is_new || last_top_id_ != task.id) {
-      // Started, or resumed after an interruption: start the watches afresh
-      // from where the robot is now.
-      if (!is_new && task.kind == kinds::kGoto && !run.path.empty() && !run.need_plan &&
-          std::hypot(robot_->x - run.hold_x, robot_->y - run.hold_y) > parameters_.waypoint_tolerance_m)
-        run.need_plan = true;  // moved while suspended: the old path may not start here
-      run.started_utime = utime;
-      run.hold_x = robot_->x;
-      run.hold_y = robot_->y;
-      run.best_error = 1e300;
-      run.progress_utime = utime;
-      run.aligned_since = -1;
-      run.turning_platform = false;
-      run.idle_since = -1;
-      if (is_new) run.collisions_seen = robot_->collisions;
-      out.log.push_back(std::string(is_new ? "start " : "resume ") + std::to_string(task.id) + " " +
-                        describe(task) + " (priority " + std::to_string(task.priority) + ", from " +
-                        (task.origin.empty() ? "?" : task.origin) + ")");
-    }
+    if (is_new || last_top_id_ != task.id) startOrResume(task, run, is_new, utime, out);
     last_top_id_ = task.id;
 
-    Finish finish;
-    if (task.kind == kinds::kGoto) finish = runGoto(task, run, utime, out);
-    else if (task.kind == kinds::kTurnHead) finish = runTurnHead(task, run, utime, out);
-    else if (task.kind == kinds::kTurn) finish = runTurn(task, run, utime, out);
-    else if (task.kind == kinds::kLookAt) finish = runLookAt(task, run, utime, out);
-    else if (task.kind == kinds::kWait) finish = runWait(task, run, utime, out);
-    else finish = runOwned(task, run, utime, out);
-    if (task.kind == kinds::kGoto) {
-      run.hold_x = robot_->x;  // where it was last active, to notice a move while suspended
-      run.hold_y = robot_->y;
-    }
-
+    const Finish finish = runTask(task, run, utime, out);
     if (!finish) break;
-    const std::size_t seen = stack.pendingEvents().size();
-    stack.finish(task.id, finish->first, finish->second);
-    for (std::size_t i = seen; i < stack.pendingEvents().size(); ++i) {
-      const auto& event = stack.pendingEvents()[i];
-      if (event.kind != TaskEvent::Kind::Started && event.kind != TaskEvent::Kind::Suspended &&
-          event.kind != TaskEvent::Kind::Resumed)
-        out.log.push_back(describeEvent(event));  // in order with the start/resume lines
-    }
-    runs_.erase(task.id);
+    finishTask(stack, task, *finish, out);
     out.command = hold(utime);
     if (out.request) break;
   }
@@ -265,81 +277,77 @@ bool Executor::pathBlocked(const Run& run) const {
   return false;
 }
 
-Executor::Finish Executor::runGoto(const Task& task, Run& run, int64_t utime, TickOutput& out) {
+// After a collision: back away from the contact, then plan afresh from
+// clear ground (a start inside the inflated obstacle invites the same path).
+// True while it still backs off (the command is set).
+bool Executor::keepBackingOff(Run& run, int64_t utime, TickOutput& out) {
   const auto& r = *robot_;
-  const bool any_yaw = std::isnan(task.yaw);
-  const double goal_distance = std::hypot(task.x - r.x, task.y - r.y);
-  const double goal_yaw_error = any_yaw ? 0.0 : std::abs(wrap(task.yaw - r.yaw));
-  if (run.request_id == 0 && goal_distance <= parameters_.goal_tolerance_m &&
-      goal_yaw_error <= parameters_.yaw_tolerance_deg)
-    return std::make_pair(Status::Done, "reached (" + fmt(r.x) + ", " + fmt(r.y) + ", " + fmt(r.yaw, 1) + ")");
+  const bool touched = r.collisions > run.collisions_seen;
+  run.collisions_seen = std::max(run.collisions_seen, r.collisions);
+  if (std::hypot(run.backoff_x - r.x, run.backoff_y - r.y) < 0.05 || touched ||
+      utime - run.backoff_utime >= micros(2.0)) {
+    run.backing_off = false;
+    run.need_plan = true;
+    return false;
+  }
+  out.command = gotoCommand(run.backoff_x, run.backoff_y, r.yaw, utime);
+  return true;
+}
 
-  if (run.backing_off) {
-    // After a collision: back away from the contact, then plan afresh from
-    // clear ground (a start inside the inflated obstacle invites the same path).
-    const bool touched = r.collisions > run.collisions_seen;
-    run.collisions_seen = std::max(run.collisions_seen, r.collisions);
-    if (std::hypot(run.backoff_x - r.x, run.backoff_y - r.y) < 0.05 || touched ||
-        utime - run.backoff_utime >= micros(2.0)) {
-      run.backing_off = false;
-      run.need_plan = true;
-    } else {
+// While following a path: a collision, a newly mapped obstacle on the path
+// or no progress asks for a new plan (too many: the goto fails); after a
+// collision it backs off first (backing_off, the command set).
+Executor::Finish Executor::watchPath(const Task& task, Run& run, int64_t utime, TickOutput& out, bool& backing_off) {
+  const auto& r = *robot_;
+  std::string why;
+  const bool collided = r.collisions > run.collisions_seen;
+  run.collisions_seen = std::max(run.collisions_seen, r.collisions);
+  if (collided) {
+    why = "the robot collided";
+  } else if (map_changed_ && pathBlocked(run)) {
+    // The map grows as the camera sees: not a failure, so not counted.
+    out.log.push_back("replan " + std::to_string(task.id) + " " + describe(task) +
+                      ": a newly mapped obstacle blocks the path");
+    run.need_plan = true;
+    run.best_error = 1e300;
+    run.progress_utime = utime;
+  }
+  if (why.empty() && !run.need_plan) {
+    // Progress: remaining path length plus the heading still to turn.
+    const std::size_t n = run.path.size();
+    const auto& target = run.path[std::min(run.next_waypoint, n - 1)];
+    double remaining = std::hypot(target.x - r.x, target.y - r.y) +
+                       std::abs(wrap(target.yaw - r.yaw)) / 90.0;
+    for (std::size_t i = run.next_waypoint + 1; i < n; ++i)
+      remaining += std::hypot(run.path[i].x - run.path[i - 1].x, run.path[i].y - run.path[i - 1].y);
+    if (stalled(run, remaining, 0.05, utime))
+      why = "no progress for " + fmt(parameters_.stall_s, 1) + " s";
+  }
+  if (!why.empty()) {
+    ++run.replans;
+    if (run.replans > parameters_.max_replans)
+      return std::make_pair(Status::Failed, "gave up after " + std::to_string(parameters_.max_replans) +
+                                                " replans (last: " + why + ")");
+    run.best_error = 1e300;
+    run.progress_utime = utime;
+    if (collided && parameters_.backoff_m > 0) {
+      startBackoff(run, utime);
+      out.log.push_back("replan " + std::to_string(task.id) + " " + describe(task) + ": " + why +
+                        "; backing off " + fmt(parameters_.backoff_m) + " m first");
       out.command = gotoCommand(run.backoff_x, run.backoff_y, r.yaw, utime);
+      backing_off = true;
       return std::nullopt;
     }
+    out.log.push_back("replan " + std::to_string(task.id) + " " + describe(task) + ": " + why);
+    run.need_plan = true;
   }
+  return std::nullopt;
+}
 
-  if (run.request_id != 0) {
-    if (auto failed = collectPlan(task, run, out)) return failed;
-  } else if (!run.need_plan) {
-    std::string why;
-    const bool collided = r.collisions > run.collisions_seen;
-    run.collisions_seen = std::max(run.collisions_seen, r.collisions);
-    if (collided) {
-      why = "the robot collided";
-    } else if (map_changed_ && pathBlocked(run)) {
-      // The map grows as the camera sees: not a failure, so not counted.
-      out.log.push_back("replan " + std::to_string(task.id) + " " + describe(task) +
-                        ": a newly mapped obstacle blocks the path");
-      run.need_plan = true;
-      run.best_error = 1e300;
-      run.progress_utime = utime;
-    }
-    if (why.empty() && !run.need_plan) {
-      // Progress: remaining path length plus the heading still to turn.
-      const std::size_t n = run.path.size();
-      const auto& target = run.path[std::min(run.next_waypoint, n - 1)];
-      double remaining = std::hypot(target.x - r.x, target.y - r.y) +
-                         std::abs(wrap(target.yaw - r.yaw)) / 90.0;
-      for (std::size_t i = run.next_waypoint + 1; i < n; ++i)
-        remaining += std::hypot(run.path[i].x - run.path[i - 1].x, run.path[i].y - run.path[i - 1].y);
-      if (stalled(run, remaining, 0.05, utime))
-        why = "no progress for " + fmt(parameters_.stall_s, 1) + " s";
-    }
-    if (!why.empty()) {
-      ++run.replans;
-      if (run.replans > parameters_.max_replans)
-        return std::make_pair(Status::Failed, "gave up after " + std::to_string(parameters_.max_replans) +
-                                                  " replans (last: " + why + ")");
-      run.best_error = 1e300;
-      run.progress_utime = utime;
-      if (collided && parameters_.backoff_m > 0) {
-        startBackoff(run, utime);
-        out.log.push_back("replan " + std::to_string(task.id) + " " + describe(task) + ": " + why +
-                          "; backing off " + fmt(parameters_.backoff_m) + " m first");
-        out.command = gotoCommand(run.backoff_x, run.backoff_y, r.yaw, utime);
-        return std::nullopt;
-      }
-      out.log.push_back("replan " + std::to_string(task.id) + " " + describe(task) + ": " + why);
-      run.need_plan = true;
-    }
-  }
-  if (run.need_plan) {
-    requestPlan(task, run, utime, out);
-    return std::nullopt;  // hold until the answer, next tick
-  }
-
-  // Follow the path one waypoint at a time.
+// Follows the path one waypoint at a time.
+void Executor::followPath(const Task& task, Run& run, int64_t utime, TickOutput& out) {
+  const auto& r = *robot_;
+  const bool any_yaw = std::isnan(task.yaw);
   const std::size_t last = run.path.size() - 1;
   while (run.next_waypoint < last &&
          std::hypot(run.path[run.next_waypoint].x - r.x, run.path[run.next_waypoint].y - r.y) <
@@ -357,6 +365,31 @@ Executor::Finish Executor::runGoto(const Task& task, Run& run, int64_t utime, Ti
     out.command.head_yaw = 0;
     out.command.head_pitch = 0;
   }
+}
+
+Executor::Finish Executor::runGoto(const Task& task, Run& run, int64_t utime, TickOutput& out) {
+  const auto& r = *robot_;
+  const bool any_yaw = std::isnan(task.yaw);
+  const double goal_distance = std::hypot(task.x - r.x, task.y - r.y);
+  const double goal_yaw_error = any_yaw ? 0.0 : std::abs(wrap(task.yaw - r.yaw));
+  if (run.request_id == 0 && goal_distance <= parameters_.goal_tolerance_m &&
+      goal_yaw_error <= parameters_.yaw_tolerance_deg)
+    return std::make_pair(Status::Done, "reached (" + fmt(r.x) + ", " + fmt(r.y) + ", " + fmt(r.yaw, 1) + ")");
+
+  if (run.backing_off && keepBackingOff(run, utime, out)) return std::nullopt;
+  if (run.request_id != 0) {
+    if (auto failed = collectPlan(task, run, out)) return failed;
+  } else if (!run.need_plan) {
+    bool backing_off = false;
+    if (auto failed = watchPath(task, run, utime, out, backing_off)) return failed;
+    if (backing_off) return std::nullopt;
+  }
+  if (run.need_plan) {
+    requestPlan(task, run, utime, out);
+    return std::nullopt;  // hold until the answer, next tick
+  }
+
+  followPath(task, run, utime, out);
   return std::nullopt;
 }
 

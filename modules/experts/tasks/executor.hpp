@@ -104,7 +104,14 @@ class Executor {
   };
 
   using Finish = std::optional<std::pair<Status, std::string>>;
+  void forgetGoneTasks(const TaskStack& stack);
+  void startOrResume(const Task& task, Run& run, bool is_new, int64_t utime, TickOutput& out);
+  Finish runTask(const Task& task, Run& run, int64_t utime, TickOutput& out);
+  void finishTask(TaskStack& stack, const Task& task, const std::pair<Status, std::string>& finish, TickOutput& out);
   Finish runGoto(const Task& task, Run& run, int64_t utime, TickOutput& out);
+  bool keepBackingOff(Run& run, int64_t utime, TickOutput& out);
+  Finish watchPath(const Task& task, Run& run, int64_t utime, TickOutput& out, bool& backing_off);
+  void followPath(const Task& task, Run& run, int64_t utime, TickOutput& out);
   Finish runTurnHead(const Task& task, Run& run, int64_t utime, TickOutput& out);
   Finish runTurn(const Task& task, Run& run, int64_t utime, TickOutput& out);
   Finish runLookAt(const Task& task, Run& run, int64_t utime, TickOutput& out);

@@ -30,6 +30,33 @@ class CapturingOutput : public Output {
   OutputsByFiring captured;
 };
 
+// Compared firing by firing, so a message the logger lost shifts nothing.
+void compareFirings(OutputsByFiring& recorded, OutputsByFiring& replayed, ReplayResult& result) {
+  std::set<int64_t> firing_ids;
+  for (const auto& [id, _] : recorded) firing_ids.insert(id);
+  for (const auto& [id, _] : replayed) firing_ids.insert(id);
+  for (int64_t id : firing_ids) {
+    std::set<std::string> channels_of_firing;
+    for (const auto& [channel, _] : recorded[id]) channels_of_firing.insert(channel);
+    for (const auto& [channel, _] : replayed[id]) channels_of_firing.insert(channel);
+    for (const auto& channel : channels_of_firing) {
+      const Messages& was = recorded[id][channel];
+      const Messages& now = replayed[id][channel];
+      const std::size_t common = std::min(was.size(), now.size());
+      for (std::size_t i = 0; i < common; ++i) {
+        ++result.outputs_compared;
+        if (was[i] == now[i]) {
+          ++result.outputs_matching;
+        } else if (result.first_mismatches.size() < 3) {
+          result.first_mismatches.push_back({channel, id, was[i], now[i]});
+        }
+      }
+      if (was.size() > common) result.recorded_only += static_cast<int64_t>(was.size() - common);
+      if (now.size() > common) result.replayed_only += static_cast<int64_t>(now.size() - common);
+    }
+  }
+}
+
 }  // namespace
 
 ReplayResult replayLog(Expert& expert, const std::string& process_name, const std::string& log_path) {
@@ -93,30 +120,7 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
   }
   firePending();
 
-  // Compared firing by firing, so a message the logger lost shifts nothing.
-  std::set<int64_t> firing_ids;
-  for (const auto& [id, _] : recorded) firing_ids.insert(id);
-  for (const auto& [id, _] : output.captured) firing_ids.insert(id);
-  for (int64_t id : firing_ids) {
-    std::set<std::string> channels_of_firing;
-    for (const auto& [channel, _] : recorded[id]) channels_of_firing.insert(channel);
-    for (const auto& [channel, _] : output.captured[id]) channels_of_firing.insert(channel);
-    for (const auto& channel : channels_of_firing) {
-      const Messages& was = recorded[id][channel];
-      const Messages& now = output.captured[id][channel];
-      const std::size_t common = std::min(was.size(), now.size());
-      for (std::size_t i = 0; i < common; ++i) {
-        ++result.outputs_compared;
-        if (was[i] == now[i]) {
-          ++result.outputs_matching;
-        } else if (result.first_mismatches.size() < 3) {
-          result.first_mismatches.push_back({channel, id, was[i], now[i]});
-        }
-      }
-      if (was.size() > common) result.recorded_only += static_cast<int64_t>(was.size() - common);
-      if (now.size() > common) result.replayed_only += static_cast<int64_t>(now.size() - common);
-    }
-  }
+  compareFirings(recorded, output.captured, result);
   return result;
 }
 
