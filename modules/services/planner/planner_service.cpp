@@ -114,6 +114,72 @@ std::optional<beft::plan_result_t> PlannerService::handle(const beft::plan_reque
   return result;
 }
 
+namespace {
+
+beft::waypoint_t waypoint(double x, double y, double yaw_deg) {
+  beft::waypoint_t w;
+  w.x = x;
+  w.y = y;
+  w.yaw = yaw_deg;
+  return w;
+}
+
+// Without a map nothing is known to be in the way: the straight line.
+void straightLine(const beft::plan_request_t& request, beft::plan_result_t& result) {
+  const double heading = std::atan2(request.goal_y - request.start_y, request.goal_x - request.start_x) * kRadToDeg;
+  result.waypoints = {waypoint(request.start_x, request.start_y, heading),
+                      waypoint(request.goal_x, request.goal_y, request.goal_yaw)};
+  result.success = true;
+  result.length = std::hypot(request.goal_x - request.start_x, request.goal_y - request.start_y);
+  result.message = "no obstacle map received yet: straight line";
+}
+
+}  // namespace
+
+std::string PlannerService::placeEndpoints(const beft::plan_request_t& request, const bp::PlanningMap& map,
+                                           Endpoints& cells, std::string& notes) const {
+  const double res = cells_->resolution;
+  const auto to_cells = [&](double x, double y) {
+    return bp::Point2{(x - cells_->origin_x) / res, (y - cells_->origin_y) / res};
+  };
+  const auto inside = [&](bp::Point2 c) { return c.x >= 0 && c.y >= 0 && c.x < map.width() && c.y < map.height(); };
+  cells.start_true = to_cells(request.start_x, request.start_y);
+  const bp::Point2 goal_true = to_cells(request.goal_x, request.goal_y);
+  if (!inside(cells.start_true)) return "start " + describe(request.start_x, request.start_y) + " is outside the obstacle map";
+  if (!inside(goal_true)) return "goal " + describe(request.goal_x, request.goal_y) + " is outside the obstacle map";
+  cells.start = cells.start_true;
+  if (!map.pointFree(cells.start)) {
+    const auto moved = nearestFreeCell(map, cells.start, map.robotRadius() + 2.0);
+    if (!moved) return "start " + describe(request.start_x, request.start_y) + " is enclosed by obstacles";
+    cells.start = *moved;
+    notes += "start within the robot radius of an obstacle: path begins by moving clear; ";
+  }
+  cells.goal = goal_true;
+  if (!map.pointFree(cells.goal)) {
+    const auto moved = nearestFreeCell(map, cells.goal, config_.goal_snap / res);
+    if (!moved)
+      return "goal " + describe(request.goal_x, request.goal_y) +
+             " is blocked (within the robot radius of an obstacle) and no free cell lies within " +
+             std::to_string(config_.goal_snap) + " m";
+    cells.goal = *moved;
+    notes += "goal blocked: moved to the nearest free cell; ";
+  }
+  return "";
+}
+
+void PlannerService::toWaypoints(const beft::plan_request_t& request, bp::Path cells_path, const Endpoints& cells,
+                                 beft::plan_result_t& result) const {
+  const double res = cells_->resolution;
+  if (bp::distance(cells.start, cells.start_true) > 1e-9) cells_path.insert(cells_path.begin(), cells.start_true);
+  const std::vector<double> headings = bp::travelHeadings(cells_path, 0.0);
+  for (size_t i = 0; i < cells_path.size(); ++i) {
+    const double yaw = i + 1 == cells_path.size() ? request.goal_yaw : headings[i] * kRadToDeg;
+    result.waypoints.push_back(
+        waypoint(cells_->origin_x + cells_path[i].x * res, cells_->origin_y + cells_path[i].y * res, yaw));
+  }
+  result.length = bp::pathLength(cells_path) * res;
+}
+
 beft::plan_result_t PlannerService::plan(const beft::plan_request_t& request) {
   beft::plan_result_t result{};
   result.success = false;
@@ -127,7 +193,6 @@ beft::plan_result_t PlannerService::plan(const beft::plan_request_t& request) {
     return result;
   };
   if (!finite(request)) return fail("request has a non-finite coordinate or heading");
-
   bp::Planner* planner = nullptr;
   try {
     planner = &plannerFor(result.planner);
@@ -137,55 +202,14 @@ beft::plan_result_t PlannerService::plan(const beft::plan_request_t& request) {
   double budget = request.time_budget;
   if (!(budget > 0) || !std::isfinite(budget)) budget = config_.default_budget;
   budget = std::min(budget, config_.max_budget);
-
-  const auto waypoint = [](double x, double y, double yaw_deg) {
-    beft::waypoint_t w;
-    w.x = x;
-    w.y = y;
-    w.yaw = yaw_deg;
-    return w;
-  };
-
   if (!hasMap()) {
-    const double heading = std::atan2(request.goal_y - request.start_y, request.goal_x - request.start_x) * kRadToDeg;
-    result.waypoints = {waypoint(request.start_x, request.start_y, heading),
-                        waypoint(request.goal_x, request.goal_y, request.goal_yaw)};
-    result.success = true;
-    result.length = std::hypot(request.goal_x - request.start_x, request.goal_y - request.start_y);
-    result.message = "no obstacle map received yet: straight line";
+    straightLine(request, result);
     return result;
   }
-
   const auto map = planningMap();
-  const double res = cells_->resolution;
-  const auto to_cells = [&](double x, double y) {
-    return bp::Point2{(x - cells_->origin_x) / res, (y - cells_->origin_y) / res};
-  };
-  const auto inside = [&](bp::Point2 c) { return c.x >= 0 && c.y >= 0 && c.x < map->width() && c.y < map->height(); };
-  const bp::Point2 start_true = to_cells(request.start_x, request.start_y);
-  const bp::Point2 goal_true = to_cells(request.goal_x, request.goal_y);
-  if (!inside(start_true)) return fail("start " + describe(request.start_x, request.start_y) + " is outside the obstacle map");
-  if (!inside(goal_true)) return fail("goal " + describe(request.goal_x, request.goal_y) + " is outside the obstacle map");
-
+  Endpoints cells;
   std::string notes;
-  bp::Point2 start = start_true;
-  if (!map->pointFree(start)) {
-    const auto moved = nearestFreeCell(*map, start, map->robotRadius() + 2.0);
-    if (!moved) return fail("start " + describe(request.start_x, request.start_y) + " is enclosed by obstacles");
-    start = *moved;
-    notes += "start within the robot radius of an obstacle: path begins by moving clear; ";
-  }
-  bp::Point2 goal = goal_true;
-  if (!map->pointFree(goal)) {
-    const auto moved = nearestFreeCell(*map, goal, config_.goal_snap / res);
-    if (!moved) {
-      return fail("goal " + describe(request.goal_x, request.goal_y) +
-                  " is blocked (within the robot radius of an obstacle) and no free cell lies within " +
-                  std::to_string(config_.goal_snap) + " m");
-    }
-    goal = *moved;
-    notes += "goal blocked: moved to the nearest free cell; ";
-  }
+  if (const std::string why = placeEndpoints(request, *map, cells, notes); !why.empty()) return fail(why);
 
   CachedPlanner& cached = planners_.at(result.planner);
   if (cached.map_version != map_version_) {
@@ -193,19 +217,10 @@ beft::plan_result_t PlannerService::plan(const beft::plan_request_t& request) {
     cached.map_version = map_version_;
   }
   planner->setSeed(config_.seed + static_cast<uint64_t>(request.request_id));
-  const bp::PlanResult planned = planner->solve(start, goal, bp::Deadline::after(budget));
+  const bp::PlanResult planned = planner->solve(cells.start, cells.goal, bp::Deadline::after(budget));
   result.planning_time = planned.planning_time_s;
   if (!planned.success) return fail(planned.message);
-
-  bp::Path cells_path = planned.path;
-  if (bp::distance(start, start_true) > 1e-9) cells_path.insert(cells_path.begin(), start_true);
-  const std::vector<double> headings = bp::travelHeadings(cells_path, 0.0);
-  for (size_t i = 0; i < cells_path.size(); ++i) {
-    const double yaw = i + 1 == cells_path.size() ? request.goal_yaw : headings[i] * kRadToDeg;
-    result.waypoints.push_back(waypoint(cells_->origin_x + cells_path[i].x * res,
-                                        cells_->origin_y + cells_path[i].y * res, yaw));
-  }
-  result.length = bp::pathLength(cells_path) * res;
+  toWaypoints(request, planned.path, cells, result);
   result.success = true;
   if (!notes.empty()) result.message = notes.substr(0, notes.size() - 2);
   return result;

@@ -67,6 +67,15 @@ class PlannerService {
     int64_t map_version = -1;
   };
   beft::plan_result_t plan(const beft::plan_request_t& request);
+  // The request's start and goal in cells: as given, and moved to free cells.
+  struct Endpoints {
+    planners::Point2 start_true, start, goal;
+  };
+  // "" when both could be placed, else why not; notes says what was moved.
+  std::string placeEndpoints(const beft::plan_request_t& request, const planners::PlanningMap& map, Endpoints& cells,
+                             std::string& notes) const;
+  void toWaypoints(const beft::plan_request_t& request, planners::Path cells_path, const Endpoints& cells,
+                   beft::plan_result_t& result) const;
   std::shared_ptr<const planners::PlanningMap> planningMap();
   planners::Planner& plannerFor(const std::string& name);
   bool remember(int64_t request_id);
