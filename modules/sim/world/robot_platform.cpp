@@ -37,6 +37,82 @@ double wrapDegrees(double angle) {
   return wrapped;
 }
 
+namespace {
+
+// Each returns false with check.refusal set when the command must be refused.
+bool checkVelocity(const beft::robot_command_t& message, const scenario::RobotLimits& limits, const std::string& from,
+                   MotionCommand& command, CommandCheck& check) {
+  if (!allFinite({message.vx, message.vy, message.yaw_rate})) {
+    check.refusal = "velocity command" + from + " has a non-finite vx, vy or yaw_rate";
+    return false;
+  }
+  command.mode = MotionCommand::Mode::Velocity;
+  command.vx = message.vx;
+  command.vy = message.vy;
+  command.yaw_rate = message.yaw_rate;
+  const double speed = std::hypot(message.vx, message.vy);
+  if (speed > limits.max_speed) {
+    command.vx *= limits.max_speed / speed;
+    command.vy *= limits.max_speed / speed;
+    appendNote(check.adjustments, "speed " + formatFixed(speed, 3) + " m/s limited to max_speed " +
+                                      formatFixed(limits.max_speed, 3));
+  }
+  if (std::abs(message.yaw_rate) > limits.max_turn_rate) {
+    command.yaw_rate = std::copysign(limits.max_turn_rate, message.yaw_rate);
+    appendNote(check.adjustments, "yaw_rate " + formatFixed(message.yaw_rate, 1) +
+                                      " deg/s limited to max_turn_rate " + formatFixed(limits.max_turn_rate, 1));
+  }
+  command.description = "velocity vx=" + formatFixed(command.vx, 2) + " vy=" + formatFixed(command.vy, 2) +
+                        " yaw_rate=" + formatFixed(command.yaw_rate, 1);
+  return true;
+}
+
+bool checkGoto(const beft::robot_command_t& message, const scenario::World& world, const std::string& from,
+               MotionCommand& command, CommandCheck& check) {
+  if (!allFinite({message.goal_x, message.goal_y, message.goal_yaw})) {
+    check.refusal = "goto command" + from + " has a non-finite goal_x, goal_y or goal_yaw";
+    return false;
+  }
+  if (message.goal_x < 0 || message.goal_x > world.width || message.goal_y < 0 ||
+      message.goal_y > world.height) {
+    check.refusal = "goto command" + from + ": goal (" + formatFixed(message.goal_x, 2) + ", " +
+                    formatFixed(message.goal_y, 2) + ") is outside the world [0, " +
+                    formatFixed(world.width, 2) + "] x [0, " + formatFixed(world.height, 2) + "]";
+    return false;
+  }
+  command.mode = MotionCommand::Mode::Goto;
+  command.goal_x = message.goal_x;
+  command.goal_y = message.goal_y;
+  command.goal_yaw = wrapDegrees(message.goal_yaw);
+  command.description = "goto (" + formatFixed(command.goal_x, 2) + ", " + formatFixed(command.goal_y, 2) +
+                        ") yaw " + formatFixed(command.goal_yaw, 1);
+  return true;
+}
+
+bool checkHead(const beft::robot_command_t& message, const scenario::RobotLimits& limits, const std::string& from,
+               MotionCommand& command, CommandCheck& check) {
+  if (!allFinite({message.head_yaw, message.head_pitch})) {
+    check.refusal = "command" + from + " has a non-finite head_yaw or head_pitch";
+    return false;
+  }
+  const double yaw_limit = limits.head_yaw_range / 2, pitch_limit = limits.head_pitch_range / 2;
+  command.head_yaw = std::clamp(message.head_yaw, -yaw_limit, yaw_limit);
+  command.head_pitch = std::clamp(message.head_pitch, -pitch_limit, pitch_limit);
+  if (command.head_yaw != message.head_yaw) {
+    appendNote(check.adjustments, "head_yaw " + formatFixed(message.head_yaw, 1) + " deg limited to +/-" +
+                                      formatFixed(yaw_limit, 1));
+  }
+  if (command.head_pitch != message.head_pitch) {
+    appendNote(check.adjustments, "head_pitch " + formatFixed(message.head_pitch, 1) + " deg limited to +/-" +
+                                      formatFixed(pitch_limit, 1));
+  }
+  command.description += ", head to (" + formatFixed(command.head_yaw, 1) + ", " +
+                         formatFixed(command.head_pitch, 1) + ")";
+  return true;
+}
+
+}  // namespace
+
 CommandCheck checkCommand(const beft::robot_command_t& message, const scenario::Robot& robot,
                           const scenario::World& world) {
   CommandCheck check;
@@ -48,51 +124,12 @@ CommandCheck checkCommand(const beft::robot_command_t& message, const scenario::
       command.mode = MotionCommand::Mode::Stop;
       command.description = "stop";
       break;
-    case beft::robot_command_t::MODE_VELOCITY: {
-      if (!allFinite({message.vx, message.vy, message.yaw_rate})) {
-        check.refusal = "velocity command" + from + " has a non-finite vx, vy or yaw_rate";
-        return check;
-      }
-      command.mode = MotionCommand::Mode::Velocity;
-      command.vx = message.vx;
-      command.vy = message.vy;
-      command.yaw_rate = message.yaw_rate;
-      const double speed = std::hypot(message.vx, message.vy);
-      if (speed > limits.max_speed) {
-        command.vx *= limits.max_speed / speed;
-        command.vy *= limits.max_speed / speed;
-        appendNote(check.adjustments, "speed " + formatFixed(speed, 3) + " m/s limited to max_speed " +
-                                          formatFixed(limits.max_speed, 3));
-      }
-      if (std::abs(message.yaw_rate) > limits.max_turn_rate) {
-        command.yaw_rate = std::copysign(limits.max_turn_rate, message.yaw_rate);
-        appendNote(check.adjustments, "yaw_rate " + formatFixed(message.yaw_rate, 1) +
-                                          " deg/s limited to max_turn_rate " + formatFixed(limits.max_turn_rate, 1));
-      }
-      command.description = "velocity vx=" + formatFixed(command.vx, 2) + " vy=" + formatFixed(command.vy, 2) +
-                            " yaw_rate=" + formatFixed(command.yaw_rate, 1);
+    case beft::robot_command_t::MODE_VELOCITY:
+      if (!checkVelocity(message, limits, from, command, check)) return check;
       break;
-    }
-    case beft::robot_command_t::MODE_GOTO: {
-      if (!allFinite({message.goal_x, message.goal_y, message.goal_yaw})) {
-        check.refusal = "goto command" + from + " has a non-finite goal_x, goal_y or goal_yaw";
-        return check;
-      }
-      if (message.goal_x < 0 || message.goal_x > world.width || message.goal_y < 0 ||
-          message.goal_y > world.height) {
-        check.refusal = "goto command" + from + ": goal (" + formatFixed(message.goal_x, 2) + ", " +
-                        formatFixed(message.goal_y, 2) + ") is outside the world [0, " +
-                        formatFixed(world.width, 2) + "] x [0, " + formatFixed(world.height, 2) + "]";
-        return check;
-      }
-      command.mode = MotionCommand::Mode::Goto;
-      command.goal_x = message.goal_x;
-      command.goal_y = message.goal_y;
-      command.goal_yaw = wrapDegrees(message.goal_yaw);
-      command.description = "goto (" + formatFixed(command.goal_x, 2) + ", " + formatFixed(command.goal_y, 2) +
-                            ") yaw " + formatFixed(command.goal_yaw, 1);
+    case beft::robot_command_t::MODE_GOTO:
+      if (!checkGoto(message, world, from, command, check)) return check;
       break;
-    }
     case beft::robot_command_t::MODE_HEAD_ONLY:
       command.mode = MotionCommand::Mode::HeadOnly;
       command.description = "head only";
@@ -103,25 +140,7 @@ CommandCheck checkCommand(const beft::robot_command_t& message, const scenario::
       return check;
   }
   command.set_head = message.set_head || command.mode == MotionCommand::Mode::HeadOnly;
-  if (command.set_head) {
-    if (!allFinite({message.head_yaw, message.head_pitch})) {
-      check.refusal = "command" + from + " has a non-finite head_yaw or head_pitch";
-      return check;
-    }
-    const double yaw_limit = limits.head_yaw_range / 2, pitch_limit = limits.head_pitch_range / 2;
-    command.head_yaw = std::clamp(message.head_yaw, -yaw_limit, yaw_limit);
-    command.head_pitch = std::clamp(message.head_pitch, -pitch_limit, pitch_limit);
-    if (command.head_yaw != message.head_yaw) {
-      appendNote(check.adjustments, "head_yaw " + formatFixed(message.head_yaw, 1) + " deg limited to +/-" +
-                                        formatFixed(yaw_limit, 1));
-    }
-    if (command.head_pitch != message.head_pitch) {
-      appendNote(check.adjustments, "head_pitch " + formatFixed(message.head_pitch, 1) + " deg limited to +/-" +
-                                        formatFixed(pitch_limit, 1));
-    }
-    command.description += ", head to (" + formatFixed(command.head_yaw, 1) + ", " +
-                           formatFixed(command.head_pitch, 1) + ")";
-  }
+  if (command.set_head && !checkHead(message, limits, from, command, check)) return check;
   command.description += from;
   check.command = command;
   return check;
