@@ -72,8 +72,10 @@ std::vector<std::string> applyScenario(RunRecord& record, const scenario::Scenar
   return warnings;
 }
 
-RunReport scoreRun(const RunRecord& record, const ScoringOptions& options) {
-  RunReport report;
+namespace {
+
+// Speed, distance and how the run ended.
+void scoreRunFigures(const RunRecord& record, const ScoringOptions& options, RunReport& report) {
   report.scenario = record.scenario_name;
   report.log_path = record.log_path;
   report.person_confidence = options.person_confidence;
@@ -93,7 +95,46 @@ RunReport scoreRun(const RunRecord& record, const ScoringOptions& options) {
     report.collisions = record.robot.back().collisions;
   }
   report.end_reason = !record.stop_reason.empty() ? record.stop_reason : record.run_status;
+}
 
+// The person a victim candidate stands for: the one of its id, else the
+// nearest person not yet matched within the match radius; null if none.
+const TruthObject* personOf(const HypothesisState& h, const std::vector<const TruthObject*>& persons,
+                            const std::set<std::string>& matched, const ScoringOptions& options) {
+  for (const auto* p : persons)
+    if (p->id == h.object_id) return p;
+  const TruthObject* person = nullptr;
+  double best = options.match_radius;
+  for (const auto* p : persons) {
+    const double d = std::hypot(p->x - h.x, p->y - h.y);
+    if (matched.count(p->id) == 0 && d <= best) {
+      best = d;
+      person = p;
+    }
+  }
+  return person;
+}
+
+// Victims in ground-truth order, for a stable report; the others missed.
+void orderVictims(const std::vector<const TruthObject*>& persons, RunReport& report) {
+  std::vector<VictimEntry> ordered;
+  for (const auto* p : persons) {
+    bool found = false;
+    for (const auto& v : report.victims)
+      if (v.object == p->id) {
+        ordered.push_back(v);
+        found = true;
+      }
+    if (!found) report.missed.push_back(p->id);
+  }
+  report.victims.swap(ordered);
+}
+
+}  // namespace
+
+RunReport scoreRun(const RunRecord& record, const ScoringOptions& options) {
+  RunReport report;
+  scoreRunFigures(record, options, report);
   std::vector<const TruthObject*> persons;
   for (const auto& object : record.truth)
     if (object.label == options.person_label) persons.push_back(&object);
@@ -107,9 +148,7 @@ RunReport scoreRun(const RunRecord& record, const ScoringOptions& options) {
   // Candidates in decreasing confidence, so a duplicate loses to the surer one.
   std::vector<const HypothesisState*> candidates;
   for (const auto& h : final_hypotheses) {
-    if (h.falsified) {
-      report.falsified.push_back({h.object_id, h.x, h.y, h.heard_as, h.seen_as, h.settled_s});
-    }
+    if (h.falsified) report.falsified.push_back({h.object_id, h.x, h.y, h.heard_as, h.seen_as, h.settled_s});
     if (!isSettled(h)) report.unsettled.push_back(h.object_id);
     if (isVictimCandidate(h, options)) candidates.push_back(&h);
   }
@@ -118,26 +157,13 @@ RunReport scoreRun(const RunRecord& record, const ScoringOptions& options) {
 
   std::set<std::string> matched;
   for (const auto* h : candidates) {
-    const TruthObject* person = nullptr;
-    for (const auto* p : persons)
-      if (p->id == h->object_id) person = p;
-    if (person == nullptr) {  // not keyed by a person's id: nearest free person in reach
-      double best = options.match_radius;
-      for (const auto* p : persons) {
-        const double d = std::hypot(p->x - h->x, p->y - h->y);
-        if (matched.count(p->id) == 0 && d <= best) {
-          best = d;
-          person = p;
-        }
-      }
-    }
+    const TruthObject* person = personOf(*h, persons, matched, options);
     if (person == nullptr) {
       report.false_alarms.push_back({h->object_id, h->x, h->y, h->confidence, "matches no person"});
       continue;
     }
     if (matched.count(person->id) > 0) {
-      report.false_alarms.push_back(
-          {h->object_id, h->x, h->y, h->confidence, "duplicate of " + person->id});
+      report.false_alarms.push_back({h->object_id, h->x, h->y, h->confidence, "duplicate of " + person->id});
       continue;
     }
     matched.insert(person->id);
@@ -153,18 +179,7 @@ RunReport scoreRun(const RunRecord& record, const ScoringOptions& options) {
     victim.found_at_s = found != found_times.end() ? found->second : report.sim_time_s;
     report.victims.push_back(victim);
   }
-  // Victims in ground-truth order, for a stable report.
-  std::vector<VictimEntry> ordered;
-  for (const auto* p : persons) {
-    bool found = false;
-    for (const auto& v : report.victims)
-      if (v.object == p->id) {
-        ordered.push_back(v);
-        found = true;
-      }
-    if (!found) report.missed.push_back(p->id);
-  }
-  report.victims.swap(ordered);
+  orderVictims(persons, report);
   report.completed = report.missed.empty() && report.unsettled.empty();
   return report;
 }
