@@ -172,6 +172,46 @@ bool PotentialFieldPlanner::stepDownWavefront(Point2& p, Path& trace) const {
   return true;
 }
 
+// The deterministic part of a particle's step: unit(M_T) and the scaled M_F,
+// weighted (the random component is added by the caller).
+Point2 PotentialFieldPlanner::fieldDirection(Point2 p, Point2 goal, double force_scale, bool geodesic) const {
+  Point2 toward = target_force_.at(p);
+  double toward_norm = norm(toward);
+  if (toward_norm < 1e-12) {  // flat spot of M_T (e.g. the goal cell): head straight for the goal
+    toward = goal - p;
+    toward_norm = std::max(norm(toward), 1e-12);
+  }
+  Point2 repulsion = force_scale * obstacle_force_.at(p);
+  if (geodesic) {
+    // Obstacles beside the goal must not push particles off it: the
+    // repulsion fades out within 3 sigma of the goal.
+    repulsion = std::min(1.0, distance(p, goal) / (3 * params_.sigma)) * repulsion;
+  }
+  return (params_.target_weight / toward_norm) * toward + params_.obstacle_weight * repulsion;
+}
+
+// Geodesic field: a particle without headway for stall_steps (or stuck)
+// steps down the wavefront until below the best value reached so far, so
+// every stall ends with real headway. False when it cannot (a stall).
+bool PotentialFieldPlanner::keepGeodesicHeadway(Point2& p, Point2 goal, bool moved, double& best_wavefront,
+                                                int& steps_without_headway, ParticleRun& run) const {
+  const double value = wavefrontAt(p);
+  if (value < best_wavefront) {
+    best_wavefront = value;
+    steps_without_headway = 0;
+    return true;
+  }
+  if (moved && ++steps_without_headway < params_.stall_steps) return true;
+  do {
+    if (!stepDownWavefront(p, run.trace)) break;
+    ++run.discrete_steps;
+  } while (wavefrontAt(p) >= best_wavefront);
+  if (wavefrontAt(p) >= best_wavefront) return wavefrontAt(p) == 0 && map_->segmentFree(p, goal);  // in the goal cell
+  best_wavefront = wavefrontAt(p);
+  steps_without_headway = 0;
+  return true;
+}
+
 PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index, Point2 start, Point2 goal,
                                                                       const Deadline& deadline) const {
   ParticleRun run;
@@ -203,21 +243,8 @@ PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index,
       run.arrived = true;
       return run;
     }
-    Point2 toward = target_force_.at(p);
-    double toward_norm = norm(toward);
-    if (toward_norm < 1e-12) {  // flat spot of M_T (e.g. the goal cell): head straight for the goal
-      toward = goal - p;
-      toward_norm = std::max(norm(toward), 1e-12);
-    }
-    Point2 repulsion = force_scale * obstacle_force_.at(p);
-    if (geodesic) {
-      // Obstacles beside the goal must not push particles off it: the
-      // repulsion fades out within 3 sigma of the goal.
-      repulsion = std::min(1.0, distance(p, goal) / (3 * params_.sigma)) * repulsion;
-    }
     random_drift = keep * random_drift + renew * Point2{rng.unitVariance(), rng.unitVariance()};
-    Point2 direction = (params_.target_weight / toward_norm) * toward + params_.obstacle_weight * repulsion +
-                       noise * random_drift;
+    Point2 direction = fieldDirection(p, goal, force_scale, geodesic) + noise * random_drift;
     noise *= noise_fade;
     const double magnitude = norm(direction);
     if (magnitude > 1) direction = (1 / magnitude) * direction;
@@ -229,24 +256,9 @@ PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index,
       run.trace.push_back(p);
     }
     if (geodesic) {
-      const double value = wavefrontAt(p);
-      if (value < best_wavefront) {
-        best_wavefront = value;
-        steps_without_headway = 0;
-      } else if (!moved || ++steps_without_headway >= params_.stall_steps) {
-        // Step down the wavefront until below the best value reached so far,
-        // so every stall ends with real headway.
-        do {
-          if (!stepDownWavefront(p, run.trace)) break;
-          ++run.discrete_steps;
-        } while (wavefrontAt(p) >= best_wavefront);
-        if (wavefrontAt(p) >= best_wavefront) {
-          if (wavefrontAt(p) == 0 && map_->segmentFree(p, goal)) continue;  // in the goal cell
-          run.stalled = true;  // wavefront undefined here: give up
-          return run;
-        }
-        best_wavefront = wavefrontAt(p);
-        steps_without_headway = 0;
+      if (!keepGeodesicHeadway(p, goal, moved, best_wavefront, steps_without_headway, run)) {
+        run.stalled = true;  // wavefront undefined here: give up
+        return run;
       }
     } else if (++steps_without_headway >= params_.stall_steps) {
       // The paper's field: no headway over the window means a local minimum.

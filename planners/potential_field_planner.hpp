@@ -99,6 +99,9 @@ class PotentialFieldPlanner : public Planner {
   };
   ParticleRun runParticle(int index, Point2 start, Point2 goal, const Deadline& deadline) const;
   bool stepDownWavefront(Point2& p, Path& trace) const;
+  Point2 fieldDirection(Point2 p, Point2 goal, double force_scale, bool geodesic) const;
+  bool keepGeodesicHeadway(Point2& p, Point2 goal, bool moved, double& best_wavefront, int& steps_without_headway,
+                           ParticleRun& run) const;
   double wavefrontAt(Point2 p) const;
   Point2 tryMove(Point2 p, Point2 move) const;
   bool canMove(Point2 from, Point2 to) const;
