@@ -23,6 +23,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -137,9 +138,8 @@ std::string formatMs(double ms) {
   return text;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// The command line; an exit code when the program should end here.
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app{
       "Benchmarks every planner on the same queries: the MovingAI maps and scenario files (a stratified sample of "
       "reachable queries per map, point robot), obstacle maps of the testbed's scenarios (robot radius inflation) "
@@ -147,7 +147,6 @@ int main(int argc, char** argv) {
       "rate, path length relative to the octile optimum, planning time (median and quartiles), smoothness "
       "(total turning) and clearance. Randomised planners run over several seeds. Writes runs.csv, summary.csv, "
       "length_vs_time.png and OMPL benchmark logs (ompl_*.log) to --out, prints the table and the targets."};
-  Options o;
   bool quick = false;
   app.add_flag("--quick", quick,
                "a run of about a minute: 2 queries per map, 2 seeds, 0.1 s for anytime planners, 3 OMPL runs");
@@ -174,7 +173,11 @@ int main(int argc, char** argv) {
   app.add_option("--seed", o.seed, "first seed")->capture_default_str();
   app.add_option("--param", o.pf_params, "potential-field parameter name=value, repeatable: " +
                                             joined(bp::PotentialFieldParams::names()));
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
   o.quick = quick;
   if (quick) {
     if (queries_opt->count() == 0) o.queries = 2;
@@ -183,7 +186,11 @@ int main(int argc, char** argv) {
     if (race_opt->count() == 0) o.race_cap = 0.5;
     if (runs_opt->count() == 0) o.ompl_runs = 3;
   }
-  std::vector<std::unique_ptr<bp::Planner>> planners;
+  return std::nullopt;
+}
+
+// The planners asked for; false (and a message) on a bad name or dataset.
+bool makePlanners(const Options& o, std::vector<std::unique_ptr<bp::Planner>>& planners) {
   try {
     bp::seedOmpl(o.seed);
     bp::PlannerConfig config;
@@ -198,24 +205,28 @@ int main(int argc, char** argv) {
     fs::create_directories(o.out_dir);
   } catch (const std::exception& e) {
     std::cerr << "beft-bench-planners: error: " << e.what() << "\n";
-    return 2;
+    return false;
   }
+  return true;
+}
+
+std::vector<bench::BenchMap> loadMaps(const Options& o) {
   const auto wants = [&o](const std::string& dataset) {
     return std::find(o.datasets.begin(), o.datasets.end(), dataset) != o.datasets.end();
   };
 
-  const auto begin = std::chrono::steady_clock::now();
   std::vector<std::string> notes;
   std::vector<bench::BenchMap> maps;
   if (wants("movingai")) for (auto& m : bench::movingAiMaps(o.movingai_dir, o.queries, notes)) maps.push_back(std::move(m));
   if (wants("scenario")) for (auto& m : bench::scenarioMaps(o.scenario_dir, o.queries, o.seed, notes)) maps.push_back(std::move(m));
   if (wants("trap")) for (auto& m : bench::trapMaps()) maps.push_back(std::move(m));
   for (const auto& note : notes) progress(note);
-  if (maps.empty()) {
-    std::cerr << "beft-bench-planners: error: no maps to run on\n";
-    return 2;
-  }
 
+  return maps;
+}
+
+std::vector<bench::RunRecord> runAll(const Options& o, const std::vector<bench::BenchMap>& maps,
+                                     std::vector<std::unique_ptr<bp::Planner>>& planners) {
   std::vector<bench::RunRecord> runs;
   for (const bench::BenchMap& map : maps) {
     progress(map.dataset + " " + map.name + " (" + std::to_string(map.map->width()) + " x " +
@@ -230,11 +241,20 @@ int main(int argc, char** argv) {
     }
   }
 
+  return runs;
+}
+
+struct Outputs {
+  std::string runs_csv, summary_csv, plot_png;
+};
+
+// Prints the tables, writes runs.csv, summary.csv and the plot; false (and
+// a message) when a file cannot be written.
+bool writeTables(const Options& o, const std::vector<bench::RunRecord>& runs,
+                 const std::vector<std::string>& planner_names, Outputs& files) {
   // Tables, CSV, plot.
   const auto per_map = bench::summarize(runs, true);
   const auto overall = bench::summarize(runs, false);
-  std::vector<std::string> planner_names;
-  for (const auto& p : planners) planner_names.push_back(p->name());
   std::cout << "\nPer planner and map (" << runs.size() << " runs; deadline " << o.budget << " s, anytime planners "
             << o.anytime_budget << " s; " << o.seeds << " seeds for randomised planners; lengths in cells after the "
             << "shared tightening, relative to the octile optimum):\n";
@@ -244,95 +264,91 @@ int main(int argc, char** argv) {
 
   std::vector<bench::Summary> all_rows = per_map;
   all_rows.insert(all_rows.end(), overall.begin(), overall.end());
-  const std::string runs_csv = (fs::path(o.out_dir) / "runs.csv").string();
-  const std::string summary_csv = (fs::path(o.out_dir) / "summary.csv").string();
-  const std::string plot_png = (fs::path(o.out_dir) / "length_vs_time.png").string();
+  files.runs_csv = (fs::path(o.out_dir) / "runs.csv").string();
+  files.summary_csv = (fs::path(o.out_dir) / "summary.csv").string();
+  files.plot_png = (fs::path(o.out_dir) / "length_vs_time.png").string();
   try {
-    bench::writeRunsCsv(runs_csv, runs);
-    bench::writeSummaryCsv(summary_csv, all_rows);
-    bp::writePng(plot_png, bench::plotLengthRatioVsTime(runs, planner_names,
+    bench::writeRunsCsv(files.runs_csv, runs);
+    bench::writeSummaryCsv(files.summary_csv, all_rows);
+    bp::writePng(files.plot_png, bench::plotLengthRatioVsTime(runs, planner_names,
                                                         o.quick ? "beft bench planners --quick" : "beft bench planners"));
   } catch (const std::exception& e) {
     std::cerr << "beft-bench-planners: error: " << e.what() << "\n";
-    return 1;
+    return false;
   }
 
-  // Targets.
-  std::cout << "\nTargets:\n";
-  const auto summary_of = [&overall](const std::string& name) -> const bench::Summary* {
-    for (const auto& s : overall) if (s.planner == name) return &s;
-    return nullptr;
-  };
-  if (const auto* g = summary_of("pf-geodesic")) {
-    std::printf("  pf-geodesic succeeds on every reachable query: %s (%d of %d runs)\n",
-                g->successes == g->runs ? "yes" : "NO", g->successes, g->runs);
-    std::printf("  pf-geodesic median length within 3%% of the octile optimum: %s (median ratio %.4f)\n",
-                g->ratio_median <= 1.03 ? "yes" : "NO", g->ratio_median);
-  }
-  if (summary_of("pf-geodesic") != nullptr) {
-    // RRTConnect with OMPL's path simplification as OMPL users run it, and
-    // the same followed by the shared tightening every planner gets here.
-    bp::PlannerConfig config;
-    config.seed = o.seed;
-    auto rrt_simplified = bp::makePlanner("ompl:RRTConnect", config);
-    rrt_simplified->setTighten(false);
-    auto rrt_tightened = bp::makePlanner("ompl:RRTConnect", config);
-    std::vector<double> pf_times, simplified_times, tightened_times;
-    for (const bench::BenchMap& map : maps) {
-      if (map.dataset != "movingai" || map.map->width() != 256 || map.map->height() != 256) continue;
-      rrt_simplified->setup(map.map);
-      rrt_tightened->setup(map.map);
-      for (const bench::BenchQuery& query : map.queries) {
-        for (const auto& r : runs) {
-          if (r.planner != "pf-geodesic" || r.map != map.name || r.query != query.label || !r.success) continue;
-          pf_times.push_back(r.time_ms);
-          simplified_times.push_back(timeToMatchLength(*rrt_simplified, query, r.length, o.race_cap));
-          tightened_times.push_back(timeToMatchLength(*rrt_tightened, query, r.length, o.race_cap));
-        }
+  return true;
+}
+
+// RRTConnect with OMPL's path simplification as OMPL users run it, and the
+// same followed by the shared tightening every planner gets here, restarted
+// until as short as pf-geodesic's path on the 256 x 256 maps.
+void raceRrtConnect(const Options& o, const std::vector<bench::BenchMap>& maps,
+                    const std::vector<bench::RunRecord>& runs) {
+  bp::PlannerConfig config;
+  config.seed = o.seed;
+  auto rrt_simplified = bp::makePlanner("ompl:RRTConnect", config);
+  rrt_simplified->setTighten(false);
+  auto rrt_tightened = bp::makePlanner("ompl:RRTConnect", config);
+  std::vector<double> pf_times, simplified_times, tightened_times;
+  for (const bench::BenchMap& map : maps) {
+    if (map.dataset != "movingai" || map.map->width() != 256 || map.map->height() != 256) continue;
+    rrt_simplified->setup(map.map);
+    rrt_tightened->setup(map.map);
+    for (const bench::BenchQuery& query : map.queries) {
+      for (const auto& r : runs) {
+        if (r.planner != "pf-geodesic" || r.map != map.name || r.query != query.label || !r.success) continue;
+        pf_times.push_back(r.time_ms);
+        simplified_times.push_back(timeToMatchLength(*rrt_simplified, query, r.length, o.race_cap));
+        tightened_times.push_back(timeToMatchLength(*rrt_tightened, query, r.length, o.race_cap));
       }
     }
-    if (!pf_times.empty()) {
-      const double pf_median = bench::median(pf_times);
-      const auto reached = [](const std::vector<double>& times) {
-        return std::count_if(times.begin(), times.end(), [](double t) { return std::isfinite(t); });
-      };
-      const double simplified_median = bench::median(simplified_times);  // +inf sorts last
-      const double tightened_median = bench::median(tightened_times);
-      std::printf("  256 x 256 maps, %zu pf-geodesic runs: median planning time %s\n", pf_times.size(),
-                  formatMs(pf_median).c_str());
-      std::printf("    RRTConnect + OMPL simplification, restarted until as short (cap %.1f s): median %s "
-                  "(reached in %ld of %zu); target %s\n",
-                  o.race_cap, formatMs(simplified_median).c_str(), reached(simplified_times), simplified_times.size(),
-                  pf_median < simplified_median ? "met" : "NOT met");
-      std::printf("    the same + the shared tightening: median %s (reached in %ld of %zu)%s\n",
-                  formatMs(tightened_median).c_str(), reached(tightened_times), tightened_times.size(),
-                  pf_median < tightened_median ? "" : ": faster than pf-geodesic");
-    }
   }
-  if (const auto* p = summary_of("pf")) {
-    std::printf("  pf (the paper's planner) success rate: %.1f%% (%d of %d runs); median length ratio %.3f\n",
-                100.0 * p->success_rate, p->successes, p->runs, p->ratio_median);
-    struct Failures {
-      int failed = 0, runs = 0;
-      std::string example;
+  if (!pf_times.empty()) {
+    const double pf_median = bench::median(pf_times);
+    const auto reached = [](const std::vector<double>& times) {
+      return std::count_if(times.begin(), times.end(), [](double t) { return std::isfinite(t); });
     };
-    std::map<std::string, Failures> by_map;
-    for (const auto& r : runs) {
-      if (r.planner != "pf") continue;
-      Failures& entry = by_map[r.dataset + " " + r.map];
-      ++entry.runs;
-      if (r.success) continue;
-      ++entry.failed;
-      if (entry.example.empty()) entry.example = r.query + ": " + r.message;
-    }
-    for (const auto& [name, f] : by_map) {
-      if (f.failed > 0) {
-        std::printf("    fails on %-24s %d of %d runs, e.g. %s\n", name.c_str(), f.failed, f.runs, f.example.c_str());
-      }
+    const double simplified_median = bench::median(simplified_times);  // +inf sorts last
+    const double tightened_median = bench::median(tightened_times);
+    std::printf("  256 x 256 maps, %zu pf-geodesic runs: median planning time %s\n", pf_times.size(),
+                formatMs(pf_median).c_str());
+    std::printf("    RRTConnect + OMPL simplification, restarted until as short (cap %.1f s): median %s "
+                "(reached in %ld of %zu); target %s\n",
+                o.race_cap, formatMs(simplified_median).c_str(), reached(simplified_times), simplified_times.size(),
+                pf_median < simplified_median ? "met" : "NOT met");
+    std::printf("    the same + the shared tightening: median %s (reached in %ld of %zu)%s\n",
+                formatMs(tightened_median).c_str(), reached(tightened_times), tightened_times.size(),
+                pf_median < tightened_median ? "" : ": faster than pf-geodesic");
+  }
+}
+
+// The paper's planner: its success rate and where it fails.
+void reportPaperPlanner(const bench::Summary& p, const std::vector<bench::RunRecord>& runs) {
+  std::printf("  pf (the paper's planner) success rate: %.1f%% (%d of %d runs); median length ratio %.3f\n",
+              100.0 * p.success_rate, p.successes, p.runs, p.ratio_median);
+  struct Failures {
+    int failed = 0, runs = 0;
+    std::string example;
+  };
+  std::map<std::string, Failures> by_map;
+  for (const auto& r : runs) {
+    if (r.planner != "pf") continue;
+    Failures& entry = by_map[r.dataset + " " + r.map];
+    ++entry.runs;
+    if (r.success) continue;
+    ++entry.failed;
+    if (entry.example.empty()) entry.example = r.query + ": " + r.message;
+  }
+  for (const auto& [name, f] : by_map) {
+    if (f.failed > 0) {
+      std::printf("    fails on %-24s %d of %d runs, e.g. %s\n", name.c_str(), f.failed, f.runs, f.example.c_str());
     }
   }
+}
 
-  // OMPL's benchmark tooling on a few problems.
+// OMPL's benchmark tooling on a few problems; the log files written.
+std::vector<std::string> writeOmplLogs(const Options& o, const std::vector<bench::BenchMap>& maps) {
   std::vector<std::string> logs;
   if (o.ompl_runs > 0) {
     std::set<std::string> chosen = o.quick ? std::set<std::string>{"u-trap"}
@@ -351,8 +367,48 @@ int main(int argc, char** argv) {
     }
   }
 
+  return logs;
+}
+
+void printTargets(const Options& o, const std::vector<bench::BenchMap>& maps,
+                  const std::vector<bench::RunRecord>& runs) {
+  const auto overall = bench::summarize(runs, false);
+  std::cout << "\nTargets:\n";
+  const auto summary_of = [&overall](const std::string& name) -> const bench::Summary* {
+    for (const auto& s : overall) if (s.planner == name) return &s;
+    return nullptr;
+  };
+  if (const auto* g = summary_of("pf-geodesic")) {
+    std::printf("  pf-geodesic succeeds on every reachable query: %s (%d of %d runs)\n",
+                g->successes == g->runs ? "yes" : "NO", g->successes, g->runs);
+    std::printf("  pf-geodesic median length within 3%% of the octile optimum: %s (median ratio %.4f)\n",
+                g->ratio_median <= 1.03 ? "yes" : "NO", g->ratio_median);
+  }
+  if (summary_of("pf-geodesic") != nullptr) raceRrtConnect(o, maps, runs);
+  if (const auto* p = summary_of("pf")) reportPaperPlanner(*p, runs);
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (const auto code = parseOptions(argc, argv, o)) return *code;
+  std::vector<std::unique_ptr<bp::Planner>> planners;
+  if (!makePlanners(o, planners)) return 2;
+  const auto begin = std::chrono::steady_clock::now();
+  const std::vector<bench::BenchMap> maps = loadMaps(o);
+  if (maps.empty()) {
+    std::cerr << "beft-bench-planners: error: no maps to run on\n";
+    return 2;
+  }
+  const std::vector<bench::RunRecord> runs = runAll(o, maps, planners);
+  std::vector<std::string> planner_names;
+  for (const auto& p : planners) planner_names.push_back(p->name());
+  Outputs files;
+  if (!writeTables(o, runs, planner_names, files)) return 1;
+  printTargets(o, maps, runs);
+  const std::vector<std::string> logs = writeOmplLogs(o, maps);
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  std::cout << "\nWrote " << runs_csv << ", " << summary_csv << ", " << plot_png;
+  std::cout << "\nWrote " << files.runs_csv << ", " << files.summary_csv << ", " << files.plot_png;
   for (const auto& log : logs) std::cout << ", " << log;
   std::printf("\n(%.0f s; OMPL logs load into Planner Arena or ompl_benchmark_statistics.py)\n", elapsed);
   return 0;
