@@ -120,9 +120,24 @@ int sendCommand(lcm::LCM& lcm, beft::task_command_t command, bool wait, double t
   return status;
 }
 
-}  // namespace
+enum class Action { Push, Pop, Clear, List };
 
-int main(int argc, char** argv) {
+struct Options {
+  Action action = Action::List;
+  std::string lcm_url = beft::defaultLcmUrl();
+  double timeout_s = 3.0;  // how long to wait for an answer [s]
+  bool no_wait = false;
+  std::vector<std::string> words;  // push: KIND ARGS...
+  int priority = 50;
+  int64_t parent = 0;
+  std::string origin = "user", note;
+  int64_t pop_id = 0;  // pop: 0 = the top task
+  bool pop_done = false, pop_failed = false;
+  std::string reason;
+  bool json = false;  // list as JSON
+};
+
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
       "Change or show the task stack of a running BEFT system (beft-tasks). Commands go out on "
       "TASK_COMMAND and apply at the stack's next firing, in arrival order; push and pop wait for "
@@ -130,11 +145,8 @@ int main(int argc, char** argv) {
       "TASK_STACK message.",
       "beft-task");
   app.require_subcommand(1);
-  std::string lcm_url = beft::defaultLcmUrl();
-  double timeout_s = 3.0;
-  bool no_wait = false;
-  app.add_option("--lcm-url", lcm_url, "LCM URL of the running system (env BEFT_LCM_URL)")->capture_default_str();
-  app.add_option("--timeout", timeout_s, "how long to wait for an answer [s]")
+  app.add_option("--lcm-url", o.lcm_url, "LCM URL of the running system (env BEFT_LCM_URL)")->capture_default_str();
+  app.add_option("--timeout", o.timeout_s, "how long to wait for an answer [s]")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   app.footer(
@@ -150,100 +162,109 @@ int main(int argc, char** argv) {
       "  beft-task --lcm-url 'udpm://239.255.76.67:7701?ttl=0' list --json");
 
   auto* push = app.add_subcommand("push", "push a task onto the stack");
-  std::vector<std::string> words;
-  int priority = 50;
-  int64_t parent = 0;
-  std::string origin = "user", note;
-  push->add_option("task", words, "KIND ARGS... (see below)")->required()->allow_extra_args();
-  push->add_option("--priority", priority, "higher interrupts lower (the reflex uses 100)")->capture_default_str();
-  push->add_option("--parent", parent, "id of the task this one is a sub-task of")->capture_default_str();
-  push->add_option("--origin", origin, "who pushes it (the owner of a composite task)")->capture_default_str();
-  push->add_option("--note", note, "human-readable description");
-  push->add_flag("--no-wait", no_wait, "do not wait for the stack's confirmation");
+  push->add_option("task", o.words, "KIND ARGS... (see below)")->required()->allow_extra_args();
+  push->add_option("--priority", o.priority, "higher interrupts lower (the reflex uses 100)")->capture_default_str();
+  push->add_option("--parent", o.parent, "id of the task this one is a sub-task of")->capture_default_str();
+  push->add_option("--origin", o.origin, "who pushes it (the owner of a composite task)")->capture_default_str();
+  push->add_option("--note", o.note, "human-readable description");
+  push->add_flag("--no-wait", o.no_wait, "do not wait for the stack's confirmation");
 
   auto* pop = app.add_subcommand("pop", "cancel the top task, or end task ID");
-  int64_t pop_id = 0;
-  bool pop_done = false, pop_failed = false;
-  std::string reason;
-  pop->add_option("id", pop_id, "task to end (default: the top task, cancelled)");
-  auto* done_flag = pop->add_flag("--done", pop_done, "end task ID as done");
-  pop->add_flag("--failed", pop_failed, "end task ID as failed")->excludes(done_flag);
-  pop->add_option("--reason", reason, "why, for the stack's log and TASK_EVENTS");
-  pop->add_flag("--no-wait", no_wait, "do not wait for the stack's confirmation");
+  pop->add_option("id", o.pop_id, "task to end (default: the top task, cancelled)");
+  auto* done_flag = pop->add_flag("--done", o.pop_done, "end task ID as done");
+  pop->add_flag("--failed", o.pop_failed, "end task ID as failed")->excludes(done_flag);
+  pop->add_option("--reason", o.reason, "why, for the stack's log and TASK_EVENTS");
+  pop->add_flag("--no-wait", o.no_wait, "do not wait for the stack's confirmation");
 
   auto* clear = app.add_subcommand("clear", "cancel every task");
-  clear->add_flag("--no-wait", no_wait, "do not wait for the stack's confirmation");
+  clear->add_flag("--no-wait", o.no_wait, "do not wait for the stack's confirmation");
 
   auto* list = app.add_subcommand("list", "print the task stack, top first");
-  bool json = false;
-  list->add_flag("--json", json, "print it as JSON");
+  list->add_flag("--json", o.json, "print it as JSON");
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  o.action = *push ? Action::Push : *pop ? Action::Pop : *clear ? Action::Clear : Action::List;
+  return std::nullopt;
 
-  lcm::LCM lcm(lcm_url);
-  if (!lcm.good()) {
-    std::fprintf(stderr, "beft-task: error: cannot open LCM at %s\n", lcm_url.c_str());
+}
+
+// Prints the next TASK_STACK message.
+int listStack(lcm::LCM& lcm, const Options& o) {
+  std::optional<beft::task_stack_t> stack;
+  Handler<beft::task_stack_t> handler;
+  handler.on_message = [&](const beft::task_stack_t& m) {
+    if (!stack) stack = m;
+  };
+  auto* sub = lcm.subscribe(beft::channels::kTaskStack, &Handler<beft::task_stack_t>::handle, &handler);
+  sub->setQueueCapacity(100);
+  if (!waitFor(lcm, o.timeout_s, [&] { return stack.has_value(); })) {
+    std::fprintf(stderr,
+                 "beft-task: error: no TASK_STACK within %.1f s on %s: is beft-tasks running there and being "
+                 "fired (a run in progress)?\n",
+                 o.timeout_s, o.lcm_url.c_str());
     return 1;
   }
+  std::fputs(o.json ? beft::task_cli::stackJson(*stack).c_str() : beft::task_cli::formatStack(*stack).c_str(), stdout);
+  return 0;
+}
 
-  if (*list) {
-    std::optional<beft::task_stack_t> stack;
-    Handler<beft::task_stack_t> handler;
-    handler.on_message = [&](const beft::task_stack_t& m) {
-      if (!stack) stack = m;
-    };
-    auto* sub = lcm.subscribe(beft::channels::kTaskStack, &Handler<beft::task_stack_t>::handle, &handler);
-    sub->setQueueCapacity(100);
-    if (!waitFor(lcm, timeout_s, [&] { return stack.has_value(); })) {
-      std::fprintf(stderr,
-                   "beft-task: error: no TASK_STACK within %.1f s on %s: is beft-tasks running there and being "
-                   "fired (a run in progress)?\n",
-                   timeout_s, lcm_url.c_str());
-      return 1;
-    }
-    std::fputs(json ? beft::task_cli::stackJson(*stack).c_str() : beft::task_cli::formatStack(*stack).c_str(), stdout);
-    return 0;
-  }
-
-  beft::task_command_t command;
+// The command asked for, and a word on it for the messages; an exit code
+// when the task given does not parse.
+std::optional<int> buildCommand(const Options& o, beft::task_command_t& command, std::string& what) {
   command.utime = wallMicros();
   command.command_id = wallMicros();
   command.task = beft::tasks::toMessage(beft::tasks::Task{});
   command.task.yaw = 0;
-  std::string what;
-  if (*push) {
+  if (o.action == Action::Push) {
     beft::tasks::Task task;
     try {
-      const std::vector<std::string> args(words.begin() + 1, words.end());
-      task = beft::task_cli::parsePush(words.front(), args);
+      const std::vector<std::string> args(o.words.begin() + 1, o.words.end());
+      task = beft::task_cli::parsePush(o.words.front(), args);
     } catch (const std::invalid_argument& e) {
       std::fprintf(stderr, "beft-task: error: %s\n", e.what());
       return 2;
     }
-    task.priority = priority;
-    task.parent = parent;
-    task.origin = origin;
-    task.note = note;
+    task.priority = o.priority;
+    task.parent = o.parent;
+    task.origin = o.origin;
+    task.note = o.note;
     command.command = beft::task_command_t::COMMAND_PUSH;
     command.task = beft::tasks::toMessage(task);
     what = "push " + beft::tasks::describe(task);
-  } else if (*pop) {
+  } else if (o.action == Action::Pop) {
     command.command = beft::task_command_t::COMMAND_POP;
-    command.task.task_id = pop_id;
-    command.task.status = pop_done     ? beft::task_t::STATUS_DONE
-                          : pop_failed ? beft::task_t::STATUS_FAILED
-                                       : beft::task_t::STATUS_PENDING;
-    command.task.note = reason;
+    command.task.task_id = o.pop_id;
+    command.task.status = o.pop_done     ? beft::task_t::STATUS_DONE
+                          : o.pop_failed ? beft::task_t::STATUS_FAILED
+                                         : beft::task_t::STATUS_PENDING;
+    command.task.note = o.reason;
     command.task.origin = "user";
-    what = pop_id ? "pop of task " + std::to_string(pop_id) : "pop of the top task";
+    what = o.pop_id ? "pop of task " + std::to_string(o.pop_id) : "pop of the top task";
   } else {
     command.command = beft::task_command_t::COMMAND_CLEAR;
     command.task.origin = "user";
     what = "clear";
   }
-  return sendCommand(lcm, command, !no_wait, timeout_s, what);
+  return std::nullopt;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (const auto code = parseOptions(argc, argv, o)) return *code;
+  lcm::LCM lcm(o.lcm_url);
+  if (!lcm.good()) {
+    std::fprintf(stderr, "beft-task: error: cannot open LCM at %s\n", o.lcm_url.c_str());
+    return 1;
+  }
+  if (o.action == Action::List) return listStack(lcm, o);
+  beft::task_command_t command;
+  std::string what;
+  if (const auto code = buildCommand(o, command, what)) return *code;
+  return sendCommand(lcm, command, !o.no_wait, o.timeout_s, what);
 }
