@@ -9,6 +9,10 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "free_port.hpp"
 #include "lcm_url.hpp"
@@ -60,18 +64,17 @@ int runProgram(const std::vector<std::string>& args) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const std::string source_dir = BEFT_SOURCE_DIR;
-  std::string scenario_path, out_dir, logs_dir = source_dir + "/logs";
-  std::string launch_file = source_dir + "/scenarios/launch/mission.xml";
-  std::string net = source_dir + "/scenarios/nets/default.pnml";
+struct Options {
+  std::string scenario_path, out_dir;
+  std::string launch_file = std::string(BEFT_SOURCE_DIR) + "/scenarios/launch/mission.xml";
+  std::string net = std::string(BEFT_SOURCE_DIR) + "/scenarios/nets/default.pnml";
   std::string planner = "pf-geodesic";
   std::vector<std::string> except, sets;
-  long long seed = -1, max_ticks = -1;
+  long long seed = -1, max_ticks = -1;  // -1: the scenario's seed, duration / dt
   bool verbose = false, report = true;
+};
 
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
       "Runs the mission on a scenario: starts every process on a free LCM port of its own "
       "(world, blackboard, arbiter, experts, task stack, planner), runs in lockstep until the "
@@ -80,33 +83,68 @@ int main(int argc, char** argv) {
       "weights.png. Prints the folder's path last. Exits 0 when the run itself worked, "
       "whatever the mission's outcome.",
       "beft-run");
-  app.add_option("scenario", scenario_path, "scenario XML file")->required();
-  app.add_option("--out", out_dir, "run folder (default logs/<scenario>-<time>/)");
-  app.add_option("--planner", planner, "pf | pf-geodesic | astar | ompl:NAME")->capture_default_str();
-  app.add_option("--net", net, "Petri net (PNML) of the schedule");
-  app.add_option("--launch", launch_file, "launch file listing the processes");
-  app.add_option("--seed", seed, "seed (default: the scenario's)");
-  app.add_option("--max-ticks", max_ticks, "stop after this many ticks (default: duration / dt)");
-  app.add_option("--except", except, "do not start this process; start it by hand (repeatable)");
-  app.add_option("--set", sets, "NAME=VALUE for another <arg> of the launch file");
-  app.add_flag("--verbose,-v", verbose, "echo every process's output (always in processes.log)");
-  app.add_flag("!--no-report", report, "skip report.json and the pictures");
-  CLI11_PARSE(app, argc, argv);
+  app.add_option("scenario", o.scenario_path, "scenario XML file")->required();
+  app.add_option("--out", o.out_dir, "run folder (default logs/<scenario>-<time>/)");
+  app.add_option("--planner", o.planner, "pf | pf-geodesic | astar | ompl:NAME")->capture_default_str();
+  app.add_option("--net", o.net, "Petri net (PNML) of the schedule");
+  app.add_option("--launch", o.launch_file, "launch file listing the processes");
+  app.add_option("--seed", o.seed, "seed (default: the scenario's)");
+  app.add_option("--max-ticks", o.max_ticks, "stop after this many ticks (default: duration / dt)");
+  app.add_option("--except", o.except, "do not start this process; start it by hand (repeatable)");
+  app.add_option("--set", o.sets, "NAME=VALUE for another <arg> of the launch file");
+  app.add_flag("--verbose,-v", o.verbose, "echo every process's output (always in processes.log)");
+  app.add_flag("!--no-report", o.report, "skip report.json and the pictures");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  return std::nullopt;
+}
 
+// The launch file's arguments: the run's own, then every --set.
+std::optional<std::map<std::string, std::string>> launchArguments(const Options& o, const beft::scenario::Scenario& scenario,
+                                                                  const std::string& lcm_url) {
+  std::map<std::string, std::string> args = {
+      {"scenario", absolutePath(o.scenario_path)}, {"net", absolutePath(o.net)},
+      {"planner", o.planner},                      {"seed", std::to_string(o.seed)},
+      {"max_ticks", std::to_string(o.max_ticks)},  {"dt", std::to_string(scenario.dt)},
+      {"lcm_url", lcm_url}};
+  for (const auto& set : o.sets) {
+    const auto eq = set.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      std::fprintf(stderr, "[run] error: --set '%s' is not NAME=VALUE\n", set.c_str());
+      return std::nullopt;
+    }
+    args[set.substr(0, eq)] = set.substr(eq + 1);
+  }
+  return args;
+}
+
+// report.json and the pictures, by beft-report; its exit code.
+int writeReport(const Options& o, const beft::launch::SupervisorOptions& options, double wall_s) {
+  char wall[32];
+  std::snprintf(wall, sizeof(wall), "%.3f", wall_s);
+  const int code = runProgram({options.bin_dir + "/beft-report", options.record_log, "--scenario",
+                               absolutePath(o.scenario_path), "--out", o.out_dir, "--wall-time", wall});
+  if (code != 0) std::fprintf(stderr, "[run] error: the report could not be written (code %d)\n", code);
+  return code;
+}
+
+int runMission(Options& o) {
   beft::scenario::Scenario scenario;
   try {
-    scenario = beft::scenario::loadScenario(scenario_path);
+    scenario = beft::scenario::loadScenario(o.scenario_path);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 2;
   }
-  if (seed < 0) seed = static_cast<long long>(scenario.seed);
-  if (max_ticks < 0) max_ticks = static_cast<long long>(std::ceil(scenario.duration / scenario.dt - 1e-9));
-
-  if (out_dir.empty()) out_dir = logs_dir + "/" + scenario.name + "-" + timestamp();
-  out_dir = absolutePath(out_dir);
-  if (!makeDirectories(out_dir)) {
-    std::fprintf(stderr, "[run] error: cannot create the run folder %s\n", out_dir.c_str());
+  if (o.seed < 0) o.seed = static_cast<long long>(scenario.seed);
+  if (o.max_ticks < 0) o.max_ticks = static_cast<long long>(std::ceil(scenario.duration / scenario.dt - 1e-9));
+  if (o.out_dir.empty()) o.out_dir = std::string(BEFT_SOURCE_DIR) + "/logs/" + scenario.name + "-" + timestamp();
+  o.out_dir = absolutePath(o.out_dir);
+  if (!makeDirectories(o.out_dir)) {
+    std::fprintf(stderr, "[run] error: cannot create the run folder %s\n", o.out_dir.c_str());
     return 1;
   }
   const int port = beft::launch::findFreeUdpPort();
@@ -114,39 +152,24 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "[run] error: no free UDP port for LCM\n");
     return 1;
   }
-
   beft::launch::SupervisorOptions options;
   options.lcm_url = beft::lcmUrlForPort(port);
   options.bin_dir = beft::ownBinDir();
-  options.except = {except.begin(), except.end()};
-  options.record_log = out_dir + "/run.lcmlog";
-  options.quiet_children = !verbose;
-  options.output_file = out_dir + "/processes.log";
-
-  std::map<std::string, std::string> args = {
-      {"scenario", absolutePath(scenario_path)}, {"net", absolutePath(net)},
-      {"planner", planner},                      {"seed", std::to_string(seed)},
-      {"max_ticks", std::to_string(max_ticks)},  {"dt", std::to_string(scenario.dt)},
-      {"lcm_url", options.lcm_url}};
-  for (const auto& set : sets) {
-    const auto eq = set.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      std::fprintf(stderr, "[run] error: --set '%s' is not NAME=VALUE\n", set.c_str());
-      return 2;
-    }
-    args[set.substr(0, eq)] = set.substr(eq + 1);
-  }
-
-  std::printf("[run] scenario %s (%s): up to %lld ticks of %.3g s, seed %lld, planner %s\n",
-              scenario.name.c_str(), scenario_path.c_str(), max_ticks, scenario.dt, seed, planner.c_str());
-  std::printf("[run] LCM %s; process output in %s/processes.log\n", options.lcm_url.c_str(), out_dir.c_str());
+  options.except = {o.except.begin(), o.except.end()};
+  options.record_log = o.out_dir + "/run.lcmlog";
+  options.quiet_children = !o.verbose;
+  options.output_file = o.out_dir + "/processes.log";
+  const auto args = launchArguments(o, scenario, options.lcm_url);
+  if (!args) return 2;
+  std::printf("[run] scenario %s (%s): up to %lld ticks of %.3g s, seed %lld, planner %s\n", scenario.name.c_str(),
+              o.scenario_path.c_str(), o.max_ticks, scenario.dt, o.seed, o.planner.c_str());
+  std::printf("[run] LCM %s; process output in %s/processes.log\n", options.lcm_url.c_str(), o.out_dir.c_str());
   std::fflush(stdout);
 
   beft::launch::RunOutcome outcome;
   const auto start = std::chrono::steady_clock::now();
   try {
-    const auto spec = beft::launch::loadLaunchFile(launch_file, args);
-    outcome = beft::launch::supervise(spec, options);
+    outcome = beft::launch::supervise(beft::launch::loadLaunchFile(o.launch_file, *args), options);
   } catch (const beft::launch::LaunchError& e) {
     std::fprintf(stderr, "[run] error: %s\n", e.what());
     return 2;
@@ -154,18 +177,18 @@ int main(int argc, char** argv) {
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const bool worked = outcome.arbiter_ran && outcome.arbiter_exit_code == 0 && !outcome.interrupted;
   std::printf("[run] %s after %.2f s wall time\n", outcome.message.c_str(), wall_s);
-
-  int report_code = 0;
-  if (report && outcome.arbiter_ran) {
-    char wall[32];
-    std::snprintf(wall, sizeof(wall), "%.3f", wall_s);
-    report_code = runProgram({options.bin_dir + "/beft-report", options.record_log, "--scenario",
-                              absolutePath(scenario_path), "--out", out_dir, "--wall-time", wall});
-    if (report_code != 0) std::fprintf(stderr, "[run] error: the report could not be written (code %d)\n", report_code);
-  }
+  const int report_code = o.report && outcome.arbiter_ran ? writeReport(o, options, wall_s) : 0;
   if (!worked)
     std::fprintf(stderr, "[run] error: the run did not complete: %s (see %s/processes.log)\n",
-                 outcome.message.c_str(), out_dir.c_str());
-  std::printf("%s\n", out_dir.c_str());
+                 outcome.message.c_str(), o.out_dir.c_str());
+  std::printf("%s\n", o.out_dir.c_str());
   return worked && report_code == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const auto code = parseOptions(argc, argv, options)) return *code;
+  return runMission(options);
 }
