@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "pnml_reader.hpp"
@@ -48,45 +49,7 @@ void printSummary(const Net& net, const std::string& path) {
   std::printf("experts (%zu): %s\n", experts.size(), list.c_str());
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  std::string path;
-  ReachabilityOptions options;
-  CLI::App app(
-      "Checks a PNML net for the arbiter: explores every reachable state (an expert transition\n"
-      "is start + end, so concurrent firings are explored in every order; an expert runs one\n"
-      "firing at a time) and reports the number of reachable markings, whether the net is\n"
-      "1-safe, dead transitions, deadlock markings, and whether the end of the tick (the tick\n"
-      "transition enabled) is reachable from every reachable marking.\n"
-      "Exit 0: 1-safe and live; 1: not (the reasons are printed); 2: the file does not parse.",
-      "beft-net-check");
-  app.add_option("net", path, "PNML file")->required();
-  app.add_option("--max-states", options.max_states, "stop exploring after this many states")
-      ->capture_default_str()->check(CLI::PositiveNumber);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
-
-  Net net;
-  try {
-    net = readPnmlFile(path);
-  } catch (const NetError& e) {
-    for (const auto& problem : e.problems()) std::fprintf(stderr, "%s\n", problem.c_str());
-    return 2;
-  }
-  for (const auto& warning : net.warnings) std::printf("warning: %s\n", warning.c_str());
-  printSummary(net, path);
-
-  const ReachabilityReport report = exploreReachability(net, options);
-  std::printf("reachable markings: %zu (places and firings in flight; %zu distinct markings of the places)%s\n",
-              report.num_states, report.num_place_markings,
-              report.complete    ? ""
-              : report.unbounded ? " -- exploration stopped: the net is unbounded, results are partial"
-                                 : " -- exploration stopped at --max-states, results are partial");
-
+void printSafety(const Net& net, const ReachabilityReport& report) {
   if (report.unbounded) {
     std::printf("bounded: NO, place '%s' grows without limit: %s covers an earlier marking\n",
                 net.places[report.growing_place].id.c_str(),
@@ -105,6 +68,9 @@ int main(int argc, char** argv) {
     printTrace(*report.unsafe_witness);
   }
 
+}
+
+void printDeadTransitions(const Net& net, const ReachabilityReport& report) {
   if (!report.complete) {
     std::printf("dead transitions: unknown (exploration incomplete); %zu not fired in the part explored\n",
                 report.dead_transitions.size());
@@ -120,6 +86,9 @@ int main(int argc, char** argv) {
     }
   }
 
+}
+
+void printDeadlocks(const Net& net, const ReachabilityReport& report) {
   if (report.num_deadlocks == 0) {
     std::printf("deadlock markings: none\n");
   } else {
@@ -130,6 +99,9 @@ int main(int argc, char** argv) {
     }
   }
 
+}
+
+void printTickEnd(const Net& net, const ReachabilityReport& report) {
   if (!report.complete) {
     std::printf("tick end reachable from every reachable marking: unknown (exploration incomplete)\n");
   } else if (report.num_states_without_tick_end == 0) {
@@ -141,6 +113,10 @@ int main(int argc, char** argv) {
     printTrace(*report.no_tick_end_witness);
   }
 
+}
+
+// The last line and the exit code: 0 when 1-safe and live, 1 with the reasons.
+int printVerdict(const ReachabilityReport& report, const ReachabilityOptions& options) {
   if (report.ok()) {
     std::printf("result: OK, 1-safe and live\n");
     return 0;
@@ -156,4 +132,60 @@ int main(int argc, char** argv) {
   if (report.num_states_without_tick_end > 0) add("the tick end is not always reachable");
   std::printf("result: NOT OK: %s\n", reasons.c_str());
   return 1;
+}
+
+struct Options {
+  std::string path;
+  ReachabilityOptions reachability;
+};
+
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
+  CLI::App app(
+      "Checks a PNML net for the arbiter: explores every reachable state (an expert transition\n"
+      "is start + end, so concurrent firings are explored in every order; an expert runs one\n"
+      "firing at a time) and reports the number of reachable markings, whether the net is\n"
+      "1-safe, dead transitions, deadlock markings, and whether the end of the tick (the tick\n"
+      "transition enabled) is reachable from every reachable marking.\n"
+      "Exit 0: 1-safe and live; 1: not (the reasons are printed); 2: the file does not parse.",
+      "beft-net-check");
+  app.add_option("net", o.path, "PNML file")->required();
+  app.add_option("--max-states", o.reachability.max_states, "stop exploring after this many states")
+      ->capture_default_str()->check(CLI::PositiveNumber);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  return std::nullopt;
+}
+
+int check(const Options& o) {
+  Net net;
+  try {
+    net = readPnmlFile(o.path);
+  } catch (const NetError& e) {
+    for (const auto& problem : e.problems()) std::fprintf(stderr, "%s\n", problem.c_str());
+    return 2;
+  }
+  for (const auto& warning : net.warnings) std::printf("warning: %s\n", warning.c_str());
+  printSummary(net, o.path);
+  const ReachabilityReport report = exploreReachability(net, o.reachability);
+  std::printf("reachable markings: %zu (places and firings in flight; %zu distinct markings of the places)%s\n",
+              report.num_states, report.num_place_markings,
+              report.complete    ? ""
+              : report.unbounded ? " -- exploration stopped: the net is unbounded, results are partial"
+                                 : " -- exploration stopped at --max-states, results are partial");
+  printSafety(net, report);
+  printDeadTransitions(net, report);
+  printDeadlocks(net, report);
+  printTickEnd(net, report);
+  return printVerdict(report, o.reachability);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const auto code = parseOptions(argc, argv, options)) return *code;
+  return check(options);
 }
