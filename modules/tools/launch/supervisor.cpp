@@ -234,18 +234,11 @@ std::string commandLineOf(const ProcessSpec& process, const SupervisorOptions& o
   return line;
 }
 
-RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
-  g_interrupted = false;
-  struct sigaction action {};
-  action.sa_handler = onSignal;
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-  signal(SIGPIPE, SIG_IGN);
+namespace {
 
-  Printer printer(options.quiet_children, options.output_file);
-  RunOutcome outcome;
+// The recorder first, when the run is recorded, then each process of this host.
+std::vector<Child> childrenToStart(const LaunchSpec& spec, const SupervisorOptions& options, Printer& printer) {
   std::vector<Child> children;
-
   if (!options.record_log.empty()) {
     // Replaced anyway (--force); gone now so that its appearance means the recorder listens.
     std::error_code error;
@@ -280,7 +273,85 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
     }
     children.push_back(child);
   }
+  return children;
+}
 
+// One child that exited: the arbiter ends the run (true); another is
+// restarted by its policy, or left finished.
+bool onChildExit(Child& child, int status, Printer& printer, RunOutcome& outcome) {
+  child.running = false;
+  drain(child, printer, true);
+  close(child.output_fd);
+  child.output_fd = -1;
+  const bool failed = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  if (child.spec.is_arbiter) {
+    outcome.arbiter_exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    printer.own("arbiter " + describeStatus(status) + ": the run is over");
+    return true;
+  }
+  if (failed && child.spec.restart == RestartPolicy::OnFailure && child.restarts < child.spec.max_restarts) {
+    ++child.restarts;
+    printer.own(child.spec.name + " " + describeStatus(status) + ": restarting (" + std::to_string(child.restarts) +
+                "/" + std::to_string(child.spec.max_restarts) + ")");
+    child.restart_scheduled = true;
+    child.restart_at = Clock::now() + std::chrono::milliseconds(500);
+  } else {
+    printer.own(child.spec.name + " " + describeStatus(status) +
+                (failed && child.spec.restart == RestartPolicy::OnFailure ? " (restart limit reached)" : ""));
+    child.finished = true;
+  }
+  return false;
+}
+
+// Relays the children's output and watches them until the arbiter ends,
+// everything has exited or a signal came.
+void watchChildren(std::vector<Child>& children, Printer& printer, RunOutcome& outcome) {
+  while (true) {
+    if (g_interrupted) {
+      outcome.interrupted = true;
+      outcome.message = "interrupted";
+      printer.own("interrupted: stopping every process");
+      return;
+    }
+    std::vector<pollfd> fds;
+    for (auto& child : children)
+      if (child.output_fd >= 0) fds.push_back({child.output_fd, POLLIN, 0});
+    poll(fds.data(), fds.size(), 50);
+    for (auto& child : children) drain(child, printer, false);
+    bool arbiter_done = false;
+    for (auto& child : children) {
+      int status = 0;
+      if (!child.running || waitpid(child.pid, &status, WNOHANG) != child.pid) continue;
+      arbiter_done |= onChildExit(child, status, printer, outcome);
+    }
+    if (arbiter_done) return;
+    for (auto& child : children)
+      if (child.restart_scheduled && Clock::now() >= child.restart_at) {
+        child.restart_scheduled = false;
+        if (!start(child, printer)) child.finished = true;
+      }
+    bool any_alive = false;
+    for (auto& child : children) any_alive |= child.running || child.restart_scheduled;
+    if (!any_alive) {
+      outcome.message = "every process has exited";
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
+  g_interrupted = false;
+  struct sigaction action {};
+  action.sa_handler = onSignal;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  signal(SIGPIPE, SIG_IGN);
+
+  Printer printer(options.quiet_children, options.output_file);
+  RunOutcome outcome;
+  std::vector<Child> children = childrenToStart(spec, options, printer);
   for (auto& child : children) {
     if (!start(child, printer)) {
       outcome.message = "could not start " + child.spec.name;
@@ -295,60 +366,7 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
     }
   }
   printer.own("started " + std::to_string(children.size()) + " processes on " + options.lcm_url);
-
-  while (true) {
-    if (g_interrupted) {
-      outcome.interrupted = true;
-      outcome.message = "interrupted";
-      printer.own("interrupted: stopping every process");
-      break;
-    }
-    std::vector<pollfd> fds;
-    for (auto& child : children)
-      if (child.output_fd >= 0) fds.push_back({child.output_fd, POLLIN, 0});
-    poll(fds.data(), fds.size(), 50);
-    for (auto& child : children) drain(child, printer, false);
-
-    bool arbiter_done = false;
-    for (auto& child : children) {
-      if (!child.running) continue;
-      int status = 0;
-      if (waitpid(child.pid, &status, WNOHANG) != child.pid) continue;
-      child.running = false;
-      drain(child, printer, true);
-      close(child.output_fd);
-      child.output_fd = -1;
-      const bool failed = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-      if (child.spec.is_arbiter) {
-        outcome.arbiter_exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-        printer.own("arbiter " + describeStatus(status) + ": the run is over");
-        arbiter_done = true;
-      } else if (failed && child.spec.restart == RestartPolicy::OnFailure &&
-                 child.restarts < child.spec.max_restarts) {
-        ++child.restarts;
-        printer.own(child.spec.name + " " + describeStatus(status) + ": restarting (" +
-                    std::to_string(child.restarts) + "/" + std::to_string(child.spec.max_restarts) + ")");
-        child.restart_scheduled = true;
-        child.restart_at = Clock::now() + std::chrono::milliseconds(500);
-      } else {
-        printer.own(child.spec.name + " " + describeStatus(status) +
-                    (failed && child.spec.restart == RestartPolicy::OnFailure ? " (restart limit reached)" : ""));
-        child.finished = true;
-      }
-    }
-    if (arbiter_done) break;
-    for (auto& child : children)
-      if (child.restart_scheduled && Clock::now() >= child.restart_at) {
-        child.restart_scheduled = false;
-        if (!start(child, printer)) child.finished = true;
-      }
-    bool any_alive = false;
-    for (auto& child : children) any_alive |= child.running || child.restart_scheduled;
-    if (!any_alive) {
-      outcome.message = "every process has exited";
-      break;
-    }
-  }
+  watchChildren(children, printer, outcome);
   stopAll(children, printer, options.stop_grace_s);
   if (outcome.message.empty() && outcome.arbiter_exit_code >= 0)
     outcome.message = outcome.arbiter_exit_code == 0 ? "run finished" : "run failed";
