@@ -118,51 +118,57 @@ cv::Mat instanceImage(const camera::RenderedFrame& frame, const world::WorldSimu
   return image;
 }
 
-cv::Mat topDownImage(const world::WorldSimulation& world, double pixels_per_metre) {
-  const scenario::Scenario& scenario = world.scenario();
-  const double width = scenario.world.width, height = scenario.world.height;
-  if (!(pixels_per_metre > 0)) pixels_per_metre = std::clamp(1200.0 / std::max(width, height), 4.0, 80.0);
-  const int margin = 30, legend = 60;
-  const int image_width = static_cast<int>(std::ceil(width * pixels_per_metre)) + 2 * margin;
-  const int image_height = static_cast<int>(std::ceil(height * pixels_per_metre)) + 2 * margin + legend;
-  cv::Mat image(image_height, image_width, CV_8UC3, cv::Scalar(236, 238, 240));
-  // World (x, y) to pixel: y up in the world, down in the image.
-  const auto toPixel = [&](double x, double y) {
+namespace {
+
+// A top-down picture of the world: pixels_per_metre, a margin around it and
+// a legend band above; world (x, y) has y up, the image y down.
+struct TopDownCanvas {
+  cv::Mat image;
+  double pixels_per_metre = 0, width = 0, height = 0;
+  int margin = 30, legend = 60;
+  cv::Point toPixel(double x, double y) const {
     return cv::Point(static_cast<int>(std::lround(margin + x * pixels_per_metre)),
                      static_cast<int>(std::lround(margin + legend + (height - y) * pixels_per_metre)));
-  };
-  const auto metres = [&](double m) { return static_cast<int>(std::lround(m * pixels_per_metre)); };
+  }
+  int metres(double m) const { return static_cast<int>(std::lround(m * pixels_per_metre)); }
+};
 
+void drawGround(TopDownCanvas& c) {
   // Ground and 1 m grid (every 5 m darker), with axis labels.
-  cv::rectangle(image, toPixel(0, height), toPixel(width, 0), cv::Scalar(206, 214, 220), cv::FILLED);
-  for (int x = 0; x <= static_cast<int>(width); ++x) {
-    cv::line(image, toPixel(x, 0), toPixel(x, height), x % 5 ? cv::Scalar(222, 226, 230) : cv::Scalar(180, 186, 192), 1);
-    if (x % 5 == 0) putLabel(image, std::to_string(x), toPixel(x, 0) + cv::Point(-4, 18), 0.4, cv::Scalar(255, 255, 255));
+  cv::rectangle(c.image, c.toPixel(0, c.height), c.toPixel(c.width, 0), cv::Scalar(206, 214, 220), cv::FILLED);
+  for (int x = 0; x <= static_cast<int>(c.width); ++x) {
+    cv::line(c.image, c.toPixel(x, 0), c.toPixel(x, c.height), x % 5 ? cv::Scalar(222, 226, 230) : cv::Scalar(180, 186, 192), 1);
+    if (x % 5 == 0) putLabel(c.image, std::to_string(x), c.toPixel(x, 0) + cv::Point(-4, 18), 0.4, cv::Scalar(255, 255, 255));
   }
-  for (int y = 0; y <= static_cast<int>(height); ++y) {
-    cv::line(image, toPixel(0, y), toPixel(width, y), y % 5 ? cv::Scalar(222, 226, 230) : cv::Scalar(180, 186, 192), 1);
-    if (y % 5 == 0) putLabel(image, std::to_string(y), toPixel(0, y) + cv::Point(-26, 4), 0.4, cv::Scalar(255, 255, 255));
+  for (int y = 0; y <= static_cast<int>(c.height); ++y) {
+    cv::line(c.image, c.toPixel(0, y), c.toPixel(c.width, y), y % 5 ? cv::Scalar(222, 226, 230) : cv::Scalar(180, 186, 192), 1);
+    if (y % 5 == 0) putLabel(c.image, std::to_string(y), c.toPixel(0, y) + cv::Point(-26, 4), 0.4, cv::Scalar(255, 255, 255));
   }
-  cv::rectangle(image, toPixel(0, height), toPixel(width, 0), cv::Scalar(90, 90, 90), 2);
+  cv::rectangle(c.image, c.toPixel(0, c.height), c.toPixel(c.width, 0), cv::Scalar(90, 90, 90), 2);
 
+}
+
+void drawFieldOfView(TopDownCanvas& c, const camera::Camera& camera) {
   // Camera field of view: a wedge out to the range, under everything else.
-  const camera::Camera camera = world.camera();
   const double yaw = camera.pose.yaw_deg, half_fov = camera.intrinsics.fov_deg / 2;
   const double range = camera.intrinsics.range;
-  std::vector<cv::Point> wedge{toPixel(camera.pose.x, camera.pose.y)};
+  std::vector<cv::Point> wedge{c.toPixel(camera.pose.x, camera.pose.y)};
   for (double a = yaw - half_fov; a <= yaw + half_fov + 1e-9; a += half_fov / 16) {
-    wedge.push_back(toPixel(camera.pose.x + range * std::cos(a * kDegToRad), camera.pose.y + range * std::sin(a * kDegToRad)));
+    wedge.push_back(c.toPixel(camera.pose.x + range * std::cos(a * kDegToRad), camera.pose.y + range * std::sin(a * kDegToRad)));
   }
   {
     // Drawn on a copy, blended back inside the world's rectangle only.
-    cv::Mat overlay = image.clone();
+    cv::Mat overlay = c.image.clone();
     cv::fillPoly(overlay, std::vector<std::vector<cv::Point>>{wedge}, cv::Scalar(120, 220, 250), cv::LINE_AA);
     cv::polylines(overlay, std::vector<std::vector<cv::Point>>{wedge}, true, cv::Scalar(20, 120, 200), 2, cv::LINE_AA);
-    const cv::Rect inside(toPixel(0, height), toPixel(width, 0) + cv::Point(1, 1));
-    cv::Mat region = image(inside);
+    const cv::Rect inside(c.toPixel(0, c.height), c.toPixel(c.width, 0) + cv::Point(1, 1));
+    cv::Mat region = c.image(inside);
     cv::addWeighted(overlay(inside), 0.4, region, 0.6, 0, region);
   }
 
+}
+
+void drawPaths(TopDownCanvas& c, const scenario::Scenario& scenario) {
   // Paths, dashed.
   for (const scenario::Path& path : scenario.paths) {
     std::vector<scenario::Waypoint> points = path.waypoints;
@@ -172,76 +178,102 @@ cv::Mat topDownImage(const world::WorldSimulation& world, double pixels_per_metr
       const double length = std::hypot(dx, dy);
       for (double s = 0; s < length; s += 0.5) {
         const double e = std::min(s + 0.25, length);
-        cv::line(image, toPixel(points[i - 1].x + dx * s / length, points[i - 1].y + dy * s / length),
-                 toPixel(points[i - 1].x + dx * e / length, points[i - 1].y + dy * e / length), cv::Scalar(110, 80, 60), 1,
+        cv::line(c.image, c.toPixel(points[i - 1].x + dx * s / length, points[i - 1].y + dy * s / length),
+                 c.toPixel(points[i - 1].x + dx * e / length, points[i - 1].y + dy * e / length), cv::Scalar(110, 80, 60), 1,
                  cv::LINE_AA);
       }
     }
   }
 
-  // Objects: footprints by category; sound sources ringed (filled dot when active).
-  const std::vector<scenario::Object>& objects = world.objects();
-  for (size_t i = 0; i < objects.size(); ++i) {
-    const scenario::Object& object = objects[i];
-    const cv::Scalar colour = categoryColour(object.label, scenario.categories);
-    const cv::Point centre = toPixel(object.x, object.y);
-    if (object.visual && object.visual->shape == scenario::Visual::Shape::Box) {
-      const double c = std::cos(object.yaw * kDegToRad), s = std::sin(object.yaw * kDegToRad);
-      const double hx = object.visual->size_x / 2, hy = object.visual->size_y / 2;
-      std::vector<cv::Point> corners;
-      for (const auto& [sx, sy] : std::vector<std::pair<int, int>>{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
-        corners.push_back(toPixel(object.x + sx * hx * c - sy * hy * s, object.y + sx * hx * s + sy * hy * c));
-      }
-      cv::fillConvexPoly(image, corners, colour, cv::LINE_AA);
-      cv::polylines(image, std::vector<std::vector<cv::Point>>{corners}, true, cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
-    } else if (object.visual) {
-      cv::circle(image, centre, std::max(2, metres(object.visual->radius)), colour, cv::FILLED, cv::LINE_AA);
-      cv::circle(image, centre, std::max(2, metres(object.visual->radius)), cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
-    } else {
-      // Heard, never seen: a hollow diamond.
-      const int r = 7;
-      std::vector<cv::Point> diamond{centre + cv::Point(0, -r), centre + cv::Point(r, 0), centre + cv::Point(0, r),
-                                     centre + cv::Point(-r, 0)};
-      cv::polylines(image, std::vector<std::vector<cv::Point>>{diamond}, true, colour, 2, cv::LINE_AA);
-    }
-    if (object.acoustic) {
-      const int ring = std::max(8, metres(0.6));
-      cv::circle(image, centre, ring, cv::Scalar(160, 40, 160), 1, cv::LINE_AA);
-      if (object.acoustic->active) cv::circle(image, centre, ring + 4, cv::Scalar(160, 40, 160), 1, cv::LINE_AA);
-    }
-    std::string text = object.id;
-    if (object.activity != "idle") text += " (" + object.activity + ")";
-    putLabel(image, text, centre + cv::Point(6, -8), 0.42, cv::Scalar(255, 255, 255));
-  }
+}
 
+// Footprints by category; sound sources ringed (double ring when active).
+void drawObject(TopDownCanvas& c, const scenario::Object& object, const std::vector<std::string>& categories) {
+  const cv::Scalar colour = categoryColour(object.label, categories);
+  const cv::Point centre = c.toPixel(object.x, object.y);
+  if (object.visual && object.visual->shape == scenario::Visual::Shape::Box) {
+    const double cos_yaw = std::cos(object.yaw * kDegToRad), sin_yaw = std::sin(object.yaw * kDegToRad);
+    const double hx = object.visual->size_x / 2, hy = object.visual->size_y / 2;
+    std::vector<cv::Point> corners;
+    for (const auto& [sx, sy] : std::vector<std::pair<int, int>>{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+      corners.push_back(c.toPixel(object.x + sx * hx * cos_yaw - sy * hy * sin_yaw, object.y + sx * hx * sin_yaw + sy * hy * cos_yaw));
+    }
+    cv::fillConvexPoly(c.image, corners, colour, cv::LINE_AA);
+    cv::polylines(c.image, std::vector<std::vector<cv::Point>>{corners}, true, cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
+  } else if (object.visual) {
+    cv::circle(c.image, centre, std::max(2, c.metres(object.visual->radius)), colour, cv::FILLED, cv::LINE_AA);
+    cv::circle(c.image, centre, std::max(2, c.metres(object.visual->radius)), cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
+  } else {
+    // Heard, never seen: a hollow diamond.
+    const int r = 7;
+    std::vector<cv::Point> diamond{centre + cv::Point(0, -r), centre + cv::Point(r, 0), centre + cv::Point(0, r),
+                                   centre + cv::Point(-r, 0)};
+    cv::polylines(c.image, std::vector<std::vector<cv::Point>>{diamond}, true, colour, 2, cv::LINE_AA);
+  }
+  if (object.acoustic) {
+    const int ring = std::max(8, c.metres(0.6));
+    cv::circle(c.image, centre, ring, cv::Scalar(160, 40, 160), 1, cv::LINE_AA);
+    if (object.acoustic->active) cv::circle(c.image, centre, ring + 4, cv::Scalar(160, 40, 160), 1, cv::LINE_AA);
+  }
+  std::string text = object.id;
+  if (object.activity != "idle") text += " (" + object.activity + ")";
+  putLabel(c.image, text, centre + cv::Point(6, -8), 0.42, cv::Scalar(255, 255, 255));
+}
+
+void drawRobot(TopDownCanvas& c, const world::WorldSimulation& world) {
+  const scenario::Scenario& scenario = world.scenario();
   // The robot: its disc, heading (platform) and nose (camera) direction.
-  const cv::Point robot = toPixel(world.robot().x(), world.robot().y());
-  const int radius = std::max(3, metres(scenario.robot.radius));
-  cv::circle(image, robot, radius, cv::Scalar(150, 70, 20), cv::FILLED, cv::LINE_AA);
-  cv::circle(image, robot, radius, cv::Scalar(20, 20, 20), 1, cv::LINE_AA);
+  const cv::Point robot = c.toPixel(world.robot().x(), world.robot().y());
+  const int radius = std::max(3, c.metres(scenario.robot.radius));
+  cv::circle(c.image, robot, radius, cv::Scalar(150, 70, 20), cv::FILLED, cv::LINE_AA);
+  cv::circle(c.image, robot, radius, cv::Scalar(20, 20, 20), 1, cv::LINE_AA);
   const double heading = world.robot().yaw() * kDegToRad;
-  cv::arrowedLine(image, robot,
+  cv::arrowedLine(c.image, robot,
                   robot + cv::Point(static_cast<int>(1.8 * radius * std::cos(heading)),
                                     static_cast<int>(-1.8 * radius * std::sin(heading))),
                   cv::Scalar(20, 20, 20), 2, cv::LINE_AA, 0, 0.3);
-  putLabel(image, "robot", robot + cv::Point(radius + 4, radius + 12), 0.45, cv::Scalar(255, 255, 255));
+  putLabel(c.image, "robot", robot + cv::Point(radius + 4, radius + 12), 0.45, cv::Scalar(255, 255, 255));
 
+}
+
+void drawTitleAndLegend(TopDownCanvas& c, const world::WorldSimulation& world) {
+  const scenario::Scenario& scenario = world.scenario();
   // Title and legend.
-  putLabel(image,
+  putLabel(c.image,
            scenario.name + format("   tick %.0f   t = %.1f s", static_cast<double>(world.tick()), world.time()) +
                format("   robot (%.2f, %.2f) yaw %.0f", world.robot().x(), world.robot().y(), world.robot().yaw()) +
                format(" head %.0f/%.0f", world.robot().headYaw(), world.robot().headPitch()),
-           {margin, 22}, 0.55, cv::Scalar(255, 255, 255));
-  int x = margin;
+           {c.margin, 22}, 0.55, cv::Scalar(255, 255, 255));
+  int x = c.margin;
   for (const std::string& category : scenario.categories) {
-    cv::rectangle(image, cv::Rect(x, 34, 14, 14), categoryColour(category, scenario.categories), cv::FILLED);
-    putLabel(image, category, {x + 18, 46}, 0.45, cv::Scalar(255, 255, 255));
+    cv::rectangle(c.image, cv::Rect(x, 34, 14, 14), categoryColour(category, scenario.categories), cv::FILLED);
+    putLabel(c.image, category, {x + 18, 46}, 0.45, cv::Scalar(255, 255, 255));
     int baseline = 0;
     x += 34 + cv::getTextSize(category, cv::FONT_HERSHEY_SIMPLEX, 0.45, 1, &baseline).width;
   }
-  cv::circle(image, {x + 8, 41}, 7, cv::Scalar(160, 40, 160), 1, cv::LINE_AA);
-  putLabel(image, "sound (double ring: active)", {x + 20, 46}, 0.45, cv::Scalar(255, 255, 255));
-  return image;
+  cv::circle(c.image, {x + 8, 41}, 7, cv::Scalar(160, 40, 160), 1, cv::LINE_AA);
+  putLabel(c.image, "sound (double ring: active)", {x + 20, 46}, 0.45, cv::Scalar(255, 255, 255));
+}
+
+}  // namespace
+
+cv::Mat topDownImage(const world::WorldSimulation& world, double pixels_per_metre) {
+  const scenario::Scenario& scenario = world.scenario();
+  TopDownCanvas c;
+  c.width = scenario.world.width;
+  c.height = scenario.world.height;
+  if (!(pixels_per_metre > 0)) pixels_per_metre = std::clamp(1200.0 / std::max(c.width, c.height), 4.0, 80.0);
+  c.pixels_per_metre = pixels_per_metre;
+  const int image_width = static_cast<int>(std::ceil(c.width * pixels_per_metre)) + 2 * c.margin;
+  const int image_height = static_cast<int>(std::ceil(c.height * pixels_per_metre)) + 2 * c.margin + c.legend;
+  c.image = cv::Mat(image_height, image_width, CV_8UC3, cv::Scalar(236, 238, 240));
+  drawGround(c);
+  drawFieldOfView(c, world.camera());
+  drawPaths(c, scenario);
+  for (const scenario::Object& object : world.objects()) drawObject(c, object, scenario.categories);
+  drawRobot(c, world);
+  drawTitleAndLegend(c, world);
+  return c.image;
 }
 
 }  // namespace beft::snapshot
