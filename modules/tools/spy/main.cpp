@@ -7,6 +7,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -88,9 +89,7 @@ class Spy {
   int max_lines_;
 };
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Options {
   std::string lcm_url = beft::defaultLcmUrl();
   std::vector<std::string> decoded_channels;
   std::string match = ".*";
@@ -99,28 +98,30 @@ int main(int argc, char** argv) {
   double window_s = 2.0;
   int max_lines = 40;
   int queue_capacity = 2000;
+};
 
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
       "Live view of the channels on the bus: each interval a table with every channel's message type, "
       "message count, rate, size and latest utime; with --channel, every message on that channel decoded "
       "field by field. On a terminal without --channel the table redraws in place; otherwise (piped, or "
       "with --channel) each table is appended.",
       "beft spy");
-  app.add_option("--lcm-url", lcm_url, "LCM URL (env BEFT_LCM_URL)")->capture_default_str();
-  app.add_option("--channel", decoded_channels, "print every message on this channel decoded (repeatable)");
-  app.add_option("--match", match, "only channels matching this regular expression (LCM subscription)")
+  app.add_option("--lcm-url", o.lcm_url, "LCM URL (env BEFT_LCM_URL)")->capture_default_str();
+  app.add_option("--channel", o.decoded_channels, "print every message on this channel decoded (repeatable)");
+  app.add_option("--match", o.match, "only channels matching this regular expression (LCM subscription)")
       ->capture_default_str();
-  app.add_option("--duration", duration_s, "stop after this many seconds, 0 = at Ctrl-C")
+  app.add_option("--duration", o.duration_s, "stop after this many seconds, 0 = at Ctrl-C")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--interval", interval_s, "seconds between tables")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--window", window_s, "seconds the rates are measured over")
+  app.add_option("--interval", o.interval_s, "seconds between tables")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--window", o.window_s, "seconds the rates are measured over")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  app.add_option("--max-lines", max_lines, "lines printed per decoded message")
+  app.add_option("--max-lines", o.max_lines, "lines printed per decoded message")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
-  app.add_option("--queue", queue_capacity, "LCM queue capacity of the subscription [messages]")
+  app.add_option("--queue", o.queue_capacity, "LCM queue capacity of the subscription [messages]")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
   try {
@@ -128,47 +129,64 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     return app.exit(error);
   }
+  return std::nullopt;
 
-  lcm::LCM lcm(lcm_url);
-  if (!lcm.good()) {
-    std::fprintf(stderr, "beft spy: cannot open LCM at %s\n", lcm_url.c_str());
-    return 1;
-  }
-  const auto start = Clock::now();
-  Spy spy(start, window_s, std::set<std::string>(decoded_channels.begin(), decoded_channels.end()), max_lines);
-  lcm::Subscription* subscription = lcm.subscribeFunction(match, &Spy::onMessageOf, &spy);
-  if (!subscription) {
-    std::fprintf(stderr, "beft spy: cannot subscribe to '%s'\n", match.c_str());
-    return 1;
-  }
-  // Handling is cheap (a count) except for decoded channels; a burst of a
-  // tick's messages must not be dropped by the default queue of 30.
-  subscription->setQueueCapacity(queue_capacity);
+}
 
-  std::signal(SIGINT, onSignal);
-  std::signal(SIGTERM, onSignal);
-  const bool redraw = decoded_channels.empty() && isatty(STDOUT_FILENO);
-  const auto interval = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(interval_s));
-  const auto end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(duration_s));
+// Tables every interval, until the duration or a signal; false if LCM failed.
+bool watch(const Options& o, lcm::LCM& lcm, Spy& spy, Clock::time_point start) {
+  const bool redraw = o.decoded_channels.empty() && isatty(STDOUT_FILENO);
+  const auto interval = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.interval_s));
+  const auto end = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.duration_s));
   auto next_table = start + interval;
   while (!g_stop) {
     const auto now = Clock::now();
-    if (duration_s > 0 && now >= end) break;
+    if (o.duration_s > 0 && now >= end) break;
     if (now >= next_table) {
       spy.printTable(redraw);
       next_table += interval;
       if (next_table < now) next_table = now + interval;
     }
     auto wake = next_table;
-    if (duration_s > 0 && end < wake) wake = end;
+    if (o.duration_s > 0 && end < wake) wake = end;
     const int wait_ms = static_cast<int>(
         std::max<int64_t>(1, std::chrono::duration_cast<std::chrono::milliseconds>(wake - now).count()));
     if (lcm.handleTimeout(wait_ms) < 0) {
       if (g_stop) break;  // a signal interrupted the wait
       std::fprintf(stderr, "beft spy: LCM failed while waiting for messages\n");
-      return 1;
+      return false;
     }
   }
+  return true;
+}
+
+int spyOn(const Options& o) {
+  lcm::LCM lcm(o.lcm_url);
+  if (!lcm.good()) {
+    std::fprintf(stderr, "beft spy: cannot open LCM at %s\n", o.lcm_url.c_str());
+    return 1;
+  }
+  const auto start = Clock::now();
+  Spy spy(start, o.window_s, std::set<std::string>(o.decoded_channels.begin(), o.decoded_channels.end()), o.max_lines);
+  lcm::Subscription* subscription = lcm.subscribeFunction(o.match, &Spy::onMessageOf, &spy);
+  if (!subscription) {
+    std::fprintf(stderr, "beft spy: cannot subscribe to '%s'\n", o.match.c_str());
+    return 1;
+  }
+  // Handling is cheap (a count) except for decoded channels; a burst of a
+  // tick's messages must not be dropped by the default queue of 30.
+  subscription->setQueueCapacity(o.queue_capacity);
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+  if (!watch(o, lcm, spy, start)) return 1;
   spy.printTable(false);
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const auto code = parseOptions(argc, argv, options)) return *code;
+  return spyOn(options);
 }
