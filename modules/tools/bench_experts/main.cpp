@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <map>
 #include <numeric>
+#include <optional>
 
 #include "channels.hpp"
 #include "expert_chain.hpp"
@@ -37,12 +38,14 @@ void printRow(const std::string& name, const Summary& s) {
               1e3 * s.max);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Options {
   std::string scenario_path;
   int ticks = 300;
-  double turn_rate = 20, speed = 0;
+  double turn_rate = 20, speed = 0;  // platform motion while running [deg/s], [m/s]
+  std::map<std::string, std::map<std::string, std::string>> parameters;  // by expert
+};
+
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   std::vector<std::string> parameter_args;
   CLI::App app(
       "Times the expert hierarchy (geometry, vision, audio, visual_labels, acoustic_labels, fusion) per "
@@ -51,73 +54,98 @@ int main(int argc, char** argv) {
       "CPU time of fire() per expert (CPU time: a busy machine does not inflate it), the world's step "
       "for comparison, and the message sizes.",
       "beft-bench-experts");
-  app.add_option("--scenario", scenario_path, "scenario XML file")->required();
-  app.add_option("--ticks", ticks, "ticks to run")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--turn-rate", turn_rate, "platform turn rate while running [deg/s]")->capture_default_str();
-  app.add_option("--speed", speed, "platform forward speed while running [m/s]")->capture_default_str();
+  app.add_option("--scenario", o.scenario_path, "scenario XML file")->required();
+  app.add_option("--ticks", o.ticks, "ticks to run")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--turn-rate", o.turn_rate, "platform turn rate while running [deg/s]")->capture_default_str();
+  app.add_option("--speed", o.speed, "platform forward speed while running [m/s]")->capture_default_str();
   app.add_option("--param", parameter_args, "expert parameter EXPERT.NAME=VALUE, e.g. vision.free_space_stride=1");
-  CLI11_PARSE(app, argc, argv);
-
-  std::map<std::string, std::map<std::string, std::string>> parameters;
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
   for (const auto& arg : parameter_args) {
     const auto dot = arg.find('.'), eq = arg.find('=');
     if (dot == std::string::npos || eq == std::string::npos || dot > eq) {
       std::fprintf(stderr, "beft-bench-experts: --param '%s' is not EXPERT.NAME=VALUE\n", arg.c_str());
       return 2;
     }
-    parameters[arg.substr(0, dot)][arg.substr(dot + 1, eq - dot - 1)] = arg.substr(eq + 1);
+    o.parameters[arg.substr(0, dot)][arg.substr(dot + 1, eq - dot - 1)] = arg.substr(eq + 1);
   }
+  return std::nullopt;
+}
 
-  try {
-    const auto scenario = beft::scenario::loadScenario(scenario_path);
-    beft::world::WorldSimulation world(scenario, beft::world::WorldOptions{scenario.seed, 0});
-    beft::bench::ExpertChain chain(parameters);
+struct Timings {
+  std::vector<double> world_seconds, chain_seconds;
+  std::size_t failures = 0;
+};
 
-    std::vector<double> world_seconds, chain_seconds;
-    std::size_t failures = 0;
-    beft::camera::CameraMessages frames;
-    for (int k = 0; k < ticks; ++k) {
-      const double world_start = beft::bench::threadCpuSeconds();
-      if (k > 0) {
-        beft::robot_command_t command{};
-        command.mode = beft::robot_command_t::MODE_VELOCITY;
-        const double heading = world.robotState().yaw * M_PI / 180.0;
-        command.vx = speed * std::cos(heading);
-        command.vy = speed * std::sin(heading);
-        command.yaw_rate = turn_rate;
-        command.source = "bench";
-        world.submitCommand(command);
-        world.step();
-      }
-      const auto scene = world.groundTruth();
-      const auto robot = world.robotState();
-      world.cameraMessages(frames);
-      const double chain_start = beft::bench::threadCpuSeconds();
-      world_seconds.push_back(chain_start - world_start);
-      const auto problems = chain.runTick(scene, robot, frames.depth, frames.instance);
-      chain_seconds.push_back(beft::bench::threadCpuSeconds() - chain_start);
-      for (const auto& p : problems) {
-        if (failures++ < 5) std::fprintf(stderr, "tick %d: %s\n", k, p.c_str());
-      }
+// The world steps (turning and driving), then the experts fire once per tick.
+Timings timeTicks(const Options& o, beft::world::WorldSimulation& world, beft::bench::ExpertChain& chain) {
+  Timings t;
+  beft::camera::CameraMessages frames;
+  for (int k = 0; k < o.ticks; ++k) {
+    const double world_start = beft::bench::threadCpuSeconds();
+    if (k > 0) {
+      beft::robot_command_t command{};
+      command.mode = beft::robot_command_t::MODE_VELOCITY;
+      const double heading = world.robotState().yaw * M_PI / 180.0;
+      command.vx = o.speed * std::cos(heading);
+      command.vy = o.speed * std::sin(heading);
+      command.yaw_rate = o.turn_rate;
+      command.source = "bench";
+      world.submitCommand(command);
+      world.step();
     }
+    const auto scene = world.groundTruth();
+    const auto robot = world.robotState();
+    world.cameraMessages(frames);
+    const double chain_start = beft::bench::threadCpuSeconds();
+    t.world_seconds.push_back(chain_start - world_start);
+    const auto problems = chain.runTick(scene, robot, frames.depth, frames.instance);
+    t.chain_seconds.push_back(beft::bench::threadCpuSeconds() - chain_start);
+    for (const auto& p : problems)
+      if (t.failures++ < 5) std::fprintf(stderr, "tick %d: %s\n", k, p.c_str());
+  }
+  return t;
+}
 
-    std::printf("scenario %s: %zu objects, %d ticks, camera %dx%d, turn %.0f deg/s, speed %.2f m/s\n",
-                scenario.name.c_str(), scenario.objects.size(), ticks, scenario.robot.camera.width,
-                scenario.robot.camera.height, turn_rate, speed);
-    std::printf("  %-16s %9s %9s %9s %9s   [ms of CPU per tick]\n", "expert", "mean", "median", "p95", "max");
-    for (const auto& name : chain.expertNames()) printRow(name, summarise(chain.fireSeconds().at(name)));
-    printRow("all six", summarise(chain_seconds));
-    printRow("(world step)", summarise(world_seconds));
-    const double mean_chain = summarise(chain_seconds).mean;
-    std::printf("  expert hierarchy alone: %.0f ticks/s (%.0fx real time at dt = %.2f s)\n", 1.0 / mean_chain,
-                1.0 / mean_chain * scenario.dt, scenario.dt);
-    std::printf("  message sizes [bytes]: OBSTACLE_MAP %zu, VISION %zu, LABELS_VISUAL %zu, HYPOTHESES %zu\n",
-                chain.latestSize(beft::channels::kObstacleMap), chain.latestSize(beft::channels::kVision),
-                chain.latestSize(beft::channels::kLabelsVisual), chain.latestSize(beft::channels::kHypotheses));
-    if (failures > 0) std::printf("  %zu firing failures (first ones above)\n", failures);
-    return failures > 0 ? 1 : 0;
+void printTimings(const Options& o, const beft::scenario::Scenario& scenario, const beft::bench::ExpertChain& chain,
+                  const Timings& t) {
+  std::printf("scenario %s: %zu objects, %d ticks, camera %dx%d, turn %.0f deg/s, speed %.2f m/s\n",
+              scenario.name.c_str(), scenario.objects.size(), o.ticks, scenario.robot.camera.width,
+              scenario.robot.camera.height, o.turn_rate, o.speed);
+  std::printf("  %-16s %9s %9s %9s %9s   [ms of CPU per tick]\n", "expert", "mean", "median", "p95", "max");
+  for (const auto& name : chain.expertNames()) printRow(name, summarise(chain.fireSeconds().at(name)));
+  printRow("all six", summarise(t.chain_seconds));
+  printRow("(world step)", summarise(t.world_seconds));
+  const double mean_chain = summarise(t.chain_seconds).mean;
+  std::printf("  expert hierarchy alone: %.0f ticks/s (%.0fx real time at dt = %.2f s)\n", 1.0 / mean_chain,
+              1.0 / mean_chain * scenario.dt, scenario.dt);
+  std::printf("  message sizes [bytes]: OBSTACLE_MAP %zu, VISION %zu, LABELS_VISUAL %zu, HYPOTHESES %zu\n",
+              chain.latestSize(beft::channels::kObstacleMap), chain.latestSize(beft::channels::kVision),
+              chain.latestSize(beft::channels::kLabelsVisual), chain.latestSize(beft::channels::kHypotheses));
+  if (t.failures > 0) std::printf("  %zu firing failures (first ones above)\n", t.failures);
+}
+
+int bench(const Options& o) {
+  try {
+    const auto scenario = beft::scenario::loadScenario(o.scenario_path);
+    beft::world::WorldSimulation world(scenario, beft::world::WorldOptions{scenario.seed, 0});
+    beft::bench::ExpertChain chain(o.parameters);
+    const Timings t = timeTicks(o, world, chain);
+    printTimings(o, scenario, chain, t);
+    return t.failures > 0 ? 1 : 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "beft-bench-experts: %s\n", e.what());
     return 1;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const auto code = parseOptions(argc, argv, options)) return *code;
+  return bench(options);
 }
