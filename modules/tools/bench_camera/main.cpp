@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <optional>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -106,15 +107,16 @@ double wallFramesPerSecond(const BenchScene& scene, int threads, double seconds)
   return frames / elapsed;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Options {
   std::vector<int> object_counts{10, 30, 100, 1000};
-  double seconds = 0.5;
-  double width = 60, height = 40;
+  double seconds = 0.5;            // CPU time per measurement
+  double width = 60, height = 40;  // the yard [m]
   uint64_t seed = 1;
   bool skip_brute_force = false;
-  int fixed_frames = 0;
+  int fixed_frames = 0;  // > 0: exactly this many frames per measurement
+};
+
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
       "Benchmarks the RGBD camera's ray caster: frames per second of CPU time on one core for 160x120 and 640x480 images "
       "over random scenes (walls, crates, persons in a yard), for each render method: projection (used by the "
@@ -122,62 +124,88 @@ int main(int argc, char** argv) {
       "is projection over brute force. A last table times a whole world frame: render plus the three "
       "CAMERA_* messages.",
       "beft-bench-camera");
-  app.add_option("--objects", object_counts, "object counts to test")->capture_default_str()->delimiter(',');
-  app.add_option("--seconds", seconds, "CPU time per measurement [s]")->capture_default_str()->check(
+  app.add_option("--objects", o.object_counts, "object counts to test")->capture_default_str()->delimiter(',');
+  app.add_option("--seconds", o.seconds, "CPU time per measurement [s]")->capture_default_str()->check(
       CLI::PositiveNumber);
-  app.add_option("--world", width, "yard width [m] (height is 2/3 of it)")->capture_default_str()->check(
+  app.add_option("--world", o.width, "yard width [m] (height is 2/3 of it)")->capture_default_str()->check(
       CLI::PositiveNumber);
-  app.add_option("--seed", seed, "random scene seed")->capture_default_str();
-  app.add_flag("--no-brute-force", skip_brute_force, "skip the slow baseline");
-  app.add_option("--frames", fixed_frames, "render exactly this many frames per measurement instead (for profilers)")
+  app.add_option("--seed", o.seed, "random scene seed")->capture_default_str();
+  app.add_flag("--no-brute-force", o.skip_brute_force, "skip the slow baseline");
+  app.add_option("--frames", o.fixed_frames, "render exactly this many frames per measurement instead (for profilers)")
       ->check(CLI::PositiveNumber);
-  CLI11_PARSE(app, argc, argv);
-  height = width * 2.0 / 3.0;
-  for (int count : object_counts) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  o.height = o.width * 2.0 / 3.0;
+  for (int count : o.object_counts) {
     if (count < 0) {
       std::fprintf(stderr, "beft-bench-camera: --objects must be >= 0\n");
       return 2;
     }
   }
+  return std::nullopt;
+}
 
+// Render methods against each other, per object count and image size.
+void compareMethods(const Options& o) {
   std::printf("RGBD camera ray caster, frames per second of CPU time on one core; yard %.0f x %.0f m, range 20 m, fov 90 deg, 16 poses cycled\n",
-              width, height);
+              o.width, o.height);
   std::printf("%8s %9s %12s %12s %12s %10s\n", "objects", "image", "projection", "grid", "brute-force",
               "speed-up");
   const int sizes[2][2] = {{160, 120}, {640, 480}};
-  for (int count : object_counts) {
+  for (int count : o.object_counts) {
     for (const auto& size : sizes) {
-      const BenchScene scene = randomScene(count, width, height, size[0], size[1], seed);
-      const double projection = framesPerSecond(scene, RenderMethod::Projection, seconds, 3, false, fixed_frames);
-      const double grid = framesPerSecond(scene, RenderMethod::GridTraversal, seconds, 3, false, fixed_frames);
+      const BenchScene scene = randomScene(count, o.width, o.height, size[0], size[1], o.seed);
+      const double projection = framesPerSecond(scene, RenderMethod::Projection, o.seconds, 3, false, o.fixed_frames);
+      const double grid = framesPerSecond(scene, RenderMethod::GridTraversal, o.seconds, 3, false, o.fixed_frames);
       char resolution[32];
       std::snprintf(resolution, sizeof(resolution), "%dx%d", size[0], size[1]);
-      if (skip_brute_force) {
+      if (o.skip_brute_force) {
         std::printf("%8d %9s %10.1f/s %10.1f/s %12s %10s\n", count, resolution, projection, grid, "-", "-");
       } else {
-        const double brute = framesPerSecond(scene, RenderMethod::BruteForce, seconds, 1, false, fixed_frames);
+        const double brute = framesPerSecond(scene, RenderMethod::BruteForce, o.seconds, 1, false, o.fixed_frames);
         std::printf("%8d %9s %10.1f/s %10.1f/s %10.2f/s %9.1fx\n", count, resolution, projection, grid, brute,
                     projection / brute);
       }
       std::fflush(stdout);
     }
   }
+}
+
+// A whole camera frame as the world publishes it.
+void timeWorldFrames(const Options& o) {
   std::printf("\nWhole camera frame as the world publishes it (projection render + 3 messages), 160x120:\n");
-  for (int count : object_counts) {
-    const BenchScene scene = randomScene(count, width, height, 160, 120, seed);
+  for (int count : o.object_counts) {
+    const BenchScene scene = randomScene(count, o.width, o.height, 160, 120, o.seed);
     std::printf("%8d objects: %10.1f frames/s\n", count,
-                framesPerSecond(scene, RenderMethod::Projection, seconds, 3, true, fixed_frames));
+                framesPerSecond(scene, RenderMethod::Projection, o.seconds, 3, true, o.fixed_frames));
   }
+}
+
+// One and two render threads, alternately.
+void compareThreads(const Options& o) {
   std::printf("\nProjection render over threads (frames per wall-clock second, 1 and 2 threads alternately;\n"
               "the ratio is what the world gains when a second core is free), 160x120:\n");
-  for (int count : object_counts) {
-    const BenchScene scene = randomScene(count, width, height, 160, 120, seed);
+  for (int count : o.object_counts) {
+    const BenchScene scene = randomScene(count, o.width, o.height, 160, 120, o.seed);
     double best[2] = {0, 0};
     for (int round = 0; round < 3; ++round)
       for (int threads = 1; threads <= 2; ++threads)
-        best[threads - 1] = std::max(best[threads - 1], wallFramesPerSecond(scene, threads, seconds / 3));
+        best[threads - 1] = std::max(best[threads - 1], wallFramesPerSecond(scene, threads, o.seconds / 3));
     std::printf("%8d objects: %10.1f/s on 1 thread, %10.1f/s on 2, ratio %.2f\n", count, best[0], best[1],
                 best[1] / best[0]);
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const auto code = parseOptions(argc, argv, options)) return *code;
+  compareMethods(options);
+  timeWorldFrames(options);
+  compareThreads(options);
   return 0;
 }
