@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <optional>
+#include <string>
 
 #include <beft/camera_frame_t.hpp>
 #include <beft/obstacle_map_t.hpp>
@@ -94,75 +96,105 @@ cv::Mat cameraPanel(const TickImages& images, int64_t tick, int height) {
   return panel;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  std::string log_path, to;
+struct Options {
+  std::string log_path, to;  // the run's log; a folder, or FILE.mp4 / FILE.avi
   int every = 5;
   double fps = 10;
+  bool video() const {
+    return to.size() > 4 && (to.substr(to.size() - 4) == ".mp4" || to.substr(to.size() - 4) == ".avi");
+  }
+};
+
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
       "Renders a recorded run frame by frame: the top-down view (world, robot path, the obstacle map known at "
       "that tick, hypotheses) next to the camera image. Writes PNGs into a folder, or a video when the target "
       "ends in .mp4 or .avi (OpenCV VideoWriter). Needs no live system.",
       "beft-render");
-  app.add_option("log", log_path, "the run's LCM log")->required()->check(CLI::ExistingFile);
-  app.add_option("--to", to, "folder for frame_NNNNN.png, or FILE.mp4 / FILE.avi")->required();
-  app.add_option("--every", every, "render every N-th tick")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--fps", fps, "video frame rate")->capture_default_str()->check(CLI::PositiveNumber);
-  CLI11_PARSE(app, argc, argv);
+  app.add_option("log", o.log_path, "the run's LCM log")->required()->check(CLI::ExistingFile);
+  app.add_option("--to", o.to, "folder for frame_NNNNN.png, or FILE.mp4 / FILE.avi")->required();
+  app.add_option("--every", o.every, "render every N-th tick")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--fps", o.fps, "video frame rate")->capture_default_str()->check(CLI::PositiveNumber);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  return std::nullopt;
+}
 
+// Where the frames go: a video writer opened at the first frame, or PNGs in a folder.
+class FrameSink {
+ public:
+  explicit FrameSink(const Options& o) : o_(o) {}
+  bool prepare() {
+    if (o_.video()) return true;
+    mkdir(o_.to.c_str(), 0755);
+    struct stat info {};
+    if (stat(o_.to.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) return true;
+    std::fprintf(stderr, "[render] error: cannot create the folder %s\n", o_.to.c_str());
+    return false;
+  }
+  bool write(const cv::Mat& frame, int64_t tick) {
+    if (o_.video()) {
+      if (!writer_.isOpened()) {
+        const int fourcc = o_.to.substr(o_.to.size() - 4) == ".avi" ? cv::VideoWriter::fourcc('M', 'J', 'P', 'G')
+                                                                     : cv::VideoWriter::fourcc('m', 'p', '4', 'v');
+        if (!writer_.open(o_.to, fourcc, o_.fps, frame.size())) {
+          std::fprintf(stderr, "[render] error: cannot open a video writer for %s\n", o_.to.c_str());
+          return false;
+        }
+      }
+      writer_.write(frame);
+      return true;
+    }
+    char name[64];
+    std::snprintf(name, sizeof(name), "/frame_%05lld.png", static_cast<long long>(tick));
+    if (cv::imwrite(o_.to + name, frame)) return true;
+    std::fprintf(stderr, "[render] error: cannot write %s%s\n", o_.to.c_str(), name);
+    return false;
+  }
+
+ private:
+  const Options& o_;
+  cv::VideoWriter writer_;
+};
+
+int render(const Options& o) {
   report::RunRecord full;
   try {
-    full = report::readRunLog(log_path);
+    full = report::readRunLog(o.log_path);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "[render] error: %s\n", e.what());
     return 1;
   }
   if (full.robot.empty()) {
-    std::fprintf(stderr, "[render] error: %s has no ROBOT_STATE: nothing to render\n", log_path.c_str());
+    std::fprintf(stderr, "[render] error: %s has no ROBOT_STATE: nothing to render\n", o.log_path.c_str());
     return 1;
   }
-  const TickImages images = readTickImages(log_path);
-  const bool video = to.size() > 4 && (to.substr(to.size() - 4) == ".mp4" || to.substr(to.size() - 4) == ".avi");
-  if (!video) {
-    mkdir(to.c_str(), 0755);
-    struct stat info {};
-    if (stat(to.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) {
-      std::fprintf(stderr, "[render] error: cannot create the folder %s\n", to.c_str());
-      return 1;
-    }
-  }
-  cv::VideoWriter writer;
+  const TickImages images = readTickImages(o.log_path);
+  FrameSink sink(o);
+  if (!sink.prepare()) return 1;
   int frames = 0;
-  for (std::size_t i = 0; i < full.robot.size(); i += static_cast<std::size_t>(every)) {
+  for (std::size_t i = 0; i < full.robot.size(); i += static_cast<std::size_t>(o.every)) {
     const auto& sample = full.robot[i];
     const auto part = recordUpTo(full, sample.tick, sample.t, images);
-    report::ScoringOptions options;
-    const auto scored = report::scoreRun(part, options);
+    const auto scored = report::scoreRun(part, report::ScoringOptions{});
     cv::Mat top = report::renderMap(part, scored);
     cv::Mat camera = cameraPanel(images, sample.tick, top.rows);
     cv::Mat frame;
     cv::hconcat(top, camera, frame);
-    if (video) {
-      if (!writer.isOpened()) {
-        const int fourcc = to.substr(to.size() - 4) == ".avi" ? cv::VideoWriter::fourcc('M', 'J', 'P', 'G')
-                                                                : cv::VideoWriter::fourcc('m', 'p', '4', 'v');
-        if (!writer.open(to, fourcc, fps, frame.size())) {
-          std::fprintf(stderr, "[render] error: cannot open a video writer for %s\n", to.c_str());
-          return 1;
-        }
-      }
-      writer.write(frame);
-    } else {
-      char name[64];
-      std::snprintf(name, sizeof(name), "/frame_%05lld.png", static_cast<long long>(sample.tick));
-      if (!cv::imwrite(to + name, frame)) {
-        std::fprintf(stderr, "[render] error: cannot write %s%s\n", to.c_str(), name);
-        return 1;
-      }
-    }
+    if (!sink.write(frame, sample.tick)) return 1;
     ++frames;
   }
-  std::printf("[render] %d frames (every %d ticks) written to %s\n", frames, every, to.c_str());
+  std::printf("[render] %d frames (every %d ticks) written to %s\n", frames, o.every, o.to.c_str());
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const auto code = parseOptions(argc, argv, options)) return *code;
+  return render(options);
 }
