@@ -69,6 +69,16 @@ std::vector<std::string> splitArguments(const std::string& text) {
   return parts;
 }
 
+std::map<std::string, std::string> parseSettings(const std::vector<std::string>& settings) {
+  std::map<std::string, std::string> values;
+  for (const auto& setting : settings) {
+    const auto eq = setting.find('=');
+    if (eq == std::string::npos || eq == 0) throw LaunchError("--set '" + setting + "' is not NAME=VALUE");
+    values[setting.substr(0, eq)] = setting.substr(eq + 1);
+  }
+  return values;
+}
+
 LaunchSpec loadLaunchFile(const std::string& path, const std::map<std::string, std::string>& overrides) {
   tinyxml2::XMLDocument doc;
   if (doc.LoadFile(path.c_str()) != tinyxml2::XML_SUCCESS) {

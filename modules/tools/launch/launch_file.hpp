@@ -54,6 +54,10 @@ class LaunchError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// "NAME=VALUE" settings of launch-file arguments (--set), by name; LaunchError
+// naming the first one that is not NAME=VALUE.
+std::map<std::string, std::string> parseSettings(const std::vector<std::string>& settings);
+
 // Reads and resolves a launch file; overrides set or add <arg> values.
 // Throws LaunchError("FILE:LINE: what is wrong").
 LaunchSpec loadLaunchFile(const std::string& path, const std::map<std::string, std::string>& overrides);

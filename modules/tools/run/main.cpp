@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "free_port.hpp"
+#include "launch_file.hpp"
 #include "lcm_url.hpp"
 #include "load_scenario.hpp"
 #include "own_bin_dir.hpp"
@@ -103,21 +104,14 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
 }
 
 // The launch file's arguments: the run's own, then every --set.
-std::optional<std::map<std::string, std::string>> launchArguments(const Options& o, const beft::scenario::Scenario& scenario,
-                                                                  const std::string& lcm_url) {
+std::map<std::string, std::string> launchArguments(const Options& o, const beft::scenario::Scenario& scenario,
+                                                   const std::string& lcm_url) {
   std::map<std::string, std::string> args = {
       {"scenario", absolutePath(o.scenario_path)}, {"net", absolutePath(o.net)},
       {"planner", o.planner},                      {"seed", std::to_string(o.seed)},
       {"max_ticks", std::to_string(o.max_ticks)},  {"dt", std::to_string(scenario.dt)},
       {"lcm_url", lcm_url}};
-  for (const auto& set : o.sets) {
-    const auto eq = set.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      std::fprintf(stderr, "[run] error: --set '%s' is not NAME=VALUE\n", set.c_str());
-      return std::nullopt;
-    }
-    args[set.substr(0, eq)] = set.substr(eq + 1);
-  }
+  for (const auto& [name, value] : beft::launch::parseSettings(o.sets)) args[name] = value;
   return args;
 }
 
@@ -159,8 +153,13 @@ int runMission(Options& o) {
   options.record_log = o.out_dir + "/run.lcmlog";
   options.quiet_children = !o.verbose;
   options.output_file = o.out_dir + "/processes.log";
-  const auto args = launchArguments(o, scenario, options.lcm_url);
-  if (!args) return 2;
+  std::map<std::string, std::string> args;
+  try {
+    args = launchArguments(o, scenario, options.lcm_url);
+  } catch (const beft::launch::LaunchError& e) {
+    std::fprintf(stderr, "[run] error: %s\n", e.what());
+    return 2;
+  }
   std::printf("[run] scenario %s (%s): up to %lld ticks of %.3g s, seed %lld, planner %s\n", scenario.name.c_str(),
               o.scenario_path.c_str(), o.max_ticks, scenario.dt, o.seed, o.planner.c_str());
   std::printf("[run] LCM %s; process output in %s/processes.log\n", options.lcm_url.c_str(), o.out_dir.c_str());
@@ -169,7 +168,7 @@ int runMission(Options& o) {
   beft::launch::RunOutcome outcome;
   const auto start = std::chrono::steady_clock::now();
   try {
-    outcome = beft::launch::supervise(beft::launch::loadLaunchFile(o.launch_file, *args), options);
+    outcome = beft::launch::supervise(beft::launch::loadLaunchFile(o.launch_file, args), options);
   } catch (const beft::launch::LaunchError& e) {
     std::fprintf(stderr, "[run] error: %s\n", e.what());
     return 2;
