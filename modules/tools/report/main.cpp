@@ -1,6 +1,7 @@
 // beft-report: the report and pictures of a run, from its LCM log.
 #include <iostream>
 #include <optional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -10,7 +11,16 @@
 #include "run_record.hpp"
 #include "run_scoring.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+struct Options {
+  std::string log_path, scenario_path, out_dir;
+  std::optional<double> wall_time;
+  beft::report::ScoringOptions scoring;
+  bool quiet = false;
+};
+
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app{
       "beft-report: reads a run's LCM log and writes DIR/report.json (victims found with their position "
       "error, confidence and time, falsified hypotheses, missed persons, path length, collisions, sim and "
@@ -19,52 +29,66 @@ int main(int argc, char** argv) {
       "task and viewing direction over time), and prints a summary.\n"
       "A victim is found when a hypothesis ends with best category 'person', confidence at least "
       "--person-confidence, was seen by vision and is not falsified; heard alone is not enough."};
-  std::string log_path, scenario_path, out_dir;
-  std::optional<double> wall_time;
-  beft::report::ScoringOptions options;
-  bool quiet = false;
-  app.add_option("log", log_path, "the run's LCM log (run.lcmlog)")->required();
-  app.add_option("--scenario", scenario_path,
+  app.add_option("log", o.log_path, "the run's LCM log (run.lcmlog)")->required();
+  app.add_option("--scenario", o.scenario_path,
                  "scenario XML the run used: ground truth for what the log lacks and a name check");
-  app.add_option("--out", out_dir, "folder for report.json, map.png and weights.png")->required();
-  app.add_option("--wall-time", wall_time, "wall time of the run as measured by the runner [s]; "
-                                           "default: the span of the log's timestamps")
+  app.add_option("--out", o.out_dir, "folder for report.json, map.png and weights.png")->required();
+  app.add_option("--wall-time", o.wall_time, "wall time of the run as measured by the runner [s]; "
+                                             "default: the span of the log's timestamps")
       ->check(CLI::PositiveNumber);
-  app.add_option("--person-confidence", options.person_confidence,
+  app.add_option("--person-confidence", o.scoring.person_confidence,
                  "minimum fused confidence of 'person' for a victim [0..1]")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  app.add_option("--match-radius", options.match_radius,
+  app.add_option("--match-radius", o.scoring.match_radius,
                  "how far a hypothesis not keyed by a person's id may be from that person to match it [m]")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  app.add_flag("--quiet", quiet, "do not print the summary");
-  CLI11_PARSE(app, argc, argv);
-  options.wall_time_s = wall_time;
-
+  app.add_flag("--quiet", o.quiet, "do not print the summary");
   try {
-    auto record = beft::report::readRunLog(log_path);
-    if (!scenario_path.empty()) {
-      const auto scenario = beft::scenario::loadScenario(scenario_path, nullptr);
-      for (const auto& warning : beft::report::applyScenario(record, scenario))
-        std::cerr << "beft-report: warning: " << warning << "\n";
-    } else if (record.truth.empty()) {
-      std::cerr << "beft-report: warning: " << log_path
-                << " has no GT_OBJECTS and no --scenario was given: nothing to score against\n";
-    }
-    for (const auto& [channel, count] : record.undecodable)
-      std::cerr << "beft-report: warning: " << count << " message(s) on " << channel << " did not decode\n";
-    if (record.robot.empty()) std::cerr << "beft-report: warning: " << log_path << " has no ROBOT_STATE\n";
-    const auto report = beft::report::scoreRun(record, options);
-    beft::report::writeReportFiles(record, report, out_dir);
-    if (!quiet) beft::report::printSummary(report, std::cout);
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  o.scoring.wall_time_s = o.wall_time;
+  return std::nullopt;
+}
+
+// The run's log, with the scenario's ground truth where the log lacks it;
+// what is missing or did not decode, said on stderr.
+beft::report::RunRecord readRecord(const Options& o) {
+  auto record = beft::report::readRunLog(o.log_path);
+  if (!o.scenario_path.empty()) {
+    const auto scenario = beft::scenario::loadScenario(o.scenario_path, nullptr);
+    for (const auto& warning : beft::report::applyScenario(record, scenario))
+      std::cerr << "beft-report: warning: " << warning << "\n";
+  } else if (record.truth.empty()) {
+    std::cerr << "beft-report: warning: " << o.log_path
+              << " has no GT_OBJECTS and no --scenario was given: nothing to score against\n";
+  }
+  for (const auto& [channel, count] : record.undecodable)
+    std::cerr << "beft-report: warning: " << count << " message(s) on " << channel << " did not decode\n";
+  if (record.robot.empty()) std::cerr << "beft-report: warning: " << o.log_path << " has no ROBOT_STATE\n";
+  return record;
+}
+
+int report(const Options& o) {
+  try {
+    const auto record = readRecord(o);
+    const auto report = beft::report::scoreRun(record, o.scoring);
+    beft::report::writeReportFiles(record, report, o.out_dir);
+    if (!o.quiet) beft::report::printSummary(report, std::cout);
     return 0;
-  } catch (const beft::scenario::ScenarioError& e) {
-    std::cerr << "beft-report: error: " << e.what() << "\n";
-  } catch (const beft::report::ReportError& e) {
-    std::cerr << "beft-report: error: " << e.what() << "\n";
   } catch (const std::exception& e) {
     std::cerr << "beft-report: error: " << e.what() << "\n";
   }
   return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const auto code = parseOptions(argc, argv, options)) return *code;
+  return report(options);
 }
