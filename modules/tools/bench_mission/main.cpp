@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -92,9 +93,13 @@ double median(std::vector<double> values) {
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-}  // namespace
+struct Options {
+  std::string scenario = "scenarios/yard.xml";
+  std::string net;
+  int runs = 3;
+};
 
-int main(int argc, char** argv) {
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app{
       "beft-bench-mission: runs the whole mission (every process, lockstep, recorded) on a scenario "
       "several times: as shipped, with LCM's own receive thread instead of the direct receiver "
@@ -103,23 +108,44 @@ int main(int argc, char** argv) {
       "back to the kernel at once, glibc's default (BEFT_RETAIN_HEAP=0), one after the other, and "
       "prints the median ticks per second and times real time of each and each one's ratio to the shipped "
       "setup. Target: >= 50x real time on yard.xml."};
-  std::string scenario = "scenarios/yard.xml";
-  std::string net;
-  int runs = 3;
-  app.add_option("scenario", scenario, "scenario XML file")->capture_default_str()->check(CLI::ExistingFile);
-  app.add_option("--net", net, "Petri net of the schedule (default: the run's, scenarios/nets/default.pnml)")
+  app.add_option("scenario", o.scenario, "scenario XML file")->capture_default_str()->check(CLI::ExistingFile);
+  app.add_option("--net", o.net, "Petri net of the schedule (default: the run's, scenarios/nets/default.pnml)")
       ->check(CLI::ExistingFile);
-  app.add_option("--runs", runs, "runs of each setup")->capture_default_str()->check(CLI::Range(1, 100));
-  CLI11_PARSE(app, argc, argv);
+  app.add_option("--runs", o.runs, "runs of each setup")->capture_default_str()->check(CLI::Range(1, 100));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  return std::nullopt;
+}
 
-  const std::vector<Variant> variants = {{"as shipped", ""},
-                                         {"LCM receive", "BEFT_UDPM_RECEIVER=0"},
-                                         {"no DONE poll", "BEFT_ARBITER_SPIN_US=0"},
-                                         {"no background", "BEFT_BACKGROUND=0"},
-                                         {"heap given back", "BEFT_RETAIN_HEAP=0"}};
-  const auto work = std::filesystem::temp_directory_path() / ("beft-bench-mission-" + std::to_string(getpid()));
-  std::vector<std::vector<double>> rate(variants.size()), real(variants.size()), overall(variants.size());
+const std::vector<Variant> kVariants = {{"as shipped", ""},
+                                        {"LCM receive", "BEFT_UDPM_RECEIVER=0"},
+                                        {"no DONE poll", "BEFT_ARBITER_SPIN_US=0"},
+                                        {"no background", "BEFT_BACKGROUND=0"},
+                                        {"heap given back", "BEFT_RETAIN_HEAP=0"}};
+
+// Per setup: ticks per second, times real time, and the same with start and stop.
+struct Figures {
+  std::vector<std::vector<double>> rate, real, overall;
   int failures = 0;
+};
+
+// The setups alternated, run after run, so a busy spell of the machine
+// falls on all of them.
+Figures runSetups(const Options& o) {
+  const auto& variants = kVariants;
+  const std::string& scenario = o.scenario;
+  const std::string& net = o.net;
+  const int runs = o.runs;
+  Figures f{std::vector<std::vector<double>>(variants.size()), std::vector<std::vector<double>>(variants.size()),
+            std::vector<std::vector<double>>(variants.size()), 0};
+  auto& rate = f.rate;
+  auto& real = f.real;
+  auto& overall = f.overall;
+  int& failures = f.failures;
+  const auto work = std::filesystem::temp_directory_path() / ("beft-bench-mission-" + std::to_string(getpid()));
   for (int i = 0; i < runs; ++i) {
     for (std::size_t v = 0; v < variants.size(); ++v) {
       const auto out = work / ("setup" + std::to_string(v) + "-run" + std::to_string(i));
@@ -141,8 +167,16 @@ int main(int argc, char** argv) {
     }
   }
   std::filesystem::remove_all(work);
+  return f;
+}
+
+void printMedians(const Options& o, const Figures& f) {
+  const auto& variants = kVariants;
+  const auto& rate = f.rate;
+  const auto& real = f.real;
+  const auto& overall = f.overall;
   std::printf("%s%s, median of %d runs each (lockstep loop; in brackets with every process started and stopped):\n",
-              scenario.c_str(), net.empty() ? "" : (" with " + net).c_str(), runs);
+              o.scenario.c_str(), o.net.empty() ? "" : (" with " + o.net).c_str(), o.runs);
   for (std::size_t v = 0; v < variants.size(); ++v) {
     std::printf("  %-16s %6.0f ticks/s  %5.1fx real time (%4.1fx)", variants[v].name.c_str(), median(rate[v]),
                 median(real[v]), median(overall[v]));
@@ -150,5 +184,14 @@ int main(int argc, char** argv) {
     std::printf("\n");
   }
   std::printf("  target         >= 50x real time\n");
-  return failures ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const auto code = parseOptions(argc, argv, options)) return *code;
+  const Figures figures = runSetups(options);
+  printMedians(options, figures);
+  return figures.failures ? 1 : 0;
 }
