@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <climits>
 #include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "own_bin_dir.hpp"
 
@@ -19,11 +22,14 @@ int execProgram(std::vector<std::string> args) {
   std::fprintf(stderr, "[replay] error: cannot execute %s (is it built? ./beft build)\n", argv[0]);
   return 1;
 }
-}  // namespace
 
-int main(int argc, char** argv) {
+struct Options {
   std::string log, module, to;
   std::vector<std::string> params;
+  std::string every, fps;  // passed on to beft-render as given
+};
+
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
       "Offline tools over a recorded run; the live system is never needed.\n"
       "  --module NAME: runs that expert's own program with --replay LOG: feeds it the inputs it "
@@ -32,34 +38,49 @@ int main(int argc, char** argv) {
       "first difference with both values. Exit 0 on an exact match, 3 on differences.\n"
       "  --to DIR|FILE.mp4: renders the run frame by frame (top-down view and camera image).",
       "beft-replay");
-  app.add_option("log", log, "the run's LCM log (logs/<run>/run.lcmlog)")->required()->check(CLI::ExistingFile);
-  auto* module_option = app.add_option("--module", module,
+  app.add_option("log", o.log, "the run's LCM log (logs/<run>/run.lcmlog)")->required()->check(CLI::ExistingFile);
+  auto* module_option = app.add_option("--module", o.module,
       "expert to replay: world, geometry, vision, audio, visual_labels, acoustic_labels, fusion, dw, exploration, tasks");
-  app.add_option("--param", params, "NAME=VALUE for the replayed expert (repeatable)")->needs(module_option);
-  auto* to_option = app.add_option("--to", to, "render into this folder of PNGs, or this .mp4 file");
+  app.add_option("--param", o.params, "NAME=VALUE for the replayed expert (repeatable)")->needs(module_option);
+  auto* to_option = app.add_option("--to", o.to, "render into this folder of PNGs, or this .mp4 file");
   module_option->excludes(to_option);
-  std::string every, fps;
-  app.add_option("--every", every, "with --to: render every N-th tick (default 5)")->needs(to_option);
-  app.add_option("--fps", fps, "with --to and a video: frame rate (default 10)")->needs(to_option);
-  CLI11_PARSE(app, argc, argv);
+  app.add_option("--every", o.every, "with --to: render every N-th tick (default 5)")->needs(to_option);
+  app.add_option("--fps", o.fps, "with --to and a video: frame rate (default 10)")->needs(to_option);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  return std::nullopt;
+}
 
+// Runs the expert's own program with --replay, or beft-render.
+int replay(const Options& o) {
   const std::string bin = beft::ownBinDir();
-  if (!module.empty()) {
-    std::string program = module;
+  if (!o.module.empty()) {
+    std::string program = o.module;
     std::replace(program.begin(), program.end(), '_', '-');
-    std::vector<std::string> args = {bin + "/beft-" + program, "--replay", log, "--name", module};
-    for (const auto& p : params) {
+    std::vector<std::string> args = {bin + "/beft-" + program, "--replay", o.log, "--name", o.module};
+    for (const auto& p : o.params) {
       args.push_back("--param");
       args.push_back(p);
     }
     return execProgram(args);
   }
-  if (!to.empty()) {
-    std::vector<std::string> args = {bin + "/beft-render", log, "--to", to};
-    if (!every.empty()) args.insert(args.end(), {"--every", every});
-    if (!fps.empty()) args.insert(args.end(), {"--fps", fps});
+  if (!o.to.empty()) {
+    std::vector<std::string> args = {bin + "/beft-render", o.log, "--to", o.to};
+    if (!o.every.empty()) args.insert(args.end(), {"--every", o.every});
+    if (!o.fps.empty()) args.insert(args.end(), {"--fps", o.fps});
     return execProgram(args);
   }
   std::fprintf(stderr, "[replay] error: say what to do: --module NAME or --to DIR|FILE.mp4 (see --help)\n");
   return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const auto code = parseOptions(argc, argv, options)) return *code;
+  return replay(options);
 }
