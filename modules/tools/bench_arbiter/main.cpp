@@ -12,6 +12,7 @@
 #include <deque>
 #include <thread>
 
+#include "command_line.hpp"
 #include "arbiter_core.hpp"
 #include "channels.hpp"
 #include "lcm_arbiter.hpp"
@@ -157,11 +158,7 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--lcm-url", lcm_url, "LCM URL of the LCM run (default: a port of its own)")
       ->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return *code;
   beft::log::setProcessName("bench-arbiter");
   beft::log::setLevel(beft::log::Level::Warn);
   Net net;

@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "command_line.hpp"
 #include "camera_messages.hpp"
 #include "ray_caster.hpp"
 #include "scene_geometry.hpp"
@@ -133,11 +134,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_flag("--no-brute-force", o.skip_brute_force, "skip the slow baseline");
   app.add_option("--frames", o.fixed_frames, "render exactly this many frames per measurement instead (for profilers)")
       ->check(CLI::PositiveNumber);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   o.height = o.width * 2.0 / 3.0;
   for (int count : o.object_counts) {
     if (count < 0) {

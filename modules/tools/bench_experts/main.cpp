@@ -11,6 +11,7 @@
 #include <numeric>
 #include <optional>
 
+#include "command_line.hpp"
 #include "channels.hpp"
 #include "expert_chain.hpp"
 #include "load_scenario.hpp"
@@ -59,11 +60,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--turn-rate", o.turn_rate, "platform turn rate while running [deg/s]")->capture_default_str();
   app.add_option("--speed", o.speed, "platform forward speed while running [m/s]")->capture_default_str();
   app.add_option("--param", parameter_args, "expert parameter EXPERT.NAME=VALUE, e.g. vision.free_space_stride=1");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   for (const auto& arg : parameter_args) {
     const auto dot = arg.find('.'), eq = arg.find('=');
     if (dot == std::string::npos || eq == std::string::npos || dot > eq) {

@@ -23,6 +23,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "command_line.hpp"
 #include "own_bin_dir.hpp"
 
 extern char** environ;
@@ -112,11 +113,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--net", o.net, "Petri net of the schedule (default: the run's, scenarios/nets/default.pnml)")
       ->check(CLI::ExistingFile);
   app.add_option("--runs", o.runs, "runs of each setup")->capture_default_str()->check(CLI::Range(1, 100));
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 }
 

@@ -1,6 +1,7 @@
 // beft-bench-planners: every planner on the same queries (MovingAI maps, the
 // testbed's scenarios, synthetic traps); prints a table and the targets,
 // writes runs.csv, summary.csv, a plot and OMPL benchmark logs.
+#include "command_line.hpp"
 #include "bench_datasets.hpp"
 #include "bench_report.hpp"
 #include "bench_stats.hpp"
@@ -173,11 +174,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--seed", o.seed, "first seed")->capture_default_str();
   app.add_option("--param", o.pf_params, "potential-field parameter name=value, repeatable: " +
                                             joined(bp::PotentialFieldParams::names()));
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   o.quick = quick;
   if (quick) {
     if (queries_opt->count() == 0) o.queries = 2;

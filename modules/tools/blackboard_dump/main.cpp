@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
+#include "command_line.hpp"
 #include "blackboard/message_decoder.hpp"
 #include "blackboard/snapshot_client.hpp"
 #include "lcm_url.hpp"
@@ -90,11 +91,7 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
   app.add_flag("--summary", summary, "one line per channel, no fields");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& error) {
-    return app.exit(error);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return *code;
 
   try {
     return dump(lcm_url, channels, timeout_s, max_lines, summary);

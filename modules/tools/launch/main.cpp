@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "free_port.hpp"
 #include "launch_file.hpp"
 #include "lcm_url.hpp"
@@ -37,11 +38,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--lcm-url", o.lcm_url, "LCM URL for every process (default: BEFT_LCM_URL or host-local)");
   app.add_flag("--new-port", o.new_port, "use a free UDP port of its own instead of the default URL");
   app.add_option("--record", o.record, "record the run's LCM traffic to this log file");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "command_line.hpp"
 #include "pnml_reader.hpp"
 #include "reachability.hpp"
 
@@ -151,11 +152,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("net", o.path, "PNML file")->required();
   app.add_option("--max-states", o.reachability.max_states, "stop exploring after this many states")
       ->capture_default_str()->check(CLI::PositiveNumber);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 }
 

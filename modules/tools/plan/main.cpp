@@ -1,4 +1,5 @@
 // beft-plan: plans one query on a MovingAI map and reports the result.
+#include "command_line.hpp"
 #include "movingai.hpp"
 #include "ompl_planner.hpp"
 #include "path_tools.hpp"
@@ -69,11 +70,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--png", o.png_file, "write a picture of the map, the path and (potential field) the particles");
   app.add_flag("--json", o.json, R"(print one JSON object {"planner","success","length","time_ms","path",...})");
   app.add_flag("--raw", o.raw, "return the planner's own path, not pulled taut into sparse waypoints");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 }
 

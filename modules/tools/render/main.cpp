@@ -17,6 +17,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "command_line.hpp"
 #include "channels.hpp"
 #include "drawing.hpp"
 #include "map_picture.hpp"
@@ -115,11 +116,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--to", o.to, "folder for frame_NNNNN.png, or FILE.mp4 / FILE.avi")->required();
   app.add_option("--every", o.every, "render every N-th tick")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--fps", o.fps, "video frame rate")->capture_default_str()->check(CLI::PositiveNumber);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 }
 

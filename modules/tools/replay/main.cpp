@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "own_bin_dir.hpp"
 
 namespace {
@@ -46,11 +47,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   module_option->excludes(to_option);
   app.add_option("--every", o.every, "with --to: render every N-th tick (default 5)")->needs(to_option);
   app.add_option("--fps", o.fps, "with --to and a video: frame rate (default 10)")->needs(to_option);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 }
 

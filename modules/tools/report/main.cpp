@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "command_line.hpp"
 #include "load_scenario.hpp"
 #include "report_files.hpp"
 #include "report_json.hpp"
@@ -45,11 +46,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_flag("--quiet", o.quiet, "do not print the summary");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   o.scoring.wall_time_s = o.wall_time;
   return std::nullopt;
 }

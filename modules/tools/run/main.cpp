@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "free_port.hpp"
 #include "launch_file.hpp"
 #include "lcm_url.hpp"
@@ -95,11 +96,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--set", o.sets, "NAME=VALUE for another <arg> of the launch file");
   app.add_flag("--verbose,-v", o.verbose, "echo every process's output (always in processes.log)");
   app.add_flag("!--no-report", o.report, "skip report.json and the pictures");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 }
 

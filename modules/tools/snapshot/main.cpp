@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "command_line.hpp"
 #include "load_scenario.hpp"
 #include "log.hpp"
 #include "snapshot_images.hpp"
@@ -60,11 +61,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--zoom", o.zoom, "camera images: pixels per camera pixel")->capture_default_str()->check(
       CLI::Range(1, 16));
   app.add_option("--scale", o.pixels_per_metre, "top-down view: pixels per metre (default: about 1200 px wide)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 }
 

@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
+#include "command_line.hpp"
 #include "blackboard/channel_filter.hpp"
 #include "blackboard/message_decoder.hpp"
 #include "blackboard/store.hpp"
@@ -124,11 +125,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--queue", o.queue_capacity, "LCM queue capacity of the subscription [messages]")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& error) {
-    return app.exit(error);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 
 }

@@ -13,6 +13,7 @@
 #include <beft/task_events_t.hpp>
 #include <beft/task_stack_t.hpp>
 
+#include "command_line.hpp"
 #include "channels.hpp"
 #include "lcm_url.hpp"
 #include "task_cli.hpp"
@@ -182,11 +183,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   auto* list = app.add_subcommand("list", "print the task stack, top first");
   list->add_flag("--json", o.json, "print it as JSON");
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   o.action = *push ? Action::Push : *pop ? Action::Pop : *clear ? Action::Clear : Action::List;
   return std::nullopt;
 
