@@ -4,15 +4,16 @@
 
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "command_line.hpp"
 #include "blackboard/message_decoder.hpp"
 #include "blackboard/snapshot_client.hpp"
+#include "command_line.hpp"
 #include "lcm_url.hpp"
 
 namespace {
@@ -69,32 +70,38 @@ int dump(const std::string& lcm_url, const std::vector<std::string>& channels, d
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Options {
   std::string lcm_url = beft::defaultLcmUrl();
   std::vector<std::string> channels;
   double timeout_s = 2.0;
   int max_lines = 40;
   bool summary = false;
+};
 
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
       "Prints what a running blackboard holds: for each channel its latest message with the message type, "
       "sequence number, utime in seconds and the decoded fields. Exits 1 when no blackboard answers.",
       "beft blackboard dump");
-  app.add_option("--lcm-url", lcm_url, "LCM URL of the running system (env BEFT_LCM_URL)")->capture_default_str();
-  app.add_option("--channel", channels, "only this channel (repeatable); default every channel");
-  app.add_option("--timeout", timeout_s, "seconds to wait for the blackboard's answer")
+  app.add_option("--lcm-url", o.lcm_url, "LCM URL of the running system (env BEFT_LCM_URL)")->capture_default_str();
+  app.add_option("--channel", o.channels, "only this channel (repeatable); default every channel");
+  app.add_option("--timeout", o.timeout_s, "seconds to wait for the blackboard's answer")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  app.add_option("--max-lines", max_lines, "lines printed per message; the rest is counted")
+  app.add_option("--max-lines", o.max_lines, "lines printed per message; the rest is counted")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
-  app.add_flag("--summary", summary, "one line per channel, no fields");
-  if (const auto code = beft::parseCommandLine(app, argc, argv)) return *code;
+  app.add_flag("--summary", o.summary, "one line per channel, no fields");
+  return beft::parseCommandLine(app, argc, argv);
+}
 
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (const auto code = parseOptions(argc, argv, o)) return *code;
   try {
-    return dump(lcm_url, channels, timeout_s, max_lines, summary);
+    return dump(o.lcm_url, o.channels, o.timeout_s, o.max_lines, o.summary);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "beft blackboard dump: %s\n", error.what());
     return 1;
