@@ -9,6 +9,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <deque>
 #include <thread>
 
@@ -141,36 +142,48 @@ void benchLcm(const Net& net, int64_t ticks, const std::string& url) {
               runStateName(core.state()));
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Options {
   std::string net_path = std::string(BEFT_SOURCE_DIR) + "/scenarios/nets/default.pnml";
   int64_t core_ticks = 100000;
   int64_t lcm_ticks = 2000;
   std::string lcm_url = beft::lcmUrlForPort(17000 + static_cast<int>(getpid() % 20000));
+};
+
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app("Measures the arbiter's cost per tick: the core alone with instant in-process experts, "
                "then the LCM loop with an instant responder thread for every expert.",
                "beft-bench-arbiter");
-  app.add_option("--net", net_path, "PNML net")->capture_default_str();
-  app.add_option("--core-ticks", core_ticks, "ticks for the core-only run")->capture_default_str()
+  app.add_option("--net", o.net_path, "PNML net")->capture_default_str();
+  app.add_option("--core-ticks", o.core_ticks, "ticks for the core-only run")->capture_default_str()
       ->check(CLI::PositiveNumber);
-  app.add_option("--lcm-ticks", lcm_ticks, "ticks for the LCM run")->capture_default_str()
+  app.add_option("--lcm-ticks", o.lcm_ticks, "ticks for the LCM run")->capture_default_str()
       ->check(CLI::PositiveNumber);
-  app.add_option("--lcm-url", lcm_url, "LCM URL of the LCM run (default: a port of its own)")
+  app.add_option("--lcm-url", o.lcm_url, "LCM URL of the LCM run (default: a port of its own)")
       ->capture_default_str();
-  if (const auto code = beft::parseCommandLine(app, argc, argv)) return *code;
+  return beft::parseCommandLine(app, argc, argv);
+}
+
+int bench(const Options& o) {
   beft::log::setProcessName("bench-arbiter");
   beft::log::setLevel(beft::log::Level::Warn);
   Net net;
   try {
-    net = readPnmlFile(net_path);
+    net = readPnmlFile(o.net_path);
   } catch (const NetError& e) {
     for (const auto& problem : e.problems()) std::fprintf(stderr, "%s\n", problem.c_str());
     return 2;
   }
-  std::printf("net %s: %zu experts, %zu transitions\n", net_path.c_str(), net.experts().size(),
+  std::printf("net %s: %zu experts, %zu transitions\n", o.net_path.c_str(), net.experts().size(),
               net.transitions.size());
-  benchCore(net, core_ticks);
-  benchLcm(net, lcm_ticks, lcm_url);
+  benchCore(net, o.core_ticks);
+  benchLcm(net, o.lcm_ticks, o.lcm_url);
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const auto code = parseOptions(argc, argv, options)) return *code;
+  return bench(options);
 }
