@@ -11,7 +11,9 @@
 
 #include "blackboard/message_decoder.hpp"
 #include "channels.hpp"
+#include "guarded_decode.hpp"
 #include "log.hpp"
+#include "log_reader.hpp"
 #include "transport.hpp"
 
 namespace beft::blackboard {
@@ -34,8 +36,7 @@ class Traffic {
     if (channel == channels::kBlackboardQuery) {
       beft::bb_query_t query;
       const int size = static_cast<int>(message.size);
-      if (query.decode(message.data, 0, size) == size) onQuery(query);
-      else log::warn("dropped a ", size, "-byte message on ", channel, " that is not a bb_query_t");
+      if (wire::decodeFrom(channel, message.data, message.size, query)) onQuery(query);
       return;
     }
     onAnyMessage(channel, message.data, static_cast<int>(message.size));
@@ -50,9 +51,6 @@ class Traffic {
           log::warn("new channel ", channel, ": unknown type (fingerprint not of any beft type), stored anyway");
         else
           log::info("new channel ", channel, " (", type, ")");
-      } else if (verdict == BlackboardService::Verdict::Rejected) {
-        log::warn("dropped a ", size, "-byte message on ", channel,
-                        ": too short for a fingerprint and a utime");
       }
     } catch (const std::exception& error) {
       log::error("storing a message on ", channel, " failed: ", error.what());
@@ -189,6 +187,18 @@ int BlackboardProcess::serve(service::Context& context) {
   }
   Traffic traffic(context.lcm, *service);
   const transport::Handler handler = [&traffic](const transport::Message& message) { traffic.onMessage(message); };
+  if (!context.resume_log.empty()) {
+    // After a crash: the history it held, from the run's log (queries in it are not answered again).
+    try {
+      wire::LogReader log(context.resume_log);
+      wire::LogEvent event;
+      while (log.next(event)) service->onMessage(event.channel, event.data.data(), static_cast<int>(event.data.size()));
+      log::info("resumed from ", context.resume_log, ": ", service->statusLine());
+    } catch (const std::exception& e) {
+      log::error("cannot resume from ", context.resume_log, ": ", e.what());
+      return 1;
+    }
+  }
   const bool gather = sources.queued && transport::roomToGather(sources.queued->receiveBufferBytes());
   const std::string excluded = joined(options_.exclude);
   log::info("listening on ", context.lcm_url, ": keeping ", options_.limits.history, " messages per channel (at most ",

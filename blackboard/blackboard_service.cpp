@@ -4,6 +4,8 @@
 
 #include "blackboard/snapshot.hpp"
 #include "channels.hpp"
+#include "message_check.hpp"
+#include "reject_counter.hpp"
 
 namespace beft::blackboard {
 
@@ -19,6 +21,14 @@ BlackboardService::Verdict BlackboardService::onMessage(const std::string& chann
   if (isServiceChannel(channel) || !filter_.accepts(channel)) {
     ++messages_excluded_;
     return Verdict::Excluded;
+  }
+  const wire::Verdict check =
+      size < 0 ? wire::Verdict{wire::Fault::kTooShort, ""}
+               : wire::MessageRules::beftTypes().checkForChannel(channel, data, static_cast<std::size_t>(size));
+  if (!check.ok()) {
+    wire::processRejects().count(channel, check);
+    ++messages_rejected_;
+    return Verdict::Rejected;
   }
   const auto sequence = store_.store(channel, data, size);
   if (!sequence) return Verdict::Rejected;
@@ -46,8 +56,7 @@ std::string BlackboardService::statusLine() const {
                      std::to_string(store_.messagesStored()) + " messages stored, " +
                      std::to_string(messages_excluded_) + " excluded, " + held + " held, " +
                      std::to_string(queries_answered_) + " queries answered";
-  if (store_.messagesRejected() > 0)
-    line += ", " + std::to_string(store_.messagesRejected()) + " rejected (shorter than 16 bytes)";
+  if (messages_rejected_ > 0) line += ", " + std::to_string(messages_rejected_) + " rejected as malformed";
   return line;
 }
 

@@ -26,7 +26,7 @@ class BlackboardService {
     Stored,            // kept
     StoredNewChannel,  // kept, the first message on its channel
     Excluded,          // an excluded channel (or the service's own)
-    Rejected,          // too short to be a beft message
+    Rejected,          // refused by the message guard (counted and logged there)
     Ignored,           // LCM's own self-test traffic
   };
 
@@ -50,12 +50,14 @@ class BlackboardService {
 
   const Store& store() const { return store_; }
   uint64_t messagesExcluded() const { return messages_excluded_; }
+  uint64_t messagesRejected() const { return messages_rejected_; }  // refused by the message guard
   uint64_t queriesAnswered() const { return queries_answered_; }
 
  private:
   Store store_;
   ChannelFilter filter_;
   uint64_t messages_excluded_ = 0;
+  uint64_t messages_rejected_ = 0;
   uint64_t queries_answered_ = 0;
 };
 

@@ -8,9 +8,12 @@
 #include <stdexcept>
 
 #include "channels.hpp"
-#include "blackboard/embedded_schemas.hpp"
+#include "embedded_schemas.hpp"
 
 namespace beft::blackboard {
+
+using namespace beft::wire;
+
 namespace {
 
 class DecodeError : public std::runtime_error {

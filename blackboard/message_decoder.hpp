@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "blackboard/lcm_schema.hpp"
+#include "lcm_schema.hpp"
 
 namespace beft::blackboard {
 
@@ -24,15 +24,15 @@ struct DescribeOptions {
 class MessageDecoder {
  public:
   // Takes a finalized type set.
-  explicit MessageDecoder(LcmTypeSet types);
+  explicit MessageDecoder(wire::LcmTypeSet types);
 
   // Every type of lcmtypes/, built once on first use. Thread-safe.
   static const MessageDecoder& beftTypes();
 
-  const LcmTypeSet& types() const { return types_; }
+  const wire::LcmTypeSet& types() const { return types_; }
 
   // The type of an encoded message from its fingerprint, or null.
-  const LcmStruct* typeOf(const void* data, int size) const;
+  const wire::LcmStruct* typeOf(const void* data, int size) const;
 
   // Readable text, one line per field ("name: value"), nested structs
   // indented by two spaces; byte arrays as "<N bytes>", long arrays cut with
@@ -44,7 +44,7 @@ class MessageDecoder {
                                          const DescribeOptions& options = {}) const;
 
  private:
-  LcmTypeSet types_;
+  wire::LcmTypeSet types_;
 };
 
 // The fingerprint an encoded message starts with, if it has 8 bytes.

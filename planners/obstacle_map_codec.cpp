@@ -124,6 +124,12 @@ ObstacleCells decodeObstacleMap(const beft::obstacle_map_t& message) {
   map.origin_x = message.origin_x;
   map.origin_y = message.origin_y;
   const size_t cell_count = static_cast<size_t>(message.width) * message.height;
+  // A received map sizes an allocation: a map larger than any world the
+  // project plans in (2^28 cells: 800 x 800 m at 5 cm) is refused, not allocated.
+  constexpr size_t kMaxCells = size_t{1} << 28;
+  if (cell_count > kMaxCells)
+    throw ObstacleMapError("map of " + std::to_string(message.width) + " x " + std::to_string(message.height) +
+                           " cells exceeds the limit of " + std::to_string(kMaxCells) + " cells");
   if (message.encoding == beft::obstacle_map_t::ENCODING_RAW) {
     if (message.data.size() != cell_count) {
       throw ObstacleMapError("RAW data has " + std::to_string(message.data.size()) +

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <beft/bb_query_t.hpp>
+#include <beft/fire_t.hpp>
 #include <beft/robot_state_t.hpp>
 
 #include "blackboard/blackboard_service.hpp"
@@ -50,7 +51,13 @@ TEST(BlackboardService, ServiceChannelsAreNeverStoredWhateverTheExclusions) {
   EXPECT_EQ(hear(service, "BB_QUERY", bytes), Verdict::Excluded);
   EXPECT_EQ(hear(service, "BB_SNAPSHOT_vision", bytes), Verdict::Excluded);
   EXPECT_EQ(hear(service, "CAMERA_DEPTH", bytes), Verdict::Excluded);
-  EXPECT_EQ(hear(service, "FIRE", bytes), Verdict::StoredNewChannel);  // not excluded any more
+  EXPECT_EQ(hear(service, "ROBOT_STATE_COPY", bytes), Verdict::StoredNewChannel);  // any beft type off the list
+  beft::fire_t fire{};
+  fire.expert = "world";
+  std::vector<uint8_t> fire_bytes(fire.getEncodedSize());
+  fire.encode(fire_bytes.data(), 0, static_cast<int>(fire_bytes.size()));
+  EXPECT_EQ(hear(service, "FIRE", fire_bytes), Verdict::StoredNewChannel);  // not excluded any more
+  EXPECT_EQ(hear(service, "FIRE", bytes), Verdict::Rejected);               // but only what FIRE carries
 }
 
 TEST(BlackboardService, AnswersToTheRequestersChannelWithTheLatest) {

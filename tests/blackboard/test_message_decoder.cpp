@@ -15,10 +15,11 @@
 #include <beft_test/sample_t.hpp>
 
 #include "all_beft_types.hpp"
-#include "blackboard/lcm_schema.hpp"
 #include "blackboard/message_decoder.hpp"
+#include "lcm_schema.hpp"
 
 using namespace beft::blackboard;
+using namespace beft::wire;
 
 namespace {
 

@@ -118,6 +118,10 @@ TEST(ObstacleMapCodec, RejectsInconsistentMessages) {
   bad = makeObstacleMap(sampleMap(), beft::obstacle_map_t::ENCODING_RAW);
   bad.height = 5;  // more cells than data
   EXPECT_THROW(decodeObstacleMap(bad), ObstacleMapError);
+  // Absurd sizes are refused before anything is allocated for them.
+  bad = good;
+  bad.width = bad.height = 2000000000;
+  EXPECT_THROW(decodeObstacleMap(bad), ObstacleMapError);
 }
 
 TEST(ObstacleMapCodec, NamesTheFirstBadCellWhereverItIs) {

@@ -19,6 +19,7 @@
 
 #include "channels.hpp"
 #include "heartbeat_thread.hpp"
+#include "log_replay.hpp"
 #include "log.hpp"
 #include "control_messages.hpp"
 #include "transport.hpp"
@@ -64,10 +65,14 @@ class Runner {
       snapshot_channel_ = std::string(channels::kBlackboardSnapshotPrefix) + options_.process_name + "_" +
                           std::to_string(getpid());
     if (!openSources()) return 1;
-    if (options_.catch_up) requestSnapshot();
+    heartbeat_.emplace(lcm_, options_.process_name, options_.heartbeat_period_s);
+    if (!options_.resume_log.empty()) {
+      if (!resume()) return 1;
+    } else if (options_.catch_up) {
+      requestSnapshot();
+    }
 
     log::info("ready: waiting for FIRE on ", options_.lcm_url);
-    heartbeat_.emplace(lcm_, options_.process_name, options_.heartbeat_period_s);
     const transport::Handler handler = [this](const transport::Message& message) { onMessage(message); };
     while (!g_stop_requested && !run_ended_) {
       // Short waits while a firing waits for its inputs (then their socket
@@ -97,33 +102,62 @@ class Runner {
     const int size = static_cast<int>(message.size);
     if (channel == channels::kFire) {
       beft::fire_t fire;
-      if (decodeMessage(message.data, size, fire)) onFire(fire);
-      else reportUnhandled(channel);
+      if (decodeMessage(channel, message.data, size, fire)) onFire(fire);
     } else if (channel == channels::kRunStatus) {
       beft::run_status_t status;
-      if (decodeMessage(message.data, size, status)) onRunStatus(status);
-      else reportUnhandled(channel);
+      if (decodeMessage(channel, message.data, size, status)) onRunStatus(status);
     } else if (!snapshot_channel_.empty() && channel == snapshot_channel_) {
       beft::bb_snapshot_t snapshot;
-      if (decodeMessage(message.data, size, snapshot)) onSnapshot(snapshot);
-      else reportUnhandled(channel);
+      if (decodeMessage(channel, message.data, size, snapshot)) onSnapshot(snapshot);
     } else if (read_channels_.count(channel)) {
+      if (heardWhileResuming(channel, message.data, message.size)) return;
       live_channels_.insert(channel);
       deliver(channel, message.data, size);
     }
   }
 
+  // Crash-only restart: the state the process had, rebuilt from the run's
+  // log (log_replay.hpp). Inputs queue on the live sockets meanwhile; those
+  // the log also held are dropped once (heardWhileResuming).
+  bool resume() {
+    const int64_t live_since_us = wallMicros();
+    ResumeState state;
+    try {
+      state = resumeFromLog(expert_, options_.process_name, options_.resume_log, live_since_us);
+    } catch (const std::exception& e) {
+      log::error("cannot resume from ", options_.resume_log, ": ", e.what());
+      return false;
+    }
+    if (state.last_fired && state.last_done) {
+      pending_ = *state.last_fired;
+      pending_fired_ = true;
+      last_fired_id_ = state.last_fired->firing_id;
+      last_done_ = *state.last_done;
+      heartbeat_->setState(false, last_fired_id_);
+    }
+    logged_recently_ = std::move(state.logged_recently);
+    log::info("resumed from ", options_.resume_log, ": ", state.firings, " firings and ", state.inputs,
+              " inputs replayed", state.in_flight ? "; firing " + std::to_string(state.in_flight->firing_id) +
+                                                        " was in flight and is awaited from the arbiter"
+                                                  : std::string(),
+              state.log_damage.empty() ? "" : " (log: " + state.log_damage + ")");
+    return true;
+  }
+
+  bool heardWhileResuming(const std::string& channel, const void* data, std::size_t size) {
+    if (logged_recently_.empty()) return false;
+    auto it = logged_recently_.find(messageFingerprint(channel, data, size));
+    if (it == logged_recently_.end()) return false;
+    logged_recently_.erase(it);
+    return true;
+  }
+
   void deliver(const std::string& channel, const void* data, int size) {
     try {
-      if (!expert_.onMessage(channel, data, size)) reportUnhandled(channel);
+      expert_.onMessage(channel, data, size);  // a refused message is counted and logged by the guard
     } catch (const std::exception& e) {
       log::error("message on ", channel, " raised: ", e.what());
     }
-  }
-
-  void reportUnhandled(const std::string& channel) {
-    if (++unhandled_[channel] <= 3 || unhandled_[channel] % 1000 == 0)
-      log::warn("message on ", channel, " not understood (", unhandled_[channel], " so far)");
   }
 
   void onFire(const beft::fire_t& fire_message) {
@@ -266,7 +300,6 @@ class Runner {
   lcm::LCM& lcm_;
   LcmOutput output_;
   std::set<std::string> read_channels_, live_channels_;
-  std::map<std::string, int64_t> unhandled_;
   std::optional<Firing> pending_;
   bool pending_fired_ = false;
   Clock::time_point pending_since_;
@@ -280,6 +313,7 @@ class Runner {
   std::string run_end_reason_;
   std::string snapshot_channel_;
   bool snapshot_received_ = false;
+  std::multiset<uint64_t> logged_recently_;  // inputs the resume replayed that may also arrive live
 };
 
 }  // namespace

@@ -13,6 +13,7 @@ struct LiveOptions {
   double heartbeat_period_s = 0.5;
   double ready_timeout_s = 2.0;  // longest wait for a firing's inputs
   bool catch_up = true;          // ask the blackboard for the current state at start
+  std::string resume_log;        // restarted after a crash: rebuild the state from this run's log first
 };
 
 // Returns the process exit code: 0 after a normal end (signal or end of run).

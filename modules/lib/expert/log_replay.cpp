@@ -1,16 +1,20 @@
 #include "log_replay.hpp"
 
+#include <chrono>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <thread>
 
 #include <beft/done_t.hpp>
 #include <beft/fire_t.hpp>
-#include <lcm/lcm-cpp.hpp>
 
 #include "channels.hpp"
+#include "guarded_decode.hpp"
+#include "log_reader.hpp"
 #include "log.hpp"
 
 namespace beft::expert {
@@ -57,71 +61,178 @@ void compareFirings(OutputsByFiring& recorded, OutputsByFiring& replayed, Replay
   }
 }
 
+// Feeds one expert the log's events as it heard them live: its inputs in
+// log order, its FIREs fired once their inputs are ready (or when a newer
+// FIRE for it comes, as live after the time-out). may_fire decides which
+// FIREs run at all (a resumed expert leaves the one its DONE is missing
+// for to the arbiter, which sends it again).
+class LogFeeder {
+ public:
+  LogFeeder(Expert& expert, std::string process_name, Output& output, std::function<bool(int64_t)> may_fire)
+      : expert_(expert), process_name_(std::move(process_name)), output_(output), may_fire_(std::move(may_fire)) {
+    for (const auto& spec : expert.reads()) reads_.insert(spec.channel);
+  }
+
+  // Returns true if the event was an input delivered to the expert.
+  bool feed(const wire::LogEvent& event) {
+    const std::string& channel = event.channel;
+    if (channel == channels::kFire) {
+      beft::fire_t fire;
+      if (!wire::decodeFrom(channel, event.data.data(), event.data.size(), fire)) return false;
+      if (fire.expert != process_name_ || fire.firing_id <= last_firing_id_) return false;
+      firePending();  // a newer token: the previous one runs now
+      last_firing_id_ = fire.firing_id;
+      pending_ = Firing{fire.expert, fire.transition, fire.tick, fire.utime, fire.firing_id};
+      if (!may_fire_(fire.firing_id)) {
+        in_flight_ = pending_;
+        pending_.reset();
+        return false;
+      }
+      if (expert_.inputsReady(*pending_)) firePending();
+      return false;
+    }
+    if (!reads_.count(channel)) return false;
+    expert_.onMessage(channel, event.data.data(), static_cast<int>(event.data.size()));
+    if (pending_ && expert_.inputsReady(*pending_)) firePending();
+    return true;
+  }
+
+  void firePending() {
+    if (!pending_) return;
+    before_fire_(*pending_);
+    try {
+      expert_.fire(*pending_, output_);
+    } catch (const std::exception& e) {
+      log::warn("replayed firing ", pending_->firing_id, " raised: ", e.what());
+    }
+    ++firings_;
+    last_fired_ = pending_;
+    pending_.reset();
+  }
+
+  int64_t lastFiringId() const { return last_firing_id_; }
+  int64_t firings() const { return firings_; }
+  const std::optional<Firing>& lastFired() const { return last_fired_; }
+  const std::optional<Firing>& inFlight() const { return in_flight_; }
+  void onBeforeFire(std::function<void(const Firing&)> callback) { before_fire_ = std::move(callback); }
+
+ private:
+  Expert& expert_;
+  std::string process_name_;
+  Output& output_;
+  std::function<bool(int64_t)> may_fire_;
+  std::function<void(const Firing&)> before_fire_ = [](const Firing&) {};
+  std::set<std::string> reads_;
+  std::optional<Firing> pending_, last_fired_, in_flight_;
+  int64_t last_firing_id_ = -1;
+  int64_t firings_ = 0;
+};
+
+class DiscardingOutput : public Output {
+ public:
+  void publishEncoded(const std::string&, const std::vector<uint8_t>&) override {}
+};
+
+// The DONEs this process sent, by firing id, as the log holds them.
+std::map<int64_t, beft::done_t> donesOf(const std::string& process_name, const std::string& log_path) {
+  std::map<int64_t, beft::done_t> dones;
+  wire::LogReader log(log_path);
+  wire::LogEvent event;
+  while (log.next(event)) {
+    if (event.channel != channels::kDone) continue;
+    beft::done_t done;
+    if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), done) && done.expert == process_name)
+      dones[done.firing_id] = done;
+  }
+  return dones;
+}
+
+uint64_t fingerprintOf(const std::string& channel, const std::vector<uint8_t>& bytes) {
+  uint64_t hash = 1469598103934665603ull;  // FNV-1a over channel and bytes
+  for (char c : channel) hash = (hash ^ static_cast<uint8_t>(c)) * 1099511628211ull;
+  for (uint8_t b : bytes) hash = (hash ^ b) * 1099511628211ull;
+  return hash;
+}
+
 }  // namespace
 
-ReplayResult replayLog(Expert& expert, const std::string& process_name, const std::string& log_path) {
-  lcm::LogFile log(log_path, "r");
-  if (!log.good()) throw std::runtime_error("cannot read LCM log '" + log_path + "'");
+uint64_t messageFingerprint(const std::string& channel, const void* data, std::size_t size) {
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  return fingerprintOf(channel, std::vector<uint8_t>(bytes, bytes + size));
+}
 
-  std::set<std::string> reads, writes;
-  for (const auto& spec : expert.reads()) reads.insert(spec.channel);
+ReplayResult replayLog(Expert& expert, const std::string& process_name, const std::string& log_path) {
+  std::set<std::string> writes;
   for (const auto& spec : expert.writes()) writes.insert(spec.channel);
 
   ReplayResult result;
   CapturingOutput output;
   output.restrictTo(expert.writes());
   OutputsByFiring recorded;
-  std::optional<Firing> pending;
-  int64_t last_firing_id = -1;
   // Recorded outputs are the messages on its channels between this expert's
   // FIRE and its DONE: others (or a user) may publish on the same channels.
   bool in_recorded_firing = false;
+  LogFeeder feeder(expert, process_name, output, [](int64_t) { return true; });
+  feeder.onBeforeFire([&](const Firing& firing) { output.firing_id = firing.firing_id; });
 
-  auto firePending = [&] {
-    if (!pending) return;
-    output.firing_id = pending->firing_id;
-    try {
-      expert.fire(*pending, output);
-    } catch (const std::exception& e) {
-      log::warn("replayed firing ", pending->firing_id, " raised: ", e.what());
-    }
-    ++result.firings;
-    pending.reset();
-  };
-
-  while (const lcm::LogEvent* event = log.readNextEvent()) {
-    const std::string& channel = event->channel;
-    if (channel == channels::kFire) {
-      beft::fire_t fire;
-      if (fire.decode(event->data, 0, event->datalen) != event->datalen) continue;
-      if (fire.expert != process_name || fire.firing_id <= last_firing_id) continue;
-      firePending();  // a newer token: the previous one runs now, as live after its timeout
-      last_firing_id = fire.firing_id;
+  wire::LogReader log(log_path);
+  wire::LogEvent event;
+  while (log.next(event)) {
+    const std::string& channel = event.channel;
+    const int64_t firing_before = feeder.lastFiringId();
+    feeder.feed(event);
+    if (feeder.lastFiringId() != firing_before) {
       in_recorded_firing = true;
-      pending = Firing{fire.expert, fire.transition, fire.tick, fire.utime, fire.firing_id};
-      if (expert.inputsReady(*pending)) firePending();
       continue;
     }
     if (channel == channels::kDone) {
       beft::done_t done;
-      if (done.decode(event->data, 0, event->datalen) == event->datalen && done.expert == process_name &&
-          done.firing_id == last_firing_id)
+      if (wire::decodeFrom(channel, event.data.data(), event.data.size(), done) && done.expert == process_name &&
+          done.firing_id == feeder.lastFiringId())
         in_recorded_firing = false;
       continue;
     }
-    if (writes.count(channel) && in_recorded_firing) {
-      const auto* bytes = static_cast<const uint8_t*>(event->data);
-      recorded[last_firing_id][channel].emplace_back(bytes, bytes + event->datalen);
-    }
-    if (reads.count(channel)) {
-      expert.onMessage(channel, event->data, event->datalen);
-      if (pending && expert.inputsReady(*pending)) firePending();
-    }
+    if (writes.count(channel) && in_recorded_firing) recorded[feeder.lastFiringId()][channel].push_back(event.data);
   }
-  firePending();
+  feeder.firePending();
+  result.firings = feeder.firings();
+  result.log_damage = log.damage().summary();
 
   compareFirings(recorded, output.captured, result);
   return result;
+}
+
+ResumeState resumeFromLog(Expert& expert, const std::string& process_name, const std::string& log_path,
+                          int64_t live_since_us) {
+  if (!wire::waitForLogPast(log_path, live_since_us, 5.0))
+    log::warn("the run's log ", log_path, " has nothing newer than this process's start after 5 s: "
+              "resuming from what it holds");
+  const std::map<int64_t, beft::done_t> dones = donesOf(process_name, log_path);
+  DiscardingOutput output;
+  LogFeeder feeder(expert, process_name, output, [&](int64_t firing_id) { return dones.count(firing_id) > 0; });
+  ResumeState state;
+  wire::LogReader log(log_path);
+  wire::LogEvent event;
+  // Inputs logged after this instant may also be waiting on the live sockets.
+  const int64_t overlap_from_us = live_since_us - 1000000;
+  while (log.next(event)) {
+    if (feeder.feed(event)) {
+      ++state.inputs;
+      if (event.timestamp >= overlap_from_us) state.logged_recently.insert(fingerprintOf(event.channel, event.data));
+    }
+  }
+  feeder.firePending();
+  state.firings = feeder.firings();
+  state.last_fired = feeder.lastFired();
+  if (state.last_fired) {
+    auto done = dones.find(state.last_fired->firing_id);
+    if (done != dones.end()) state.last_done = done->second;
+  }
+  state.in_flight = feeder.inFlight();
+  if (state.in_flight && state.last_fired && state.in_flight->firing_id < state.last_fired->firing_id)
+    state.in_flight.reset();
+  state.log_damage = log.damage().summary();
+  return state;
 }
 
 void printReplayResult(const ReplayResult& result, const std::string& process_name,
@@ -133,6 +244,7 @@ void printReplayResult(const ReplayResult& result, const std::string& process_na
   if (result.replayed_only)
     std::printf(", %lld produced but not in the log (lost by the logger, or new output)",
                 static_cast<long long>(result.replayed_only));
+  if (!result.log_damage.empty()) std::printf("\nlog: %s", result.log_damage.c_str());
   std::printf("\n%s\n", result.exactMatch() ? "EXACT MATCH" : "DIFFERENCES FOUND");
   if (result.firings == 0) std::printf("(no FIRE for '%s' in the log)\n", process_name.c_str());
   for (const auto& mismatch : result.first_mismatches) {

@@ -4,8 +4,12 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
+
+#include <beft/done_t.hpp>
 
 #include "expert.hpp"
 
@@ -24,6 +28,7 @@ struct ReplayResult {
   int64_t recorded_only = 0;     // recorded outputs the replay did not produce
   int64_t replayed_only = 0;     // replayed outputs absent from the log (a lost datagram, or new output)
   std::vector<ReplayMismatch> first_mismatches;  // up to a few
+  std::string log_damage;                        // what the log reader skipped, "" if nothing
   // Every output the log recorded was produced again, identical, in the same
   // firing. Outputs missing from the log are reported, not counted against it:
   // the logger hears the run over UDP and may lose a datagram.
@@ -36,6 +41,29 @@ struct ReplayResult {
 // fires at every new FIRE for process_name (once its inputs are ready, as
 // live), and compares each channel's outputs in order.
 ReplayResult replayLog(Expert& expert, const std::string& process_name, const std::string& log_path);
+
+// Where a restarted expert resumes (crash-only processes): its state rebuilt
+// from the run's log, every input it had heard and every firing it had
+// finished (those whose DONE the log holds) replayed with the outputs
+// dropped, since the run already has them.
+struct ResumeState {
+  int64_t firings = 0;               // firings replayed
+  int64_t inputs = 0;                // input messages delivered
+  std::optional<Firing> last_fired;  // the newest firing replayed ...
+  std::optional<beft::done_t> last_done;  // ... and its DONE as logged (sent again if asked)
+  std::optional<Firing> in_flight;   // a FIRE with no DONE: the arbiter sends it again
+  std::string log_damage;
+  // messageFingerprint of the inputs logged in the last second before the
+  // live sockets opened: their live copies are dropped once each.
+  std::multiset<uint64_t> logged_recently;
+};
+
+// live_since_us: when the process's live sockets opened [us since the epoch].
+ResumeState resumeFromLog(Expert& expert, const std::string& process_name, const std::string& log_path,
+                          int64_t live_since_us);
+
+// Identity of a message for ResumeState::logged_recently (channel and bytes).
+uint64_t messageFingerprint(const std::string& channel, const void* data, std::size_t size);
 
 // Prints the result, with the first difference decoded by describe (channel,
 // bytes) -> readable text, when given.

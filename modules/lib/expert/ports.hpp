@@ -18,16 +18,19 @@
 
 #include "channel_history.hpp"
 #include "channels.hpp"
+#include "guarded_decode.hpp"
 
 namespace beft::expert {
 
 class Expert;
 class Output;
 
-// Decodes an LCM message; false if the bytes are not exactly one Message.
+// Decodes a received message through the guard (wire/guarded_decode.hpp);
+// false, counted under the channel, if the bytes are not exactly one valid
+// Message.
 template <typename Message>
-bool decodeMessage(const void* data, int size, Message& message) {
-  return message.decode(data, 0, size) == size;
+bool decodeMessage(const std::string& channel, const void* data, int size, Message& message) {
+  return size >= 0 && wire::decodeFrom(channel, data, static_cast<std::size_t>(size), message);
 }
 
 class InputPortBase {
@@ -57,7 +60,7 @@ class TickInput : public InputPortBase {
 
   bool receive(const void* data, int size) override {
     Message message{};
-    if (!decodeMessage(data, size, message)) return false;
+    if (!decodeMessage(channel(), data, size, message)) return false;
     const int64_t utime = message.utime;
     history_.store(std::move(message), utime);  // moved: a camera frame's pixels are not copied again
     return true;
@@ -99,7 +102,7 @@ class HandledInput : public InputPortBase {
   bool receive(const void* data, int size) override {
     if (wanted_ && !wanted_()) return true;
     Message message{};
-    if (!decodeMessage(data, size, message)) return false;
+    if (!decodeMessage(channel(), data, size, message)) return false;
     handler_(std::move(message));
     return true;
   }

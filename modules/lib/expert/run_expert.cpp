@@ -65,6 +65,9 @@ int runExpertMain(int argc, char** argv, Expert& expert, const std::function<voi
       ->capture_default_str()->check(CLI::NonNegativeNumber);
   app.add_flag("--no-catch-up", [&](int64_t) { options.catch_up = false; },
                "do not ask the blackboard for the current state at start");
+  app.add_option("--resume-log", options.resume_log,
+                 "restarted after a crash: rebuild this expert's state from the run's LCM log (its inputs "
+                 "and finished firings replayed, outputs dropped) before going live; the launcher passes it");
   app.add_option("--replay", replay_log, "run offline against this LCM log and compare outputs");
   app.add_flag("--interface", show_interface, "print the channels read and written, and the parameters");
   if (add_options) add_options(app);

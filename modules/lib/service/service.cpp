@@ -53,10 +53,15 @@ int runServiceMain(int argc, char** argv, Service& service) {
   std::string lcm_url = defaultLcmUrl();
   std::string process_name = service.name();
   bool show_interface = false;
+  std::string resume_log;
   CLI::App app(service.description(), "beft-" + service.name());
   app.add_option("--lcm-url", lcm_url, "LCM URL (env BEFT_LCM_URL)")->capture_default_str();
   app.add_option("--name", process_name, "process name in logs and heartbeats")->capture_default_str();
   app.add_flag("--interface", show_interface, "print the channels read and written");
+  if (service.resumable())
+    app.add_option("--resume-log", resume_log,
+                   "restarted after a crash: rebuild what this process held from the run's LCM log before "
+                   "serving; the launcher passes it");
   service.addOptions(app);
   try {
     app.parse(argc, argv);
@@ -81,7 +86,7 @@ int runServiceMain(int argc, char** argv, Service& service) {
   }
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onTerminate);
-  Context context{lcm, lcm_url, process_name, g_stop};
+  Context context{lcm, lcm_url, process_name, g_stop, resume_log};
   return service.serve(context);
 }
 

@@ -48,6 +48,9 @@ struct Context {
   std::string lcm_url;
   std::string process_name;
   StopSignals& stop;
+  // Set when the process was restarted after a crash (--resume-log): the
+  // run's log, from which the service rebuilds what it held.
+  std::string resume_log;
 };
 
 class Service {
@@ -64,6 +67,9 @@ class Service {
   virtual void onStartUp() {}
   // Serves until context.stop says so or the work is done; the exit code.
   virtual int serve(Context& context) = 0;
+  // Whether it can be restarted after a crash with --resume-log (all but the
+  // recorder, whose log is what the others resume from).
+  virtual bool resumable() const { return true; }
 };
 
 // The whole main() of a service process:

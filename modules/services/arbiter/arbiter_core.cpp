@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 
 #include "control_messages.hpp"
 #include "log.hpp"
@@ -86,6 +87,60 @@ void ArbiterCore::start() {
   log::info("waiting up to ", seconds(config_.startup_timeout_s), " for the first heartbeat of: ",
             joinNames(missing));
   sendStatus(beft::run_status_t::STATE_WAITING, "waiting for heartbeats from: " + joinNames(missing));
+}
+
+void ArbiterCore::resume(const ResumePoint& point) {
+  const beft::marking_t& last = point.marking;
+  if (last.place_ids.size() != net_.places.size())
+    throw std::invalid_argument("the log's MARKING has " + std::to_string(last.place_ids.size()) +
+                                " places, the net " + std::to_string(net_.places.size()));
+  for (std::size_t p = 0; p < net_.places.size(); ++p) {
+    if (last.place_ids[p] != net_.places[p].id)
+      throw std::invalid_argument("the log's MARKING names place " + last.place_ids[p] + " where the net has " +
+                                  net_.places[p].id);
+    marking_[p] = last.tokens[p];
+  }
+  started_ = true;
+  const double now = clock_.now();
+  run_start_ = now;
+  tick_ = last.tick;
+  stats_.steps = last.step;
+  next_firing_id_ = std::max<int64_t>(next_firing_id_, point.highest_firing_id + 1);
+  for (auto& expert : experts_) {
+    expert.heard = true;
+    expert.last_heartbeat = now;
+  }
+  for (auto& service : services_heard_) service.second = true;
+  auto runAgain = [&](const beft::fire_t& fire, bool take_tokens) {
+    const int e = expertIndex(fire.expert);
+    int transition = -1;
+    for (std::size_t t = 0; t < net_.transitions.size(); ++t)
+      if (net_.transitions[t].id == fire.transition) transition = static_cast<int>(t);
+    if (e < 0 || transition < 0)
+      throw std::invalid_argument("the log's FIRE " + std::to_string(fire.firing_id) + " names " + fire.expert + "/" +
+                                  fire.transition + ", not in this net");
+    if (experts_[e].running && experts_[e].running->firing_id == fire.firing_id) return;
+    if (take_tokens) consumeInputs(net_.transitions[transition], marking_);
+    Running running;
+    running.transition = transition;
+    running.firing_id = fire.firing_id;
+    running.tick = fire.tick;
+    running.attempt_start = now;
+    experts_[e].running = running;
+  };
+  for (const auto& name : last.running) {
+    auto fire = point.newest_fire.find(name);
+    if (fire == point.newest_fire.end())
+      throw std::invalid_argument("the log's MARKING says " + name + " is firing, but holds no FIRE for it");
+    runAgain(fire->second, false);
+  }
+  for (const auto& fire : point.fires_after) runAgain(fire, true);
+  state_ = RunState::Running;
+  log::info("resumed at tick ", tick_, ", step ", stats_.steps, ", ", firingsInFlight(),
+            " firing(s) in flight; next firing id ", next_firing_id_);
+  for (std::size_t e = 0; e < experts_.size(); ++e)
+    if (experts_[e].running) sendFire(static_cast<int>(e));
+  step("resumed");
 }
 
 void ArbiterCore::beginRun() {

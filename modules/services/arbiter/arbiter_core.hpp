@@ -98,12 +98,26 @@ struct ArbiterStats {
   int64_t ticks_completed = 0;  // ticks whose end was reached
 };
 
+// Where a restarted arbiter takes the run up again (crash-only): what it had
+// published before it died, read from the run's log.
+struct ResumePoint {
+  beft::marking_t marking;               // the last MARKING it published
+  std::vector<beft::fire_t> fires_after;  // FIREs logged after that MARKING, in order
+  std::map<std::string, beft::fire_t> newest_fire;  // per expert, the newest FIRE logged
+  int64_t highest_firing_id = 0;
+};
+
 class ArbiterCore {
  public:
   ArbiterCore(Net net, ArbiterConfig config, Clock& clock, ArbiterOutput& output);
 
   // Starts waiting for the experts' heartbeats (RUN_STATUS WAITING).
   void start();
+  // Instead of start(), after a crash: the marking, tick and step of the
+  // last MARKING, the firings in flight then (and those started after it,
+  // their input tokens taken) running again with their ids, FIREs re-sent.
+  // Throws std::invalid_argument if the point does not fit this net.
+  void resume(const ResumePoint& point);
   void onDone(const beft::done_t& done);
   void onHeartbeat(const beft::heartbeat_t& heartbeat);
   // End the run at the end of the current tick (FINISHED).

@@ -1,5 +1,6 @@
 #include "arbiter_process.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "lcm_arbiter.hpp"
 #include "log.hpp"
 #include "pnml_reader.hpp"
+#include "resume_point.hpp"
 
 namespace beft::arbiter {
 
@@ -111,6 +113,20 @@ int ArbiterProcess::serve(service::Context& context) {
   SteadyClock clock;
   LcmArbiterOutput output(context.lcm, firing_log.get());
   ArbiterCore core(std::move(net_), config_, clock, output);
+  if (!context.resume_log.empty()) {
+    try {
+      const int64_t restarted_us = std::chrono::duration_cast<std::chrono::microseconds>(
+                                       std::chrono::system_clock::now().time_since_epoch())
+                                       .count();
+      if (const auto point = readResumePoint(context.resume_log, restarted_us, 3.0))
+        core.resume(*point);
+      else
+        log::info("the run's log holds no MARKING yet: starting the run afresh");
+    } catch (const std::exception& e) {
+      log::error("cannot resume from ", context.resume_log, ": ", e.what());
+      return 2;
+    }
+  }
   log::info("on ", context.lcm_url, (config_.max_ticks > 0 ? ", " + std::to_string(config_.max_ticks) + " ticks" : ""),
             " (Ctrl-C: end after this tick; twice, or SIGTERM: end now)");
   runArbiterLoop(*events, core, clock, &context.stop, spin_us_);

@@ -8,6 +8,7 @@
 #include <sched.h>
 
 #include "channels.hpp"
+#include "guarded_decode.hpp"
 #include "log.hpp"
 
 namespace beft::arbiter {
@@ -73,23 +74,20 @@ bool ArbiterEventQueue::receive(int timeout_ms, int spin_us) {
   return source_->receive(timeout_ms, handler) >= 0;
 }
 
-// Queue only; what does not decode is reported and dropped.
+// Queue only; what the guard refuses is counted and dropped there.
 void ArbiterEventQueue::onMessage(const transport::Message& message) {
-  const int size = static_cast<int>(message.size);
-  if (message.channel == channels::kDone) {
+  const std::string channel(message.channel);
+  if (channel == channels::kDone) {
     beft::done_t done;
-    if (done.decode(message.data, 0, size) == size) return void(events_.emplace_back(std::move(done)));
-  } else if (message.channel == channels::kHeartbeat) {
+    if (wire::decodeFrom(channel, message.data, message.size, done)) events_.emplace_back(std::move(done));
+  } else if (channel == channels::kHeartbeat) {
     beft::heartbeat_t heartbeat;
-    if (heartbeat.decode(message.data, 0, size) == size) return void(events_.emplace_back(std::move(heartbeat)));
-  } else if (message.channel == channels::kStopRequest) {
+    if (wire::decodeFrom(channel, message.data, message.size, heartbeat)) events_.emplace_back(std::move(heartbeat));
+  } else if (channel == channels::kStopRequest) {
     beft::run_status_t request;
-    if (request.decode(message.data, 0, size) == size)
-      return void(events_.emplace_back(StopRequest{request.message.empty() ? "STOP_REQUEST" : request.message}));
-  } else {
-    return;  // not for the arbiter
+    if (wire::decodeFrom(channel, message.data, message.size, request))
+      events_.emplace_back(StopRequest{request.message.empty() ? "STOP_REQUEST" : request.message});
   }
-  log::warn("dropped a ", size, "-byte message on ", message.channel, " that does not decode");
 }
 
 void ArbiterEventQueue::deliverTo(ArbiterCore& core) {

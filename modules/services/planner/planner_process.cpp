@@ -1,6 +1,7 @@
 #include "planner_process.hpp"
 
 #include <chrono>
+#include <map>
 
 #include <CLI/CLI.hpp>
 #include <beft/obstacle_map_t.hpp>
@@ -10,7 +11,9 @@
 
 #include "channels.hpp"
 #include "control_messages.hpp"
+#include "guarded_decode.hpp"
 #include "log.hpp"
+#include "log_reader.hpp"
 #include "ompl_planner.hpp"
 #include "planner_factory.hpp"
 
@@ -73,17 +76,18 @@ void PlannerProcess::onStartUp() {
 }
 
 void PlannerProcess::onMessage(const transport::Message& message) {
-  const int size = static_cast<int>(message.size);
-  if (message.channel == channels::kObstacleMap) {
+  const std::string channel(message.channel);
+  if (channel == channels::kObstacleMap) {
+    if (!wire::validFrom<beft::obstacle_map_t>(channel, message.data, message.size)) return;
     latest_map_.assign(message.data, message.data + message.size);
     has_map_ = true;
-  } else if (message.channel == channels::kPlanRequest) {
+  } else if (channel == channels::kPlanRequest) {
     beft::plan_request_t request;
-    if (request.decode(message.data, 0, size) == size) requests_.push_back(std::move(request));
-    else log::warn("dropped a ", size, "-byte PLAN_REQUEST that does not decode");
-  } else if (message.channel == channels::kRunStatus) {
+    if (wire::decodeFrom(channel, message.data, message.size, request)) requests_.push_back(std::move(request));
+  } else if (channel == channels::kRunStatus) {
     beft::run_status_t status;
-    if (status.decode(message.data, 0, size) == size && status.state == beft::run_status_t::STATE_WAITING)
+    if (wire::decodeFrom(channel, message.data, message.size, status) &&
+        status.state == beft::run_status_t::STATE_WAITING)
       arbiter_waiting_ = true;
   }
 }
@@ -93,8 +97,8 @@ void PlannerProcess::takeNewestMap() {
   if (!has_map_ || requests_.empty()) return;
   try {
     beft::obstacle_map_t map;
-    const int size = static_cast<int>(latest_map_.size());
-    if (map.decode(latest_map_.data(), 0, size) != size) throw std::invalid_argument("not an obstacle_map_t");
+    if (!wire::guardedDecode(latest_map_.data(), latest_map_.size(), map).ok())
+      throw std::invalid_argument("not an obstacle_map_t");
     planner_->setObstacleMap(map);
   } catch (const std::exception& e) {
     log::warn("ignoring a malformed obstacle map: ", e.what());
@@ -126,6 +130,32 @@ void PlannerProcess::answerRequests(lcm::LCM& lcm) {
   }
 }
 
+void PlannerProcess::resumeFromLog(const std::string& log_path) {
+  std::map<int64_t, beft::plan_request_t> unanswered;
+  wire::LogReader log(log_path);
+  wire::LogEvent event;
+  while (log.next(event)) {
+    transport::Message message{event.channel.c_str(), event.data.data(), event.data.size()};
+    if (event.channel == channels::kObstacleMap) {
+      onMessage(message);
+    } else if (event.channel == channels::kPlanRequest) {
+      beft::plan_request_t request;
+      if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), request))
+        unanswered.emplace(request.request_id, request);
+    } else if (event.channel == channels::kPlanResult) {
+      beft::plan_result_t result;
+      if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), result)) {
+        unanswered.erase(result.request_id);
+        planner_->markAnswered(result.request_id);
+      }
+    }
+  }
+  for (auto& [id, request] : unanswered) requests_.push_back(std::move(request));
+  log::info("resumed from ", log_path, ": ", unanswered.size(), " request(s) to answer",
+            has_map_ ? ", with the newest map" : ", no map yet",
+            log.damage().any() ? " (log: " + log.damage().summary() + ")" : "");
+}
+
 int PlannerProcess::serve(service::Context& context) {
   // On udpm the maps (one a tick) queue on a socket nothing waits on and are
   // read when a request comes; requests wake the process.
@@ -145,6 +175,14 @@ int PlannerProcess::serve(service::Context& context) {
   log::info("planning with ", config_.default_planner, " (robot radius ", config_.robot_radius, " m) on ",
             context.lcm_url);
   const transport::Handler to_inbox = [this](const transport::Message& m) { onMessage(m); };
+  if (!context.resume_log.empty()) {
+    try {
+      resumeFromLog(context.resume_log);
+    } catch (const std::exception& e) {
+      log::error("cannot resume from ", context.resume_log, ": ", e.what());
+      return 1;
+    }
+  }
   service::HeartbeatSender heartbeats(context.lcm, context.process_name);
   while (!context.stop.any()) {
     heartbeats.update(arbiter_waiting_);

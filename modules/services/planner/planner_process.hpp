@@ -32,6 +32,8 @@ class PlannerProcess : public service::Service {
   void onMessage(const transport::Message& message);
   void takeNewestMap();
   void answerRequests(lcm::LCM& lcm);
+  // After a crash: the newest map and the requests not yet answered, from the run's log.
+  void resumeFromLog(const std::string& log_path);
 
   ServiceConfig config_;
   std::vector<std::string> pf_params_;

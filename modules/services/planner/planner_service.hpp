@@ -58,6 +58,8 @@ class PlannerService {
   // The answer to a request, or nothing when its request_id was answered
   // before. Never throws for bad request contents: they fail with a message.
   std::optional<beft::plan_result_t> handle(const beft::plan_request_t& request, int64_t utime_now);
+  // A request answered before this process started (a restart): ignored if it comes again.
+  void markAnswered(int64_t request_id) { remember(request_id); }
 
   const ServiceConfig& config() const { return config_; }
 

@@ -34,8 +34,10 @@ void RecordProcess::addOptions(CLI::App& app) {
 }
 
 void RecordProcess::recordUntilStopped(Recorder& recorder, const service::StopSignals& stop) {
-  // Flushed every second: at most that much is lost if the machine dies.
-  auto next_flush = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+  // Flushed every 100 ms: a restarted process resumes from the log (it
+  // waits until the log holds what was published before it started), and
+  // at most that much is lost if the machine dies.
+  auto next_flush = std::chrono::steady_clock::now() + std::chrono::milliseconds(100);
   while (!stop.any()) {
     const int handled = recorder.handle(100);
     if (handled < 0 && !stop.any()) throw std::runtime_error("LCM receive failed; stopping");
@@ -43,7 +45,7 @@ void RecordProcess::recordUntilStopped(Recorder& recorder, const service::StopSi
     if (handled > 0 && handled < 256 && batch_ms_ > 0) std::this_thread::sleep_for(std::chrono::milliseconds(batch_ms_));
     if (std::chrono::steady_clock::now() >= next_flush) {
       recorder.flush();
-      next_flush = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+      next_flush = std::chrono::steady_clock::now() + std::chrono::milliseconds(100);
     }
   }
 }

@@ -19,6 +19,7 @@ class RecordProcess : public service::Service {
   void addOptions(CLI::App& app) override;
   void onStartUp() override;
   int serve(service::Context& context) override;
+  bool resumable() const override { return false; }  // its log is what the others resume from
 
  private:
   void recordUntilStopped(Recorder& recorder, const service::StopSignals& stop);

@@ -33,7 +33,7 @@ class ExpertChain {
   template <typename Message>
   bool latest(const std::string& channel, Message& message) const {
     const auto it = latest_.find(channel);
-    return it != latest_.end() && expert::decodeMessage(it->second.data(), static_cast<int>(it->second.size()), message);
+    return it != latest_.end() && expert::decodeMessage(channel, it->second.data(), static_cast<int>(it->second.size()), message);
   }
   // Size of the latest message on a channel [bytes], 0 if none.
   std::size_t latestSize(const std::string& channel) const;

@@ -19,6 +19,8 @@
 
 #include "command_line.hpp"
 #include "channels.hpp"
+#include "guarded_decode.hpp"
+#include "log_reader.hpp"
 #include "drawing.hpp"
 #include "map_picture.hpp"
 #include "run_record.hpp"
@@ -35,19 +37,20 @@ struct TickImages {
   std::map<int64_t, beft::obstacle_map_t> maps;
 };
 
+// Damaged records are skipped (the run record reports them).
 TickImages readTickImages(const std::string& path) {
-  lcm::LogFile log(path, "r");
+  wire::LogReader log(path);
   TickImages images;
-  while (const lcm::LogEvent* event = log.readNextEvent()) {
-    const std::string channel = event->channel;
-    if (channel == channels::kCameraColor) {
+  wire::LogEvent event;
+  while (log.next(event)) {
+    if (event.channel == channels::kCameraColor) {
       beft::camera_frame_t frame;
-      if (frame.decode(event->data, 0, event->datalen) == event->datalen &&
+      if (wire::guardedDecode(event.data.data(), event.data.size(), frame).ok() &&
           frame.encoding == beft::camera_frame_t::ENCODING_RGB8)
         images.camera[frame.tick] = std::move(frame);
-    } else if (channel == channels::kObstacleMap) {
+    } else if (event.channel == channels::kObstacleMap) {
       beft::obstacle_map_t map;
-      if (map.decode(event->data, 0, event->datalen) == event->datalen) images.maps[map.tick] = std::move(map);
+      if (wire::guardedDecode(event.data.data(), event.data.size(), map).ok()) images.maps[map.tick] = std::move(map);
     }
   }
   return images;

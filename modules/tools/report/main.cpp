@@ -63,8 +63,10 @@ beft::report::RunRecord readRecord(const Options& o) {
     std::cerr << "beft-report: warning: " << o.log_path
               << " has no GT_OBJECTS and no --scenario was given: nothing to score against\n";
   }
-  for (const auto& [channel, count] : record.undecodable)
-    std::cerr << "beft-report: warning: " << count << " message(s) on " << channel << " did not decode\n";
+  for (const auto& [channel, count] : record.rejected)
+    std::cerr << "beft-report: warning: " << count << " message(s) on " << channel << " refused as malformed\n";
+  if (!record.log_damage.empty())
+    std::cerr << "beft-report: warning: " << o.log_path << ": " << record.log_damage << "\n";
   if (record.robot.empty()) std::cerr << "beft-report: warning: " << o.log_path << " has no ROBOT_STATE\n";
   return record;
 }

@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include <lcm/lcm-cpp.hpp>
 
 #include <beft/dynamic_weights_t.hpp>
 #include <beft/hypotheses_t.hpp>
@@ -14,6 +13,8 @@
 #include <beft/task_stack_t.hpp>
 
 #include "channels.hpp"
+#include "guarded_decode.hpp"
+#include "log_reader.hpp"
 #include "run_record.hpp"
 
 namespace beft::report {
@@ -24,9 +25,11 @@ constexpr double kTrailStep = 0.05;  // a moving object's trail gets a point eve
 double seconds(int64_t utime) { return utime * 1e-6; }
 double secondsOrNever(int64_t utime) { return utime < 0 ? -1.0 : seconds(utime); }
 
+// Every event was checked by the guard before it reaches a decoder here.
 template <typename Message>
-bool decode(const lcm::LogEvent& event, Message& message) {
-  return event.datalen >= 0 && message.decode(event.data, 0, event.datalen) == event.datalen;
+bool decode(const wire::LogEvent& event, Message& message) {
+  return message.decode(event.data.data(), 0, static_cast<int>(event.data.size())) ==
+         static_cast<int>(event.data.size());
 }
 
 TruthObject toTruth(const scene_object_t& object) {
@@ -48,17 +51,21 @@ TruthObject toTruth(const scene_object_t& object) {
   return truth;
 }
 
-class LogReader {
+class RecordBuilder {
  public:
-  explicit LogReader(RunRecord& record) : record_(record) {}
+  explicit RecordBuilder(RunRecord& record) : record_(record) {}
 
-  void add(const lcm::LogEvent& event) {
+  void add(const wire::LogEvent& event) {
     if (record_.events == 0) record_.first_timestamp_us = event.timestamp;
     record_.last_timestamp_us = std::max(record_.last_timestamp_us, event.timestamp);
     ++record_.events;
     const std::string& channel = event.channel;
     if (channel == channels::kFire && record_.first_fire_us < 0) record_.first_fire_us = event.timestamp;
     if (channel == channels::kDone) record_.last_done_us = std::max(record_.last_done_us, event.timestamp);
+    if (!wire::MessageRules::beftTypes().checkForChannel(channel, event.data.data(), event.data.size()).ok()) {
+      ++record_.rejected[channel];
+      return;
+    }
     bool ok = true;
     if (channel == channels::kGroundTruth) ok = addGroundTruth(event);
     else if (channel == channels::kRobotState) ok = addRobotState(event);
@@ -68,7 +75,7 @@ class LogReader {
     else if (channel == channels::kObstacleMap) ok = addObstacleMap(event);
     else if (channel == channels::kStopRequest) ok = addStatus(event, record_.stop_reason);
     else if (channel == channels::kRunStatus) ok = addStatus(event, record_.run_status);
-    if (!ok) ++record_.undecodable[channel];
+    if (!ok) ++record_.rejected[channel];
   }
 
   void finish() {
@@ -84,7 +91,7 @@ class LogReader {
   }
 
  private:
-  bool addGroundTruth(const lcm::LogEvent& event) {
+  bool addGroundTruth(const wire::LogEvent& event) {
     scene_objects_t scene;
     if (!decode(event, scene)) return false;
     record_.scenario_name = scene.scenario;
@@ -103,7 +110,7 @@ class LogReader {
     return true;
   }
 
-  bool addRobotState(const lcm::LogEvent& event) {
+  bool addRobotState(const wire::LogEvent& event) {
     robot_state_t state;
     if (!decode(event, state)) return false;
     RobotSample sample;
@@ -120,7 +127,7 @@ class LogReader {
     return true;
   }
 
-  bool addHypotheses(const lcm::LogEvent& event) {
+  bool addHypotheses(const wire::LogEvent& event) {
     hypotheses_t message;
     if (!decode(event, message)) return false;
     HypothesesSample sample;
@@ -147,7 +154,7 @@ class LogReader {
     return true;
   }
 
-  bool addWeights(const lcm::LogEvent& event) {
+  bool addWeights(const wire::LogEvent& event) {
     dynamic_weights_t message;
     if (!decode(event, message)) return false;
     WeightSample sample;
@@ -160,7 +167,7 @@ class LogReader {
     return true;
   }
 
-  bool addTaskStack(const lcm::LogEvent& event) {
+  bool addTaskStack(const wire::LogEvent& event) {
     task_stack_t message;
     if (!decode(event, message)) return false;
     TaskSample sample;
@@ -173,7 +180,7 @@ class LogReader {
     return true;
   }
 
-  bool addObstacleMap(const lcm::LogEvent& event) {
+  bool addObstacleMap(const wire::LogEvent& event) {
     obstacle_map_t message;
     if (!decode(event, message)) return false;
     try {
@@ -184,7 +191,7 @@ class LogReader {
     return true;
   }
 
-  bool addStatus(const lcm::LogEvent& event, std::string& into) {
+  bool addStatus(const wire::LogEvent& event, std::string& into) {
     run_status_t status;
     if (!decode(event, status)) return false;
     into = status.message;
@@ -203,13 +210,18 @@ RunRecord readRunLog(const std::string& path) {
     std::ifstream probe(path, std::ios::binary);
     if (!probe) throw ReportError(path + ": cannot open the log file");
   }
-  lcm::LogFile log(path, "r");
-  if (!log.good()) throw ReportError(path + ": not a readable LCM log");
   RunRecord record;
   record.log_path = path;
-  LogReader reader(record);
-  while (const lcm::LogEvent* event = log.readNextEvent()) reader.add(*event);
-  reader.finish();
+  try {
+    wire::LogReader log(path);
+    RecordBuilder builder(record);
+    wire::LogEvent event;
+    while (log.next(event)) builder.add(event);
+    builder.finish();
+    record.log_damage = log.damage().summary();
+  } catch (const std::runtime_error& error) {
+    throw ReportError(error.what());
+  }
   if (record.events == 0) throw ReportError(path + ": the log holds no event (not an LCM log, or empty)");
   return record;
 }

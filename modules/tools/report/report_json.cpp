@@ -66,6 +66,14 @@ nlohmann::json toJson(const RunReport& report) {
   json["hypotheses"] = report.hypotheses;
   json["unsettled"] = report.unsettled;
   json["end_reason"] = report.end_reason;
+  json["rejected_messages"] = nlohmann::json::object();
+  int64_t rejected_total = 0;
+  for (const auto& [channel, count] : report.rejected_messages) {
+    json["rejected_messages"][channel] = count;
+    rejected_total += count;
+  }
+  json["rejected_total"] = rejected_total;
+  json["log_damage"] = report.log_damage;
   return json;
 }
 

@@ -90,7 +90,8 @@ struct RunRecord {
   int64_t first_timestamp_us = 0, last_timestamp_us = 0;  // logger receive times
   int64_t first_fire_us = -1, last_done_us = -1;  // receive times of the first FIRE and last DONE
   int64_t events = 0;
-  std::map<std::string, int> undecodable;  // channel -> messages that did not decode
+  std::map<std::string, int64_t> rejected;  // channel -> messages the guard refused (malformed, foreign type)
+  std::string log_damage;                   // the log reader's account of skipped bytes, "" if none
 
   double simTime() const { return robot.empty() ? 0.0 : robot.back().t; }
   double wallSpan() const { return (last_timestamp_us - first_timestamp_us) * 1e-6; }
@@ -102,8 +103,9 @@ struct RunRecord {
   int64_t tickCount() const { return robot.empty() ? 0 : robot.back().tick - robot.front().tick + 1; }
 };
 
-// Reads the whole log. Throws ReportError when the file cannot be opened or
-// holds no event at all; messages that do not decode are counted, not fatal.
+// Reads the whole log, damaged stretches skipped. Throws ReportError when the
+// file cannot be opened or holds no event at all; every message is checked
+// by the guard, and what it refuses is counted, not fatal.
 RunRecord readRunLog(const std::string& path);
 
 }  // namespace beft::report

@@ -95,6 +95,8 @@ void scoreRunFigures(const RunRecord& record, const ScoringOptions& options, Run
     report.collisions = record.robot.back().collisions;
   }
   report.end_reason = !record.stop_reason.empty() ? record.stop_reason : record.run_status;
+  report.rejected_messages = record.rejected;
+  report.log_damage = record.log_damage;
 }
 
 // The person a victim candidate stands for: the one of its id, else the

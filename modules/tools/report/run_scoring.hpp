@@ -12,6 +12,7 @@
 #pragma once
 
 #include <optional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,8 @@ struct RunReport {
   std::vector<std::string> unsettled;   // heard, neither verified nor falsified
   int hypotheses = 0;
   std::string end_reason;
+  std::map<std::string, int64_t> rejected_messages;  // per channel: malformed or of another type
+  std::string log_damage;                             // "" when the log was whole
   double person_confidence = 0;
 };
 

@@ -18,6 +18,7 @@
 #include "command_line.hpp"
 #include "blackboard/channel_filter.hpp"
 #include "blackboard/message_decoder.hpp"
+#include "message_check.hpp"
 #include "blackboard/store.hpp"
 #include "lcm_url.hpp"
 #include "traffic_table.hpp"
@@ -50,6 +51,10 @@ class Spy {
       const int size = static_cast<int>(buffer->data_size);
       std::string type = beft::blackboard::typeNameOf(buffer->data, size);
       if (type.empty()) type = "unknown type";
+      // What a process of the run would refuse is shown as such, never decoded.
+      const beft::wire::Verdict verdict =
+          beft::wire::MessageRules::beftTypes().checkForChannel(channel, buffer->data, buffer->data_size);
+      if (!verdict.ok()) type = "refused (" + verdict.text() + ")";
       table_.record(channel, type, buffer->data_size, secondsSince(start_),
                     beft::blackboard::encodedUtime(buffer->data, size));
       if (!decoded_.count(channel)) return;
@@ -57,6 +62,10 @@ class Spy {
       if (const auto utime = beft::blackboard::encodedUtime(buffer->data, size))
         text += "  utime " + beft::blackboard::formatNumber(static_cast<double>(*utime) / 1e6) + " s";
       text += "\n";
+      if (!verdict.ok()) {
+        std::fputs(text.c_str(), stdout);
+        return;
+      }
       beft::blackboard::DescribeOptions options;
       options.max_lines = max_lines_;
       for (const auto& line :

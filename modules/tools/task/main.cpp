@@ -15,6 +15,7 @@
 
 #include "command_line.hpp"
 #include "channels.hpp"
+#include "guarded_decode.hpp"
 #include "lcm_url.hpp"
 #include "task_cli.hpp"
 #include "task_messages.hpp"
@@ -29,11 +30,16 @@ int64_t wallMicros() {
       .count();
 }
 
-// A typed LCM handler calling a function (LCM 1.3.1 takes no lambdas).
+// An LCM handler calling a function (LCM 1.3.1 takes no lambdas). It takes
+// the raw bytes and decodes them through the message guard: LCM's typed
+// subscribe decodes unguarded, and a malformed message would kill the tool.
 template <typename Message>
 struct Handler {
   std::function<void(const Message&)> on_message;
-  void handle(const lcm::ReceiveBuffer*, const std::string&, const Message* m) { on_message(*m); }
+  static void handle(const lcm::ReceiveBuffer* buffer, const std::string& channel, Handler* self) {
+    Message message;
+    if (beft::wire::decodeFrom(channel, buffer->data, buffer->data_size, message)) self->on_message(message);
+  }
 };
 
 // Handles LCM until done() or the deadline; false on timeout.
@@ -59,7 +65,7 @@ int sendCommand(lcm::LCM& lcm, beft::task_command_t command, bool wait, double t
       for (const auto& e : m.events)
         if (e.command_id == command.command_id) answers.push_back(e);
     };
-    subscription = lcm.subscribe(beft::channels::kTaskEvents, &Handler<beft::task_events_t>::handle, &events_handler);
+    subscription = lcm.subscribeFunction(beft::channels::kTaskEvents, &Handler<beft::task_events_t>::handle, &events_handler);
     subscription->setQueueCapacity(1000);
   }
   // A clear of an empty stack changes no task: an empty stack confirms it too.
@@ -69,7 +75,7 @@ int sendCommand(lcm::LCM& lcm, beft::task_command_t command, bool wait, double t
     stack_handler.on_message = [&](const beft::task_stack_t& m) {
       if (m.tasks.empty()) empty_stack_seen = true;
     };
-    stack_subscription = lcm.subscribe(beft::channels::kTaskStack, &Handler<beft::task_stack_t>::handle, &stack_handler);
+    stack_subscription = lcm.subscribeFunction(beft::channels::kTaskStack, &Handler<beft::task_stack_t>::handle, &stack_handler);
   }
   if (lcm.publish(beft::channels::kTaskCommand, &command) != 0) {
     std::fprintf(stderr, "beft-task: error: could not publish on %s\n", beft::channels::kTaskCommand.name);
@@ -196,7 +202,7 @@ int listStack(lcm::LCM& lcm, const Options& o) {
   handler.on_message = [&](const beft::task_stack_t& m) {
     if (!stack) stack = m;
   };
-  auto* sub = lcm.subscribe(beft::channels::kTaskStack, &Handler<beft::task_stack_t>::handle, &handler);
+  auto* sub = lcm.subscribeFunction(beft::channels::kTaskStack, &Handler<beft::task_stack_t>::handle, &handler);
   sub->setQueueCapacity(100);
   if (!waitFor(lcm, o.timeout_s, [&] { return stack.has_value(); })) {
     std::fprintf(stderr,

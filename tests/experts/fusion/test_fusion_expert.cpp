@@ -62,7 +62,7 @@ hypotheses_t fireQuietTick(fusion::FusionExpert& fusion, int64_t tick) {
   Collected out;
   EXPECT_TRUE(fusion.fire(firing, out).ok);
   hypotheses_t published{};
-  EXPECT_TRUE(expert::decodeMessage(out.hypotheses.data(), static_cast<int>(out.hypotheses.size()), published));
+  EXPECT_TRUE(expert::decodeMessage("HYPOTHESES", out.hypotheses.data(), static_cast<int>(out.hypotheses.size()), published));
   return published;
 }
 

@@ -26,7 +26,7 @@ struct Collected : expert::Output {
   Message get(const std::string& channel) const {
     Message m{};
     const auto& bytes = latest.at(channel);
-    EXPECT_TRUE(expert::decodeMessage(bytes.data(), static_cast<int>(bytes.size()), m));
+    EXPECT_TRUE(expert::decodeMessage(channel, bytes.data(), static_cast<int>(bytes.size()), m));
     return m;
   }
 };

@@ -221,7 +221,8 @@ TEST_F(ReportFromLog, ReadsWhatTheRunRecorded) {
   EXPECT_EQ(record.obstacle_map->width, 300);
   EXPECT_EQ(record.stop_reason, "nothing left to explore");
   EXPECT_EQ(record.weights.size(), static_cast<size_t>(kTicks));
-  EXPECT_TRUE(record.undecodable.empty());
+  EXPECT_TRUE(record.rejected.empty());
+  EXPECT_EQ(record.log_damage, "");
 }
 
 TEST_F(ReportFromLog, ScoresVictimsFalsifiedAndMissed) {

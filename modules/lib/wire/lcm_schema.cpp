@@ -1,10 +1,11 @@
-#include "blackboard/lcm_schema.hpp"
+#include "lcm_schema.hpp"
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 #include <set>
 
-namespace beft::blackboard {
+namespace beft::wire {
 namespace {
 
 const std::set<std::string>& primitives() {
@@ -18,10 +19,16 @@ struct Token {
   int line = 0;
 };
 
-// Splits .lcm text into identifiers/numbers and single punctuation marks,
-// dropping // and /* */ comments.
-std::vector<Token> tokenize(const std::string& source, const std::string& text) {
+struct Tokens {
   std::vector<Token> tokens;
+  std::map<int, std::string> line_comments;  // text of the // comment ending each line
+};
+
+// Splits .lcm text into identifiers/numbers and single punctuation marks,
+// dropping /* */ comments and keeping each line's // comment aside.
+Tokens tokenize(const std::string& source, const std::string& text) {
+  Tokens result;
+  std::vector<Token>& tokens = result.tokens;
   int line = 1;
   std::size_t i = 0;
   while (i < text.size()) {
@@ -32,7 +39,9 @@ std::vector<Token> tokenize(const std::string& source, const std::string& text) 
     } else if (std::isspace(static_cast<unsigned char>(c))) {
       ++i;
     } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '/') {
+      const std::size_t start = i + 2;
       while (i < text.size() && text[i] != '\n') ++i;
+      result.line_comments[line] = text.substr(start, i - start);
     } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
       const int start_line = line;
       i += 2;
@@ -61,7 +70,7 @@ std::vector<Token> tokenize(const std::string& source, const std::string& text) 
                         std::string(1, c) + "'");
     }
   }
-  return tokens;
+  return result;
 }
 
 bool isIdentifier(const std::string& text) {
@@ -79,8 +88,8 @@ bool isNumber(const std::string& text) {
 
 class Parser {
  public:
-  Parser(std::string source, std::vector<Token> tokens)
-      : source_(std::move(source)), tokens_(std::move(tokens)) {}
+  Parser(std::string source, Tokens tokens)
+      : source_(std::move(source)), tokens_(std::move(tokens.tokens)), comments_(std::move(tokens.line_comments)) {}
 
   std::vector<LcmStruct> parse() {
     std::string package;
@@ -147,6 +156,7 @@ class Parser {
       member.type = type_name;
       const Token& name = expectIdentifier("member name");
       member.name = name.text;
+      if (auto comment = comments_.find(name.line); comment != comments_.end()) member.comment = comment->second;
       for (const auto& existing : result.members)
         if (existing.name == member.name) fail(name, "member '" + member.name + "' declared twice");
       while (peek("'[', ',' or ';'").text == "[") {
@@ -205,6 +215,7 @@ class Parser {
 
   std::string source_;
   std::vector<Token> tokens_;
+  std::map<int, std::string> comments_;
   std::size_t position_ = 0;
 };
 
@@ -327,4 +338,4 @@ std::vector<std::string> LcmTypeSet::typeNames() const {
   return names;
 }
 
-}  // namespace beft::blackboard
+}  // namespace beft::wire

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace beft::blackboard {
+namespace beft::wire {
 
 struct EmbeddedSchema {
   std::string file;  // e.g. "robot_state_t.lcm"
@@ -13,4 +13,4 @@ struct EmbeddedSchema {
 
 const std::vector<EmbeddedSchema>& embeddedLcmSchemas();
 
-}  // namespace beft::blackboard
+}  // namespace beft::wire

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace beft::blackboard {
+namespace beft::wire {
 
 // A .lcm file that does not parse: the message names the file and the line.
 class SchemaError : public std::runtime_error {
@@ -26,6 +26,10 @@ struct LcmMember {
   std::string name;
   std::string type;  // primitive ("int32_t", "string", ...) or "package.struct_t"
   std::vector<LcmDimension> dimensions;
+  // The // comment on the member's line: it declares what the message guard
+  // checks beyond the layout ("STATUS_*": one of those constants; "NaN":
+  // may be NaN; ">= 0": lower bound).
+  std::string comment;
 };
 
 struct LcmConstant {
@@ -81,4 +85,4 @@ class LcmTypeSet {
 // dimensions), before the member structs' hashes are added.
 int64_t lcmBaseHash(const LcmStruct& lcm_struct);
 
-}  // namespace beft::blackboard
+}  // namespace beft::wire

@@ -1,5 +1,5 @@
 # Writes a C++ file holding the text of every lcmtypes/*.lcm file, so the
-# readable decoder knows every message type without a printer per type.
+# readable decoder and the message guard know every message type without a printer per type.
 # Usage: cmake -DSCHEMA_DIR=<lcmtypes> -DOUTPUT=<file.cpp> -P embed_lcm_schemas.cmake
 file(GLOB schema_files ${SCHEMA_DIR}/*.lcm)
 list(SORT schema_files)
@@ -10,9 +10,9 @@ foreach(schema_file ${schema_files})
   string(APPEND entries "      {\"${name}\", R\"lcm_schema(${text})lcm_schema\"},\n")
 endforeach()
 set(content "// Generated from lcmtypes/*.lcm by embed_lcm_schemas.cmake: do not edit.
-#include \"blackboard/embedded_schemas.hpp\"
+#include \"embedded_schemas.hpp\"
 
-namespace beft::blackboard {
+namespace beft::wire {
 
 const std::vector<EmbeddedSchema>& embeddedLcmSchemas() {
   static const std::vector<EmbeddedSchema> schemas = {
@@ -20,6 +20,6 @@ ${entries}  };
   return schemas;
 }
 
-}  // namespace beft::blackboard
+}  // namespace beft::wire
 ")
 file(WRITE ${OUTPUT} "${content}")

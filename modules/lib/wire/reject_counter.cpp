@@ -1,0 +1,46 @@
+#include "reject_counter.hpp"
+
+#include "log.hpp"
+
+namespace beft::wire {
+
+void RejectCounter::count(const std::string& channel, const Verdict& verdict, Clock::time_point now) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  ChannelCount& counts = channels_[channel];
+  ++counts.total;
+  ++counts.since_logged;
+  if (counts.logged && now - counts.last_logged < std::chrono::seconds(1)) return;
+  log::warn("rejected ", counts.since_logged, counts.since_logged == 1 ? " message" : " messages", " on ", channel,
+            counts.logged ? " in the last second" : "", " (latest: ", verdict.text(), "); ", counts.total,
+            " on this channel in all");
+  counts.logged = true;
+  counts.last_logged = now;
+  counts.since_logged = 0;
+  ++lines_logged_;
+}
+
+std::map<std::string, uint64_t> RejectCounter::totals() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::map<std::string, uint64_t> totals;
+  for (const auto& [channel, counts] : channels_) totals[channel] = counts.total;
+  return totals;
+}
+
+uint64_t RejectCounter::total() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  uint64_t sum = 0;
+  for (const auto& entry : channels_) sum += entry.second.total;
+  return sum;
+}
+
+uint64_t RejectCounter::linesLogged() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return lines_logged_;
+}
+
+RejectCounter& processRejects() {
+  static RejectCounter counter;
+  return counter;
+}
+
+}  // namespace beft::wire
