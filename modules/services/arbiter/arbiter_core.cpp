@@ -111,30 +111,22 @@ void ArbiterCore::resume(const ResumePoint& point) {
     expert.last_heartbeat = now;
   }
   for (auto& service : services_heard_) service.second = true;
-  auto runAgain = [&](const beft::fire_t& fire, bool take_tokens) {
-    const int e = expertIndex(fire.expert);
+  for (std::size_t r = 0; r < last.running.size(); ++r) {
+    const int e = expertIndex(last.running[r]);
     int transition = -1;
     for (std::size_t t = 0; t < net_.transitions.size(); ++t)
-      if (net_.transitions[t].id == fire.transition) transition = static_cast<int>(t);
+      if (net_.transitions[t].id == last.running_transitions[r]) transition = static_cast<int>(t);
     if (e < 0 || transition < 0)
-      throw std::invalid_argument("the log's FIRE " + std::to_string(fire.firing_id) + " names " + fire.expert + "/" +
-                                  fire.transition + ", not in this net");
-    if (experts_[e].running && experts_[e].running->firing_id == fire.firing_id) return;
-    if (take_tokens) consumeInputs(net_.transitions[transition], marking_);
+      throw std::invalid_argument("the log's MARKING runs " + last.running[r] + "/" + last.running_transitions[r] +
+                                  ", not in this net");
     Running running;
     running.transition = transition;
-    running.firing_id = fire.firing_id;
-    running.tick = fire.tick;
+    running.firing_id = last.running_firing_ids[r];
+    running.tick = last.running_ticks[r];
     running.attempt_start = now;
     experts_[e].running = running;
-  };
-  for (const auto& name : last.running) {
-    auto fire = point.newest_fire.find(name);
-    if (fire == point.newest_fire.end())
-      throw std::invalid_argument("the log's MARKING says " + name + " is firing, but holds no FIRE for it");
-    runAgain(fire->second, false);
+    next_firing_id_ = std::max(next_firing_id_, running.firing_id + 1);
   }
-  for (const auto& fire : point.fires_after) runAgain(fire, true);
   state_ = RunState::Running;
   log::info("resumed at tick ", tick_, ", step ", stats_.steps, ", ", firingsInFlight(),
             " firing(s) in flight; next firing id ", next_firing_id_);
@@ -371,7 +363,7 @@ void ArbiterCore::step(const std::string& event) {
         ++silent_firings;
         progress = true;
       } else if (!experts_[transition_expert_[t]].running) {
-        startFiring(static_cast<int>(t), 1, tick_);
+        startFiring(static_cast<int>(t), 1, tick_, false);  // sent after the step's MARKING
         note("fire " + transition.expert);
         progress = true;
       }
@@ -389,15 +381,20 @@ void ArbiterCore::step(const std::string& event) {
     }
     if (silent_firings > config_.max_silent_firings_per_step) {
       publishMarking(text);
+      unsent_fires_.clear();
       fail("silent transitions fired " + std::to_string(silent_firings) +
            " times without any expert running: the net has a cycle without an expert");
       return;
     }
     if (!progress) break;
   }
-  // The new tick's status after its first FIREs: they are what the experts wait for.
-  if (tick_opened) sendStatus(beft::run_status_t::STATE_RUNNING, "tick " + std::to_string(tick_));
+  // The MARKING first: the run's log then always holds the state a FIRE
+  // came from, which is what a restarted arbiter resumes from. The new
+  // tick's status after its first FIREs: they are what the experts wait for.
   publishMarking(text);
+  for (int e : unsent_fires_) sendFire(e);
+  unsent_fires_.clear();
+  if (tick_opened) sendStatus(beft::run_status_t::STATE_RUNNING, "tick " + std::to_string(tick_));
   if (anyRunning()) return;
   if (endingAtTickEnd() && isEnabled(tick, marking_)) {
     const int64_t ticks = tick_ + 1;
@@ -415,7 +412,7 @@ bool ArbiterCore::endingAtTickEnd() const {
   return stop_requested_ || (config_.max_ticks > 0 && tick_ + 1 >= config_.max_ticks);
 }
 
-void ArbiterCore::startFiring(int transition, int attempt, int64_t tick) {
+void ArbiterCore::startFiring(int transition, int attempt, int64_t tick, bool send_now) {
   const int e = transition_expert_[transition];
   if (attempt == 1) consumeInputs(net_.transitions[transition], marking_);
   Running running;
@@ -426,7 +423,8 @@ void ArbiterCore::startFiring(int transition, int attempt, int64_t tick) {
   running.attempt_start = clock_.now();
   experts_[e].running = running;
   ++stats_.firings_started;
-  sendFire(e);
+  if (send_now) sendFire(e);
+  else unsent_fires_.push_back(e);
 }
 
 void ArbiterCore::sendFire(int e) {
@@ -554,8 +552,13 @@ void ArbiterCore::publishMarking(const std::string& event) {
   marking.place_ids.reserve(net_.places.size());
   for (const auto& place : net_.places) marking.place_ids.push_back(place.id);
   marking.tokens.assign(marking_.begin(), marking_.end());
-  for (const auto& expert : experts_)
-    if (expert.running) marking.running.push_back(expert.name);
+  for (const auto& expert : experts_) {
+    if (!expert.running) continue;
+    marking.running.push_back(expert.name);
+    marking.running_transitions.push_back(net_.transitions[expert.running->transition].id);
+    marking.running_ticks.push_back(expert.running->tick);
+    marking.running_firing_ids.push_back(expert.running->firing_id);
+  }
   marking.num_running = static_cast<int32_t>(marking.running.size());
   output_.sendMarking(marking);
 }

@@ -101,10 +101,8 @@ struct ArbiterStats {
 // Where a restarted arbiter takes the run up again (crash-only): what it had
 // published before it died, read from the run's log.
 struct ResumePoint {
-  beft::marking_t marking;               // the last MARKING it published
-  std::vector<beft::fire_t> fires_after;  // FIREs logged after that MARKING, in order
-  std::map<std::string, beft::fire_t> newest_fire;  // per expert, the newest FIRE logged
-  int64_t highest_firing_id = 0;
+  beft::marking_t marking;        // the last MARKING it published (sent before its step's FIREs)
+  int64_t highest_firing_id = 0;  // of every FIRE logged (a retry's id is above the MARKING's)
 };
 
 class ArbiterCore {
@@ -113,9 +111,9 @@ class ArbiterCore {
 
   // Starts waiting for the experts' heartbeats (RUN_STATUS WAITING).
   void start();
-  // Instead of start(), after a crash: the marking, tick and step of the
-  // last MARKING, the firings in flight then (and those started after it,
-  // their input tokens taken) running again with their ids, FIREs re-sent.
+  // Instead of start(), after a crash: the marking, tick, step and firings
+  // in flight of the last MARKING taken up again, their FIREs re-sent (an
+  // expert that already ran one answers with its DONE again).
   // Throws std::invalid_argument if the point does not fit this net.
   void resume(const ResumePoint& point);
   void onDone(const beft::done_t& done);
@@ -174,7 +172,8 @@ class ArbiterCore {
 
   void beginRun();
   void step(const std::string& event);
-  void startFiring(int transition, int attempt, int64_t tick);
+  // send_now false: the FIRE goes out after the step's MARKING.
+  void startFiring(int transition, int attempt, int64_t tick, bool send_now = true);
   void sendFire(int expert);
   void completeFiring(int expert, const beft::done_t& done);
   // A firing did not succeed (outcome: failed | timeout | no-heartbeat): apply the policy.
@@ -210,6 +209,7 @@ class ArbiterCore {
   std::vector<int> transition_expert_;  // expert index per transition, -1 if silent
   int64_t tick_ = 0;
   int64_t next_firing_id_ = 1;
+  std::vector<int> unsent_fires_;  // experts started in this step, FIRE not sent yet
   int64_t highest_reported_firing_id_ = 0;
   double run_start_ = 0.0;
   double startup_deadline_ = 0.0;

@@ -21,14 +21,11 @@ std::optional<ResumePoint> readResumePoint(const std::string& log_path, int64_t 
       beft::marking_t marking;
       if (!wire::decodeFrom(event.channel, event.data.data(), event.data.size(), marking)) continue;
       point.marking = std::move(marking);
-      point.fires_after.clear();
       found = true;
     } else if (event.channel == channels::kFire) {
       beft::fire_t fire;
       if (!wire::decodeFrom(event.channel, event.data.data(), event.data.size(), fire)) continue;
       point.highest_firing_id = std::max(point.highest_firing_id, fire.firing_id);
-      point.newest_fire[fire.expert] = fire;
-      point.fires_after.push_back(std::move(fire));
     }
   }
   if (log.damage().any()) log::warn("resuming from a damaged log: ", log.damage().summary());

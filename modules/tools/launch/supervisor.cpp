@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -276,25 +277,50 @@ std::vector<Child> childrenToStart(const LaunchSpec& spec, const SupervisorOptio
   return children;
 }
 
-// One child that exited: the arbiter ends the run (true); another is
-// restarted by its policy, or left finished.
-bool onChildExit(Child& child, int status, Printer& printer, RunOutcome& outcome) {
+// A process that died (not one that exited with a code, or was told to stop).
+bool crashed(int status) {
+  return WIFSIGNALED(status) && WTERMSIG(status) != SIGTERM && WTERMSIG(status) != SIGINT;
+}
+
+// Restarted processes resume from the run's log (crash-only): the same
+// process, with --resume-log, rebuilds the state it had.
+void scheduleRestart(Child& child, int status, const SupervisorOptions& options, Printer& printer) {
+  ++child.restarts;
+  const bool resume = !options.record_log.empty();
+  if (resume && std::find(child.argv.begin(), child.argv.end(), "--resume-log") == child.argv.end()) {
+    child.argv.push_back("--resume-log");
+    child.argv.push_back(options.record_log);
+  }
+  printer.own(child.spec.name + " " + describeStatus(status) + ": restarting (" + std::to_string(child.restarts) +
+              "/" + std::to_string(child.spec.max_restarts) + ")" +
+              (resume ? ", resuming from the run's log" : ", without a log to resume from: its state is lost"));
+  child.restart_scheduled = true;
+  child.restart_at = Clock::now() + std::chrono::milliseconds(500);
+}
+
+// One child that exited: the arbiter ends the run (true) unless it crashed
+// and may be restarted; the recorder's death ends it too (the log would lose
+// messages); another is restarted by its policy, or left finished.
+bool onChildExit(Child& child, int status, const SupervisorOptions& options, Printer& printer, RunOutcome& outcome) {
   child.running = false;
   drain(child, printer, true);
   close(child.output_fd);
   child.output_fd = -1;
   const bool failed = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-  if (child.spec.is_arbiter) {
+  const bool may_restart = child.spec.restart == RestartPolicy::OnFailure && child.restarts < child.spec.max_restarts;
+  if (child.spec.name == kRecorderName) {
+    outcome.log_incomplete = true;
+    outcome.message = "the recorder " + describeStatus(status) + ": the run's log is incomplete";
+    printer.own(outcome.message + "; stopping the run");
+    return true;
+  }
+  if (child.spec.is_arbiter && !(crashed(status) && may_restart)) {
     outcome.arbiter_exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     printer.own("arbiter " + describeStatus(status) + ": the run is over");
     return true;
   }
-  if (failed && child.spec.restart == RestartPolicy::OnFailure && child.restarts < child.spec.max_restarts) {
-    ++child.restarts;
-    printer.own(child.spec.name + " " + describeStatus(status) + ": restarting (" + std::to_string(child.restarts) +
-                "/" + std::to_string(child.spec.max_restarts) + ")");
-    child.restart_scheduled = true;
-    child.restart_at = Clock::now() + std::chrono::milliseconds(500);
+  if (failed && may_restart) {
+    scheduleRestart(child, status, options, printer);
   } else {
     printer.own(child.spec.name + " " + describeStatus(status) +
                 (failed && child.spec.restart == RestartPolicy::OnFailure ? " (restart limit reached)" : ""));
@@ -305,7 +331,32 @@ bool onChildExit(Child& child, int status, Printer& printer, RunOutcome& outcome
 
 // Relays the children's output and watches them until the arbiter ends,
 // everything has exited or a signal came.
-void watchChildren(std::vector<Child>& children, Printer& printer, RunOutcome& outcome) {
+// Kills planned with --kill, once the run's log shows their tick.
+class Killer {
+ public:
+  explicit Killer(const SupervisorOptions& options) : kills_(options.kills), follower_(options.record_log) {}
+  void check(std::vector<Child>& children, Printer& printer) {
+    if (std::all_of(kills_.begin(), kills_.end(), [](const PlannedKill& k) { return k.done; })) return;
+    const int64_t tick = follower_.poll();
+    for (auto& planned : kills_) {
+      if (planned.done || tick < planned.tick) continue;
+      for (auto& child : children) {
+        if (child.spec.name != planned.process || !child.running) continue;
+        printer.own("killing " + child.spec.name + " (SIGKILL) at tick " + std::to_string(tick) + " as asked (--kill)");
+        ::kill(-child.pid, SIGKILL);
+      }
+      planned.done = true;
+    }
+  }
+
+ private:
+  std::vector<PlannedKill> kills_;
+  TickFollower follower_;
+};
+
+void watchChildren(std::vector<Child>& children, const SupervisorOptions& options, Printer& printer,
+                   RunOutcome& outcome) {
+  Killer killer(options);
   while (true) {
     if (g_interrupted) {
       outcome.interrupted = true;
@@ -318,11 +369,12 @@ void watchChildren(std::vector<Child>& children, Printer& printer, RunOutcome& o
       if (child.output_fd >= 0) fds.push_back({child.output_fd, POLLIN, 0});
     poll(fds.data(), fds.size(), 50);
     for (auto& child : children) drain(child, printer, false);
+    killer.check(children, printer);
     bool arbiter_done = false;
     for (auto& child : children) {
       int status = 0;
       if (!child.running || waitpid(child.pid, &status, WNOHANG) != child.pid) continue;
-      arbiter_done |= onChildExit(child, status, printer, outcome);
+      arbiter_done |= onChildExit(child, status, options, printer, outcome);
     }
     if (arbiter_done) return;
     for (auto& child : children)
@@ -366,7 +418,7 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
     }
   }
   printer.own("started " + std::to_string(children.size()) + " processes on " + options.lcm_url);
-  watchChildren(children, printer, outcome);
+  watchChildren(children, options, printer, outcome);
   stopAll(children, printer, options.stop_grace_s);
   if (outcome.message.empty() && outcome.arbiter_exit_code >= 0)
     outcome.message = outcome.arbiter_exit_code == 0 ? "run finished" : "run failed";

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fault_injection.hpp"
 #include "launch_file.hpp"
 
 namespace beft::launch {
@@ -21,12 +22,14 @@ struct SupervisorOptions {
   double stop_grace_s = 3.0;          // SIGTERM, then SIGKILL after this
   bool quiet_children = false;        // do not echo children's output
   std::string output_file;            // also append every prefixed line here
+  std::vector<PlannedKill> kills;     // fault injection: SIGKILL a process at a tick (needs record_log)
 };
 
 struct RunOutcome {
   bool arbiter_ran = false;
   int arbiter_exit_code = -1;  // -1: never exited by itself
   bool interrupted = false;    // stopped by a signal
+  bool log_incomplete = false; // the recorder died: the run was stopped, its log misses what came after
   std::string message;
 };
 

@@ -46,6 +46,8 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_flag("--quiet", o.quiet, "do not print the summary");
+  app.add_flag("--log-incomplete", o.scoring.log_incomplete,
+               "the recorder died during the run: the report says the log misses what came after");
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   o.scoring.wall_time_s = o.wall_time;
   return std::nullopt;

@@ -74,6 +74,7 @@ nlohmann::json toJson(const RunReport& report) {
   }
   json["rejected_total"] = rejected_total;
   json["log_damage"] = report.log_damage;
+  json["log_complete"] = report.log_complete;
   return json;
 }
 

@@ -97,6 +97,7 @@ void scoreRunFigures(const RunRecord& record, const ScoringOptions& options, Run
   report.end_reason = !record.stop_reason.empty() ? record.stop_reason : record.run_status;
   report.rejected_messages = record.rejected;
   report.log_damage = record.log_damage;
+  report.log_complete = !options.log_incomplete;
 }
 
 // The person a victim candidate stands for: the one of its id, else the

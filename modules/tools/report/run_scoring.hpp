@@ -26,6 +26,7 @@ struct ScoringOptions {
   double match_radius = 2.0;        // spatial match when ids differ [m]
   std::string person_label = "person";
   std::optional<double> wall_time_s;  // as measured by the runner; else from log timestamps
+  bool log_incomplete = false;         // the runner says the recorder died during the run
 };
 
 struct VictimEntry {
@@ -76,6 +77,7 @@ struct RunReport {
   std::string end_reason;
   std::map<std::string, int64_t> rejected_messages;  // per channel: malformed or of another type
   std::string log_damage;                             // "" when the log was whole
+  bool log_complete = true;                           // false when the recorder died during the run
   double person_confidence = 0;
 };
 

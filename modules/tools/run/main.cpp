@@ -71,7 +71,7 @@ struct Options {
   std::string launch_file = std::string(BEFT_SOURCE_DIR) + "/scenarios/launch/mission.xml";
   std::string net = std::string(BEFT_SOURCE_DIR) + "/scenarios/nets/default.pnml";
   std::string planner = "pf-geodesic";
-  std::vector<std::string> except, sets;
+  std::vector<std::string> except, sets, kills;
   long long seed = -1, max_ticks = -1;  // -1: the scenario's seed, duration / dt
   bool verbose = false, report = true;
 };
@@ -94,6 +94,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--max-ticks", o.max_ticks, "stop after this many ticks (default: duration / dt)");
   app.add_option("--except", o.except, "do not start this process; start it by hand (repeatable)");
   app.add_option("--set", o.sets, "NAME=VALUE for another <arg> of the launch file");
+  app.add_option("--kill", o.kills,
+                 "NAME@TICK: SIGKILL this process once the run reaches the tick, to see it restarted and resume "
+                 "from the run's log (fault injection; repeatable)");
   app.add_flag("--verbose,-v", o.verbose, "echo every process's output (always in processes.log)");
   app.add_flag("!--no-report", o.report, "skip report.json and the pictures");
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
@@ -113,11 +116,13 @@ std::map<std::string, std::string> launchArguments(const Options& o, const beft:
 }
 
 // report.json and the pictures, by beft-report; its exit code.
-int writeReport(const Options& o, const beft::launch::SupervisorOptions& options, double wall_s) {
+int writeReport(const Options& o, const beft::launch::SupervisorOptions& options, double wall_s, bool log_incomplete) {
   char wall[32];
   std::snprintf(wall, sizeof(wall), "%.3f", wall_s);
-  const int code = runProgram({options.bin_dir + "/beft-report", options.record_log, "--scenario",
-                               absolutePath(o.scenario_path), "--out", o.out_dir, "--wall-time", wall});
+  std::vector<std::string> command = {options.bin_dir + "/beft-report", options.record_log, "--scenario",
+                                      absolutePath(o.scenario_path), "--out", o.out_dir, "--wall-time", wall};
+  if (log_incomplete) command.push_back("--log-incomplete");
+  const int code = runProgram(command);
   if (code != 0) std::fprintf(stderr, "[run] error: the report could not be written (code %d)\n", code);
   return code;
 }
@@ -152,6 +157,7 @@ int runMission(Options& o) {
   options.output_file = o.out_dir + "/processes.log";
   std::map<std::string, std::string> args;
   try {
+    for (const auto& kill : o.kills) options.kills.push_back(beft::launch::parsePlannedKill(kill));
     args = launchArguments(o, scenario, options.lcm_url);
   } catch (const beft::launch::LaunchError& e) {
     std::fprintf(stderr, "[run] error: %s\n", e.what());
@@ -173,7 +179,8 @@ int runMission(Options& o) {
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const bool worked = outcome.arbiter_ran && outcome.arbiter_exit_code == 0 && !outcome.interrupted;
   std::printf("[run] %s after %.2f s wall time\n", outcome.message.c_str(), wall_s);
-  const int report_code = o.report && outcome.arbiter_ran ? writeReport(o, options, wall_s) : 0;
+  const int report_code =
+      o.report && outcome.arbiter_ran ? writeReport(o, options, wall_s, outcome.log_incomplete) : 0;
   if (!worked)
     std::fprintf(stderr, "[run] error: the run did not complete: %s (see %s/processes.log)\n",
                  outcome.message.c_str(), o.out_dir.c_str());
