@@ -14,6 +14,7 @@
 #include "guarded_decode.hpp"
 #include "log.hpp"
 #include "log_reader.hpp"
+#include "run_identity.hpp"
 #include "transport.hpp"
 
 namespace beft::blackboard {
@@ -34,7 +35,7 @@ class Traffic {
   void onMessage(const transport::Message& message) {
     const std::string channel(message.channel);
     if (channel == channels::kBlackboardQuery) {
-      beft::bb_query_t query;
+      beft::bb_query_t query{};
       const int size = static_cast<int>(message.size);
       if (wire::decodeFrom(channel, message.data, message.size, query)) onQuery(query);
       return;
@@ -67,7 +68,7 @@ class Traffic {
         log::warn("ignored a query: ", why_not);
         return;
       }
-      const int status = lcm_.publish(answer->channel, &answer->snapshot);
+      const int status = lcm_.publish(wire::runChannel(answer->channel), &answer->snapshot);
       const double elapsed_ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       std::size_t bytes = 0;
@@ -192,7 +193,7 @@ int BlackboardProcess::serve(service::Context& context) {
     try {
       wire::LogReader log(context.resume_log);
       wire::LogEvent event;
-      while (log.next(event)) service->onMessage(event.channel, event.data.data(), static_cast<int>(event.data.size()));
+      while (log.nextOfRun(event, wire::runId())) service->onMessage(event.channel, event.data.data(), static_cast<int>(event.data.size()));
       log::info("resumed from ", context.resume_log, ": ", service->statusLine());
     } catch (const std::exception& e) {
       log::error("cannot resume from ", context.resume_log, ": ", e.what());

@@ -32,7 +32,7 @@ class BlackboardService {
 
   struct Answer {
     std::string channel;                // BB_SNAPSHOT_<requester>
-    beft::bb_snapshot_t snapshot;
+    beft::bb_snapshot_t snapshot{};
     std::vector<std::string> missing;   // asked for, nothing stored
   };
 

@@ -12,7 +12,7 @@ beft::bb_snapshot_t buildSnapshot(const Store& store, const beft::bb_query_t& qu
     const auto all = store.channels();
     wanted.insert(all.begin(), all.end());
   }
-  beft::bb_snapshot_t snapshot;
+  beft::bb_snapshot_t snapshot{};
   snapshot.utime = now_utime;
   snapshot.query_id = query.query_id;
   for (const std::string& channel : wanted) {

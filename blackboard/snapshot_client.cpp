@@ -8,6 +8,7 @@
 
 #include "blackboard/snapshot.hpp"
 #include "channels.hpp"
+#include "run_identity.hpp"
 
 namespace beft::blackboard {
 namespace {
@@ -49,7 +50,7 @@ std::optional<beft::bb_snapshot_t> requestSnapshot(lcm::LCM& lcm, const std::str
   using Clock = std::chrono::steady_clock;
   if (!lcm.good()) return std::nullopt;
 
-  beft::bb_query_t query;
+  beft::bb_query_t query{};
   query.requester = requester;
   query.query_id = newQueryId();
   query.channels = channels;
@@ -57,7 +58,7 @@ std::optional<beft::bb_snapshot_t> requestSnapshot(lcm::LCM& lcm, const std::str
 
   SnapshotWaiter waiter(query.query_id);
   lcm::Subscription* subscription =
-      lcm.subscribeFunction(snapshotChannel(requester), &SnapshotWaiter::onSnapshot, &waiter);
+      lcm.subscribeFunction(wire::runChannel(snapshotChannel(requester)), &SnapshotWaiter::onSnapshot, &waiter);
   // One answer is expected; a few more only if re-sent queries cross it.
   subscription->setQueueCapacity(4);
 
@@ -70,7 +71,7 @@ std::optional<beft::bb_snapshot_t> requestSnapshot(lcm::LCM& lcm, const std::str
     if (now >= deadline) break;
     if (now >= next_send) {
       query.utime = wallUtime();
-      lcm.publish(channels::kBlackboardQuery, &query);
+      lcm.publish(wire::runChannel(channels::kBlackboardQuery), &query);
       next_send = now + resend_period;
     }
     const auto wait = std::min(deadline, next_send) - now;

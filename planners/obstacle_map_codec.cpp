@@ -81,7 +81,7 @@ beft::obstacle_map_t makeObstacleMap(const ObstacleCells& map, int8_t encoding, 
                            std::to_string(map.width) + " x " + std::to_string(map.height));
   }
   checkCellValues(map.cells);
-  beft::obstacle_map_t msg;
+  beft::obstacle_map_t msg{};
   msg.utime = utime;
   msg.tick = tick;
   msg.width = map.width;

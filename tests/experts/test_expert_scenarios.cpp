@@ -48,7 +48,7 @@ class ScenarioRun {
   }
 
   hypothesis_t hypothesis(const std::string& id) const {
-    hypotheses_t all;
+    hypotheses_t all{};
     if (!chain_.latest(channels::kHypotheses, all)) throw std::runtime_error("no HYPOTHESES yet");
     for (const auto& h : all.hypotheses)
       if (h.object_id == id) return h;
@@ -63,7 +63,7 @@ class ScenarioRun {
     }
   }
   planners::ObstacleCells obstacleMap() const {
-    obstacle_map_t map;
+    obstacle_map_t map{};
     if (!chain_.latest(channels::kObstacleMap, map)) throw std::runtime_error("no OBSTACLE_MAP yet");
     return planners::decodeObstacleMap(map);
   }

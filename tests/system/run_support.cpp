@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "log_reader.hpp"
+
 namespace beft::system_test {
 
 ProgramResult runCommand(const std::string& command_line, double timeout_s) {
@@ -67,14 +69,13 @@ std::string makeTempDir(const std::string& tag) {
   return pattern;
 }
 
-std::vector<LoggedMessage> readLog(const std::string& path) {
-  lcm::LogFile log(path, "r");
-  if (!log.good()) throw std::runtime_error("cannot read log " + path);
+std::vector<LoggedMessage> readLog(const std::string& path, uint64_t* other_run_events) {
+  const int64_t run = wire::runOfLog(path);
+  wire::LogReader log(path);
   std::vector<LoggedMessage> events;
-  while (const lcm::LogEvent* event = log.readNextEvent()) {
-    const auto* bytes = static_cast<const uint8_t*>(event->data);
-    events.push_back({event->channel, event->timestamp, {bytes, bytes + event->datalen}});
-  }
+  wire::LogEvent event;
+  while (log.nextOfRun(event, run)) events.push_back({event.channel, event.timestamp, event.data});
+  if (other_run_events) *other_run_events = log.otherRunEvents();
   return events;
 }
 

@@ -29,8 +29,9 @@ struct LoggedMessage {
   std::vector<uint8_t> data;
 };
 
-// Every event of an LCM log file, in order.
-std::vector<LoggedMessage> readLog(const std::string& path);
+// Every event of an LCM log file of its run (the arbiter's), in order, under
+// plain channel names; other runs' events are counted.
+std::vector<LoggedMessage> readLog(const std::string& path, uint64_t* other_run_events = nullptr);
 
 template <typename Message>
 std::vector<Message> messagesOn(const std::vector<LoggedMessage>& log, const std::string& channel) {

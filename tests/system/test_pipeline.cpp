@@ -23,6 +23,7 @@
 #include <beft/visual_percepts_t.hpp>
 
 #include "model.hpp"
+#include "run_identity.hpp"
 #include "run_support.hpp"
 
 using namespace beft::system_test;
@@ -42,10 +43,10 @@ bool logHasEveryFiring(const std::vector<LoggedMessage>& log) {
   std::set<std::pair<int64_t, std::string>> fires, dones;
   for (const auto& event : log) {
     if (event.channel == "FIRE") {
-      beft::fire_t f;
+      beft::fire_t f{};
       if (f.decode(event.data.data(), 0, static_cast<int>(event.data.size())) > 0) fires.insert({f.tick, f.expert});
     } else if (event.channel == "DONE") {
-      beft::done_t d;
+      beft::done_t d{};
       if (d.decode(event.data.data(), 0, static_cast<int>(event.data.size())) > 0) dones.insert({d.tick, d.expert});
     }
   }
@@ -108,12 +109,12 @@ TEST(Pipeline, EachExpertFiresOncePerTickInThePapersOrder) {
   for (std::size_t i = 0; i < run.log.size(); ++i) {
     const auto& event = run.log[i];
     if (event.channel == "FIRE") {
-      beft::fire_t f;
+      beft::fire_t f{};
       f.decode(event.data.data(), 0, static_cast<int>(event.data.size()));
       first_fire.emplace(std::make_pair(f.tick, f.expert), i);
       firing_ids[{f.tick, f.expert}].insert(f.firing_id);
     } else if (event.channel == "DONE") {
-      beft::done_t d;
+      beft::done_t d{};
       d.decode(event.data.data(), 0, static_cast<int>(event.data.size()));
       first_done.emplace(std::make_pair(d.tick, d.expert), i);
     }
@@ -301,7 +302,10 @@ TEST(Replay, LcmLogplayerPlaysTheLogIntoASubscriberThatHearsEveryChannel) {
   while (heard.size() < logged.size() && std::chrono::steady_clock::now() < deadline) lcm.handleTimeout(50);
   kill(player, SIGTERM);
   waitpid(player, nullptr, 0);
-  EXPECT_EQ(heard, logged);
+  // The log holds the run's channels as heard ("VISION@<run>"); readLog gives their plain names.
+  std::set<std::string> heard_plain;
+  for (const auto& channel : heard) heard_plain.insert(std::string(beft::wire::splitRunChannel(channel).base));
+  EXPECT_EQ(heard_plain, logged);
   EXPECT_GE(logged.size(), 15u);
 }
 
@@ -315,16 +319,17 @@ TEST(Launch, AnExpertStartedByHandLaterCompletesTheRun) {
     execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
-  std::string url;
-  for (int i = 0; i < 100 && url.empty(); ++i) {
+  // The launcher prints the command line that joins the run (its URL and run id).
+  std::string command_line;
+  for (int i = 0; i < 100 && command_line.empty(); ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     const auto out = runCommand("cat " + dir + "/run_output.txt", 5).output;
-    const auto line = lineAfter(out, "[run] LCM ");
-    if (!line.empty()) url = line.substr(0, line.find(';'));
+    const auto line = lineAfter(out, "    BEFT_RUN_ID=");
+    if (!line.empty()) command_line = "BEFT_RUN_ID=" + line;
   }
-  ASSERT_FALSE(url.empty());
+  ASSERT_NE(command_line.find("beft-vision --lcm-url"), std::string::npos) << command_line;
   std::this_thread::sleep_for(std::chrono::seconds(3));
-  const auto vision = runCommand(binDir() + "/beft-vision --lcm-url '" + url + "'", 120);
+  const auto vision = runCommand(command_line, 120);
   int status = 0;
   waitpid(runner, &status, 0);
   const auto out = runCommand("cat " + dir + "/run_output.txt", 5).output;
@@ -357,18 +362,23 @@ TEST(Launch, APlannerStartedLateChangesNothing) {
     execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
-  std::string url;
-  for (int i = 0; i < 100 && url.empty(); ++i) {
+  std::string url, run_id;
+  for (int i = 0; i < 100 && (url.empty() || run_id.empty()); ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    const auto line = lineAfter(runCommand("cat " + dir + "/run_output.txt", 5).output, "[run] LCM ");
+    const auto out = runCommand("cat " + dir + "/run_output.txt", 5).output;
+    const auto line = lineAfter(out, "[run] LCM ");
     if (!line.empty()) url = line.substr(0, line.find(';'));
+    const auto env = lineAfter(out, "    BEFT_RUN_ID=");
+    if (!env.empty()) run_id = env.substr(0, env.find(' '));
   }
   ASSERT_FALSE(url.empty());
+  ASSERT_FALSE(run_id.empty());
   std::this_thread::sleep_for(std::chrono::seconds(2));  // without the wait, the run would be past tick 49
   const pid_t planner = fork();
   if (planner == 0) {
     // mission.xml's arguments for the planner
-    const std::string command = binDir() + "/beft-planner --planner pf-geodesic --robot-radius 0.5 --lcm-url '" +
+    const std::string command = "env BEFT_RUN_ID=" + run_id + " " + binDir() +
+                                "/beft-planner --planner pf-geodesic --robot-radius 0.5 --lcm-url '" +
                                 url + "' > " + dir + "/planner_output.txt 2>&1";
     execl("/bin/sh", "sh", "-c", ("exec " + command).c_str(), static_cast<char*>(nullptr));
     _exit(127);

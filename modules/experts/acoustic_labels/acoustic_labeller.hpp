@@ -18,7 +18,7 @@
 namespace beft::acoustic_labels {
 
 struct AcousticLabelling {
-  labels_t labels;                    // one entry per acoustic percept that could be labelled
+  labels_t labels{};                    // one entry per acoustic percept that could be labelled
   std::vector<std::string> skipped;   // percepts left out, each with the reason
 };
 

@@ -7,7 +7,7 @@ namespace beft::audio {
 
 acoustic_percepts_t estimateAudio(const scene_objects_t& scene, const camera::SceneGeometry& solids,
                                   const robot_state_t& robot, const AudioConfig& config) {
-  acoustic_percepts_t out;
+  acoustic_percepts_t out{};
   out.utime = scene.utime;
   out.tick = scene.tick;
   const Eigen::Vector3d left_ear = geometry::leftEar(robot);

@@ -145,7 +145,7 @@ expert::Outcome DwExpert::fire(const expert::Firing& firing, expert::Output& out
         log::info("turn-to reflex: ", trigger.object_id, " weight ", fmt(trigger.weight_before), " -> ",
                   fmt(trigger.weight_after), " at t = ", fmt(firing.utime / 1e6), " s");
         if (!reflex_enabled_) continue;
-        task_command_t command;
+        task_command_t command{};
         command.utime = firing.utime;
         command.command_id = next_command_id_++;
         command.command = task_command_t::COMMAND_PUSH;
@@ -164,7 +164,7 @@ expert::Outcome DwExpert::fire(const expert::Firing& firing, expert::Output& out
     }
   }
 
-  dynamic_weights_t message;
+  dynamic_weights_t message{};
   message.utime = firing.utime;
   message.tick = firing.tick;
   const auto* robot = robot_.ofTick(firing.tick);

@@ -191,7 +191,7 @@ hypothesis_t HypothesisFusion::toMessage(const Hypothesis& h, const std::vector<
 }
 
 hypotheses_t HypothesisFusion::hypotheses(int64_t utime, int64_t tick) const {
-  hypotheses_t out;
+  hypotheses_t out{};
   out.utime = utime;
   out.tick = tick;
   for (const auto& h : hypotheses_) out.hypotheses.push_back(toMessage(h, categories_));

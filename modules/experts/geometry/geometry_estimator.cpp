@@ -5,7 +5,7 @@
 namespace beft::geometry {
 
 geometry_percepts_t estimateGeometry(const scene_objects_t& scene, const robot_state_t& robot) {
-  geometry_percepts_t out;
+  geometry_percepts_t out{};
   out.utime = scene.utime;
   out.tick = scene.tick;
   out.percepts.reserve(scene.objects.size());

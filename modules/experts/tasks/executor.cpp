@@ -45,7 +45,7 @@ void Executor::onPlanResult(const beft::plan_result_t& result) {
 }
 
 beft::robot_command_t Executor::hold(int64_t utime) const {
-  beft::robot_command_t command;
+  beft::robot_command_t command{};
   command.utime = utime;
   command.mode = beft::robot_command_t::MODE_STOP;
   command.vx = command.vy = command.yaw_rate = 0;
@@ -210,7 +210,7 @@ Executor::Finish Executor::collectPlan(const Task& task, Run& run, TickOutput& o
 
 void Executor::requestPlan(const Task& task, Run& run, int64_t utime, TickOutput& out) {
   const auto& r = *robot_;
-  beft::plan_request_t request;
+  beft::plan_request_t request{};
   request.utime = utime;
   request.request_id = next_request_id_++;
   request.start_x = r.x;

@@ -67,7 +67,7 @@ class Executor {
   bool awaitedResultArrived() const { return plan_result_.has_value(); }
 
   struct TickOutput {
-    beft::robot_command_t command;                 // the whole desired motion
+    beft::robot_command_t command{};                 // the whole desired motion
     std::optional<beft::plan_request_t> request;   // to publish on PLAN_REQUEST
     std::vector<std::string> log;                  // what happened, for the process log
   };

@@ -36,7 +36,7 @@ Task fromMessage(const beft::task_t& m) {
 }
 
 beft::task_stack_t stackMessage(const TaskStack& stack, int64_t utime, int64_t tick) {
-  beft::task_stack_t m;
+  beft::task_stack_t m{};
   m.utime = utime;
   m.tick = tick;
   for (const auto& task : stack.tasks()) m.tasks.push_back(toMessage(task));
@@ -60,7 +60,7 @@ int8_t eventCode(TaskEvent::Kind kind) {
 }
 
 beft::task_events_t eventsMessage(const std::vector<TaskEvent>& events, int64_t utime, int64_t tick) {
-  beft::task_events_t m;
+  beft::task_events_t m{};
   m.utime = utime;
   m.tick = tick;
   for (const auto& event : events) {

@@ -89,7 +89,7 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     // computed on the helper thread meanwhile (they touch only their own
     // state). The map, the longer part, stays here: it starts at once, while
     // the helper takes a wake-up to start.
-    visual_percepts_t percepts;
+    visual_percepts_t percepts{};
     percepting_.start([&] {
       // Expected pixels only change with the camera or the objects' shapes and poses.
       if (expected_pose_.width == 0 || !samePose(*instance, expected_pose_) || !sameSolids(*scene, expected_scene_)) {

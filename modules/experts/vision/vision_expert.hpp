@@ -47,7 +47,7 @@ class VisionExpert : public expert::Expert {
   int64_t last_mapped_tick_ = -1;
   std::optional<obstacle_map_t> resume_map_;  // a map published before this process started
   camera_frame_t last_depth_{};        // the depth frame last added to the map
-  obstacle_map_t map_message_;         // the map as last encoded
+  obstacle_map_t map_message_{};         // the map as last encoded
   uint64_t map_message_version_ = 0;   // mapper version it encodes (0: none yet)
   camera::RayCaster ray_caster_;
   std::vector<int> expected_;          // expected pixels per object for the pose and solids below

@@ -42,7 +42,7 @@ std::vector<int> countVisiblePixels(const camera_frame_t& instance, const scene_
 
 visual_percepts_t estimateVisualOcclusion(const scene_objects_t& scene, const std::vector<int>& visible,
                                           const std::vector<int>& expected) {
-  visual_percepts_t out;
+  visual_percepts_t out{};
   out.utime = scene.utime;
   out.tick = scene.tick;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {

@@ -17,7 +17,7 @@
 namespace beft::visual_labels {
 
 struct VisualLabelling {
-  labels_t labels;                    // one entry per visual percept that could be labelled
+  labels_t labels{};                    // one entry per visual percept that could be labelled
   std::vector<std::string> skipped;   // percepts left out, each with the reason
 };
 

@@ -27,6 +27,7 @@
 #include <beft/plan_result_t.hpp>
 #include <beft/robot_command_t.hpp>
 #include <beft/robot_state_t.hpp>
+#include <beft/run_beacon_t.hpp>
 #include <beft/run_status_t.hpp>
 #include <beft/scene_objects_t.hpp>
 #include <beft/task_command_t.hpp>
@@ -97,7 +98,9 @@ std::ostream& operator<<(std::ostream& out, Channel<Message> channel) { return o
   X(kRunStatus, "RUN_STATUS", run_status_t)                                                   \
   X(kStopRequest, "STOP_REQUEST", run_status_t) /* end the run after this tick */            \
   /* Blackboard service. */                                                                  \
-  X(kBlackboardQuery, "BB_QUERY", bb_query_t)
+  X(kBlackboardQuery, "BB_QUERY", bb_query_t)                                                 \
+  /* URL-wide: every run announces itself (run_identity.hpp). */                             \
+  X(kRunBeacons, "BEFT_RUNS", run_beacon_t)
 
 #define BEFT_DECLARE_CHANNEL(constant, name, type) inline constexpr Channel<type> constant{name};
 BEFT_CHANNELS(BEFT_DECLARE_CHANNEL)

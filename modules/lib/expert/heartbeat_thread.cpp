@@ -6,6 +6,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "channels.hpp"
+#include "run_identity.hpp"
 
 namespace beft::expert {
 
@@ -72,14 +73,14 @@ void HeartbeatThread::loop() {
 }
 
 void HeartbeatThread::send() {
-  beft::heartbeat_t beat;
+  beft::heartbeat_t beat{};
   beat.utime = wallMicros();
   beat.process = process_name_;
   beat.pid = static_cast<int32_t>(getpid());
   beat.host = host_;
   beat.last_firing_id = last_firing_id_.load();
   beat.state = firing_.load() ? "firing" : "idle";
-  lcm_.publish(channels::kHeartbeat, &beat);
+  lcm_.publish(wire::runChannel(channels::kHeartbeat), &beat);
   ++sent_;
 }
 

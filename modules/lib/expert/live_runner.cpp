@@ -22,6 +22,7 @@
 #include "log_replay.hpp"
 #include "log.hpp"
 #include "control_messages.hpp"
+#include "run_identity.hpp"
 #include "transport.hpp"
 
 namespace beft::expert {
@@ -43,7 +44,7 @@ class LcmOutput : public Output {
  public:
   explicit LcmOutput(lcm::LCM& lcm) : lcm_(lcm) {}
   void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
-    if (lcm_.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())) != 0)
+    if (lcm_.publish(wire::runChannel(channel), bytes.data(), static_cast<unsigned>(bytes.size())) != 0)
       log::warn("could not publish on ", channel, " (", bytes.size(), " bytes)");
   }
 
@@ -101,13 +102,13 @@ class Runner {
     const std::string channel(message.channel);
     const int size = static_cast<int>(message.size);
     if (channel == channels::kFire) {
-      beft::fire_t fire;
+      beft::fire_t fire{};
       if (decodeMessage(channel, message.data, size, fire)) onFire(fire);
     } else if (channel == channels::kRunStatus) {
-      beft::run_status_t status;
+      beft::run_status_t status{};
       if (decodeMessage(channel, message.data, size, status)) onRunStatus(status);
     } else if (!snapshot_channel_.empty() && channel == snapshot_channel_) {
-      beft::bb_snapshot_t snapshot;
+      beft::bb_snapshot_t snapshot{};
       if (decodeMessage(channel, message.data, size, snapshot)) onSnapshot(snapshot);
     } else if (read_channels_.count(channel)) {
       if (heardWhileResuming(channel, message.data, message.size)) return;
@@ -234,7 +235,9 @@ class Runner {
     resendDone();
   }
 
-  void resendDone() { lcm_.publish(channels::kDone, &last_done_); }
+  void resendDone() {
+    lcm_.publish(wire::runChannel(channels::kDone), &last_done_);
+  }
 
   // What wakes the expert: its own FIREs, the run's waiting and end, and its
   // snapshot answer. Its inputs go to a socket of their own that nothing
@@ -273,13 +276,13 @@ class Runner {
   // Late joiners: ask the blackboard for the latest message of each channel
   // read; the answer only fills channels nothing has arrived on yet.
   void requestSnapshot() {
-    beft::bb_query_t query;
+    beft::bb_query_t query{};
     query.utime = wallMicros();
     query.requester = snapshot_channel_.substr(std::string(channels::kBlackboardSnapshotPrefix).size());
     query.query_id = 1;
     for (const auto& channel : read_channels_) query.channels.push_back(channel);
     query.num_channels = static_cast<int32_t>(query.channels.size());
-    lcm_.publish(channels::kBlackboardQuery, &query);
+    lcm_.publish(wire::runChannel(channels::kBlackboardQuery), &query);
   }
 
   void onSnapshot(const beft::bb_snapshot_t& snapshot) {
@@ -307,7 +310,7 @@ class Runner {
   int64_t last_fired_id_ = -1;
   std::unique_ptr<transport::Receiver> control_, inputs_;  // openSplitReceivers: inputs_ only with the direct receiver
   std::optional<HeartbeatThread> heartbeat_;  // from the start of the loop to its end
-  beft::done_t last_done_;
+  beft::done_t last_done_{};
   int64_t firings_run_ = 0;
   bool run_ended_ = false;
   std::string run_end_reason_;
@@ -326,6 +329,7 @@ int runLive(Expert& expert, const LiveOptions& options) {
     log::error("cannot open LCM at ", options.lcm_url);
     return 1;
   }
+  wire::logRunOf(options.lcm_url);
   Runner runner(expert, options, lcm);
   return runner.run();
 }

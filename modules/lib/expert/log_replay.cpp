@@ -16,6 +16,7 @@
 #include "guarded_decode.hpp"
 #include "log_reader.hpp"
 #include "log.hpp"
+#include "run_identity.hpp"
 
 namespace beft::expert {
 
@@ -77,7 +78,7 @@ class LogFeeder {
   bool feed(const wire::LogEvent& event) {
     const std::string& channel = event.channel;
     if (channel == channels::kFire) {
-      beft::fire_t fire;
+      beft::fire_t fire{};
       if (!wire::decodeFrom(channel, event.data.data(), event.data.size(), fire)) return false;
       if (fire.expert != process_name_ || fire.firing_id <= last_firing_id_) return false;
       firePending();  // a newer token: the previous one runs now
@@ -138,9 +139,9 @@ std::map<int64_t, beft::done_t> donesOf(const std::string& process_name, const s
   std::map<int64_t, beft::done_t> dones;
   wire::LogReader log(log_path);
   wire::LogEvent event;
-  while (log.next(event)) {
+  while (log.nextOfRun(event, wire::runId())) {
     if (event.channel != channels::kDone) continue;
-    beft::done_t done;
+    beft::done_t done{};
     if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), done) && done.expert == process_name)
       dones[done.firing_id] = done;
   }
@@ -175,9 +176,11 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
   LogFeeder feeder(expert, process_name, output, [](int64_t) { return true; });
   feeder.onBeforeFire([&](const Firing& firing) { output.firing_id = firing.firing_id; });
 
+  // Offline the expert is of the run it replays (the arbiter's in the log).
+  const int64_t run = wire::runId() != 0 ? wire::runId() : wire::runOfLog(log_path);
   wire::LogReader log(log_path);
   wire::LogEvent event;
-  while (log.next(event)) {
+  while (log.nextOfRun(event, run)) {
     const std::string& channel = event.channel;
     const int64_t firing_before = feeder.lastFiringId();
     feeder.feed(event);
@@ -186,7 +189,7 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
       continue;
     }
     if (channel == channels::kDone) {
-      beft::done_t done;
+      beft::done_t done{};
       if (wire::decodeFrom(channel, event.data.data(), event.data.size(), done) && done.expert == process_name &&
           done.firing_id == feeder.lastFiringId())
         in_recorded_firing = false;
@@ -215,7 +218,7 @@ ResumeState resumeFromLog(Expert& expert, const std::string& process_name, const
   wire::LogEvent event;
   // Inputs logged after this instant may also be waiting on the live sockets.
   const int64_t overlap_from_us = live_since_us - 1000000;
-  while (log.next(event)) {
+  while (log.nextOfRun(event, wire::runId())) {
     if (feeder.feed(event)) {
       ++state.inputs;
       if (event.timestamp >= overlap_from_us) state.logged_recently.insert(fingerprintOf(event.channel, event.data));

@@ -12,6 +12,7 @@
 #include "heap_retention.hpp"
 #include "lcm_url.hpp"
 #include "log.hpp"
+#include "run_identity.hpp"
 
 namespace beft::service {
 
@@ -84,6 +85,7 @@ int runServiceMain(int argc, char** argv, Service& service) {
     log::error("cannot open LCM at ", lcm_url);
     return 1;
   }
+  if (service.belongsToARun()) wire::logRunOf(lcm_url);
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onTerminate);
   Context context{lcm, lcm_url, process_name, g_stop, resume_log};
@@ -107,7 +109,7 @@ void HeartbeatSender::update(bool arbiter_waiting) {
   const bool answer_waiting = arbiter_waiting && now - last_waiting_answer_ > std::chrono::milliseconds(50);
   if (now < next_ && !answer_waiting) return;
   heartbeat_.utime = wallMicros();
-  lcm_.publish(channels::kHeartbeat, &heartbeat_);
+  lcm_.publish(wire::runChannel(channels::kHeartbeat), &heartbeat_);
   ++sent_;
   if (answer_waiting) last_waiting_answer_ = now;
   if (now >= next_) next_ += period_;

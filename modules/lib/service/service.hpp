@@ -70,6 +70,8 @@ class Service {
   // Whether it can be restarted after a crash with --resume-log (all but the
   // recorder, whose log is what the others resume from).
   virtual bool resumable() const { return true; }
+  // Whether it belongs to one run; the recorder takes every run.
+  virtual bool belongsToARun() const { return true; }
 };
 
 // The whole main() of a service process:
@@ -92,7 +94,7 @@ class HeartbeatSender {
  private:
   using Clock = std::chrono::steady_clock;
   lcm::LCM& lcm_;
-  beft::heartbeat_t heartbeat_;
+  beft::heartbeat_t heartbeat_{};
   Clock::duration period_;
   Clock::time_point next_;
   Clock::time_point last_waiting_answer_;

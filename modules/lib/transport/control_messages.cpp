@@ -6,7 +6,7 @@ namespace beft::control {
 
 beft::fire_t makeFire(const std::string& expert, const std::string& transition, int64_t tick, int64_t utime,
                       int64_t firing_id) {
-  beft::fire_t fire;
+  beft::fire_t fire{};
   fire.utime = utime;
   fire.expert = expert;
   fire.transition = transition;
@@ -16,7 +16,7 @@ beft::fire_t makeFire(const std::string& expert, const std::string& transition, 
 }
 
 beft::run_status_t makeRunStatus(int8_t state, int64_t tick, int64_t utime, const std::string& message) {
-  beft::run_status_t status;
+  beft::run_status_t status{};
   status.utime = utime;
   status.tick = tick;
   status.state = state;

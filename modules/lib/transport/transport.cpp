@@ -9,6 +9,8 @@
 #include "detail/udpm_filter.hpp"
 #include "detail/udpm_receiver.hpp"
 #include "log.hpp"
+#include "reject_counter.hpp"
+#include "run_identity.hpp"
 
 namespace beft::transport {
 
@@ -95,6 +97,47 @@ class LcmSource : public Receiver {
   std::string what_;
 };
 
+// Hands on this run's messages under their plain names; another run's are
+// dropped and counted (a receiver of every channel hears them).
+class RunFilter : public Receiver {
+ public:
+  explicit RunFilter(std::unique_ptr<Receiver> inner) : inner_(std::move(inner)), own_(wire::runId()) {}
+  int fd() const override { return inner_->fd(); }
+  int drain(const Handler& handler) override {
+    return inner_->drain([&](const Message& message) {
+      const wire::RunChannel split = wire::splitRunChannel(message.channel);
+      if (split.run_id != own_ && !wire::isUrlWideChannel(message.channel)) {
+        wire::processRejects().count(std::string(split.base), {wire::Fault::kOtherRun, "", split.run_id});
+        return;
+      }
+      Message plain = message;
+      plain.channel = split.base;
+      handler(plain);
+    });
+  }
+  std::string description() const override {
+    // The channels under their plain names, and the run once.
+    std::string text = inner_->description();
+    if (own_ == 0) return text;
+    const std::string suffix = wire::runChannel("", own_);
+    for (auto at = text.find(suffix); at != std::string::npos; at = text.find(suffix, at)) text.erase(at, suffix.size());
+    return text + ", " + wire::describeRun(own_);
+  }
+  int receiveBufferBytes() const override { return inner_->receiveBufferBytes(); }
+  uint64_t kernelDropped() const override { return inner_->kernelDropped(); }
+
+ private:
+  std::unique_ptr<Receiver> inner_;
+  int64_t own_;
+};
+
+// The selection as it reads on the wire: this run's channel names.
+Selection onThisRun(const Selection& selection) {
+  Selection named = selection;
+  for (auto& rule : named.rules) rule.channel = wire::runChannel(rule.channel);
+  return named;
+}
+
 }  // namespace
 
 int Receiver::receive(int timeout_ms, const Handler& handler) {
@@ -150,8 +193,12 @@ bool roomToGather(int receive_buffer_bytes) {
 
 std::unique_ptr<Receiver> openReceiver(lcm::LCM& lcm, const std::string& url, const Selection& spec,
                                        std::size_t batch, int lcm_queue_capacity) {
-  if (directReceiveFor(url)) return std::make_unique<DirectSource>(*udpm::parseUrl(url), spec, batch);
-  return std::make_unique<LcmSource>(lcm, url, spec, lcm_queue_capacity);
+  const Selection named = spec.every_run ? spec : onThisRun(spec);
+  std::unique_ptr<Receiver> receiver;
+  if (directReceiveFor(url)) receiver = std::make_unique<DirectSource>(*udpm::parseUrl(url), named, batch);
+  else receiver = std::make_unique<LcmSource>(lcm, url, named, lcm_queue_capacity);
+  if (spec.every_run) return receiver;
+  return std::make_unique<RunFilter>(std::move(receiver));
 }
 
 bool waitReadable(std::initializer_list<int> fds, int timeout_ms) { return udpm::waitReadable(fds, timeout_ms); }

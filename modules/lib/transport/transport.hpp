@@ -51,10 +51,15 @@ Rule channelRule(const std::string& channel);
 
 // Which messages a receiver takes: those its rules match (AcceptListed), or
 // all but those (RejectListed: a recorder's "everything").
+// Channels are named as in channels.hpp; the receiver takes them on this
+// process's run (run_identity.hpp: "VISION@<run>") and hands them on under
+// their plain names, dropping (and counting) any other run's, unless
+// every_run (the recorder: every run's channels, names as heard).
 struct Selection {
   enum class Mode { AcceptListed, RejectListed };
   Mode mode = Mode::AcceptListed;
   std::vector<Rule> rules;
+  bool every_run = false;
 };
 
 // True when an LCM subscription pattern is a plain channel name (no regex).

@@ -3,11 +3,13 @@
 #include <sys/stat.h>
 
 #include <cctype>
-#include <chrono>
-#include <thread>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <stdexcept>
+#include <thread>
+
+#include "run_identity.hpp"
 
 namespace beft::wire {
 
@@ -133,6 +135,29 @@ bool LogReader::next(LogEvent& event) {
     offset_ = record_start + 1;
     after_damage = true;
   }
+}
+
+bool LogReader::nextOfRun(LogEvent& event, int64_t run_id) {
+  while (next(event)) {
+    const RunChannel split = splitRunChannel(event.channel);
+    if (split.run_id != run_id && !isUrlWideChannel(event.channel)) {
+      ++other_run_events_;
+      continue;
+    }
+    if (split.run_id != 0) event.channel.resize(split.base.size());
+    return true;
+  }
+  return false;
+}
+
+int64_t runOfLog(const std::string& path) {
+  LogReader log(path);
+  LogEvent event;
+  while (log.next(event)) {
+    const RunChannel split = splitRunChannel(event.channel);
+    if (split.base == "FIRE" || split.base == "MARKING") return split.run_id;
+  }
+  return 0;
 }
 
 bool waitForLogPast(const std::string& path, int64_t since_us, double timeout_s) {

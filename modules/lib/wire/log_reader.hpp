@@ -44,6 +44,10 @@ class LogReader {
 
   // The next whole event; false at the end of the file.
   bool next(LogEvent& event);
+  // The next event of one run (run_identity.hpp), under its plain channel
+  // name; another run's are skipped and counted.
+  bool nextOfRun(LogEvent& event, int64_t run_id);
+  uint64_t otherRunEvents() const { return other_run_events_; }
 
   const LogDamage& damage() const { return damage_; }
   // Offset just after the last whole event returned.
@@ -63,8 +67,13 @@ class LogReader {
   uint64_t offset_ = 0;  // where the next read starts
   uint64_t end_of_last_event_ = 0;
   uint64_t known_size_ = 0;
+  uint64_t other_run_events_ = 0;
   LogDamage damage_;
 };
+
+// The run a log is of: that of its first FIRE or MARKING (the arbiter's), 0
+// if it has none or they carry no run id.
+int64_t runOfLog(const std::string& path);
 
 // Waits until a log still being written holds an event received at or after
 // since_us (then everything received before it is in the file: the recorder

@@ -130,7 +130,8 @@ class Walker {
   Verdict run(int struct_index) {
     position_ = 8;  // after the fingerprint
     if (!walkStruct(struct_index, 0)) return verdict_;
-    if (position_ != size_) return {Fault::kTrailingBytes, structs_[struct_index].name.c_str()};
+    const StructRules& rules = structs_[struct_index];
+    if (position_ != size_) return {Fault::kTrailingBytes, rules.name.c_str()};
     return {};
   }
 
@@ -331,12 +332,15 @@ const char* faultName(Fault fault) {
     case Fault::kBadEnum: return "value not among the declared constants";
     case Fault::kBelowBound: return "value below the declared bound";
     case Fault::kUndecodable: return "refused by the generated decoder";
+    case Fault::kOtherRun: return "of another run on this URL";
   }
   return "unknown fault";
 }
 
 std::string Verdict::text() const {
-  return field[0] == '\0' ? std::string(faultName(fault)) : std::string(field) + ": " + faultName(fault);
+  std::string text = field[0] == '\0' ? std::string(faultName(fault)) : std::string(field) + ": " + faultName(fault);
+  if (fault == Fault::kOtherRun) text += " (run " + std::to_string(other_run) + ")";
+  return text;
 }
 
 MessageRules::MessageRules(const LcmTypeSet& types) {

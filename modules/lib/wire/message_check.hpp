@@ -35,6 +35,7 @@ enum class Fault : uint8_t {
   kBadEnum,            // not one of the declared constants
   kBelowBound,         // below the declared lower bound
   kUndecodable,        // the generated decoder refused what the guard passed
+  kOtherRun,           // on another run's channel (run_identity.hpp): dropped, not malformed
 };
 
 // "length beyond the bytes", ... (static text)
@@ -43,6 +44,7 @@ const char* faultName(Fault fault);
 struct Verdict {
   Fault fault = Fault::kNone;
   const char* field = "";  // "hypotheses_t.hypotheses.label" (static storage), or ""
+  int64_t other_run = 0;   // kOtherRun: that run's id
 
   bool ok() const { return fault == Fault::kNone; }
   std::string text() const;  // "hypotheses_t.hypotheses.label: length beyond the bytes"

@@ -111,21 +111,25 @@ void ArbiterCore::resume(const ResumePoint& point) {
     expert.last_heartbeat = now;
   }
   for (auto& service : services_heard_) service.second = true;
-  for (std::size_t r = 0; r < last.running.size(); ++r) {
-    const int e = expertIndex(last.running[r]);
+  for (const std::string& name : last.running) {
+    const int e = expertIndex(name);
+    if (e < 0) throw std::invalid_argument("the log's MARKING runs " + name + ", not an expert of this net");
+    const auto fire = point.newest_fire.find(name);
+    const bool fire_sent = fire != point.newest_fire.end() && !point.done_firing_ids.count(fire->second.firing_id);
+    // The transition: the sent FIRE's, else the expert's (its newest FIRE's if it has several).
     int transition = -1;
-    for (std::size_t t = 0; t < net_.transitions.size(); ++t)
-      if (net_.transitions[t].id == last.running_transitions[r]) transition = static_cast<int>(t);
-    if (e < 0 || transition < 0)
-      throw std::invalid_argument("the log's MARKING runs " + last.running[r] + "/" + last.running_transitions[r] +
-                                  ", not in this net");
+    for (std::size_t t = 0; t < net_.transitions.size(); ++t) {
+      if (transition_expert_[t] != e) continue;
+      if (transition < 0 || (fire != point.newest_fire.end() && net_.transitions[t].id == fire->second.transition))
+        transition = static_cast<int>(t);
+    }
+    if (transition < 0) throw std::invalid_argument("no transition of this net fires " + name);
     Running running;
     running.transition = transition;
-    running.firing_id = last.running_firing_ids[r];
-    running.tick = last.running_ticks[r];
+    running.firing_id = fire_sent ? fire->second.firing_id : next_firing_id_++;
+    running.tick = fire_sent ? fire->second.tick : last.tick;
     running.attempt_start = now;
     experts_[e].running = running;
-    next_firing_id_ = std::max(next_firing_id_, running.firing_id + 1);
   }
   state_ = RunState::Running;
   log::info("resumed at tick ", tick_, ", step ", stats_.steps, ", ", firingsInFlight(),
@@ -543,7 +547,7 @@ void ArbiterCore::sendStatus(int8_t state, const std::string& message) {
 }
 
 void ArbiterCore::publishMarking(const std::string& event) {
-  beft::marking_t marking;
+  beft::marking_t marking{};
   marking.utime = utimeOfTick(tick_);
   marking.tick = tick_;
   marking.step = ++stats_.steps;
@@ -552,13 +556,8 @@ void ArbiterCore::publishMarking(const std::string& event) {
   marking.place_ids.reserve(net_.places.size());
   for (const auto& place : net_.places) marking.place_ids.push_back(place.id);
   marking.tokens.assign(marking_.begin(), marking_.end());
-  for (const auto& expert : experts_) {
-    if (!expert.running) continue;
-    marking.running.push_back(expert.name);
-    marking.running_transitions.push_back(net_.transitions[expert.running->transition].id);
-    marking.running_ticks.push_back(expert.running->tick);
-    marking.running_firing_ids.push_back(expert.running->firing_id);
-  }
+  for (const auto& expert : experts_)
+    if (expert.running) marking.running.push_back(expert.name);
   marking.num_running = static_cast<int32_t>(marking.running.size());
   output_.sendMarking(marking);
 }

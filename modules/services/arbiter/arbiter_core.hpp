@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -101,8 +102,10 @@ struct ArbiterStats {
 // Where a restarted arbiter takes the run up again (crash-only): what it had
 // published before it died, read from the run's log.
 struct ResumePoint {
-  beft::marking_t marking;        // the last MARKING it published (sent before its step's FIREs)
-  int64_t highest_firing_id = 0;  // of every FIRE logged (a retry's id is above the MARKING's)
+  beft::marking_t marking{};  // the last MARKING it published (sent before its step's FIREs)
+  std::map<std::string, beft::fire_t> newest_fire;  // per expert, the newest FIRE logged
+  std::set<int64_t> done_firing_ids;                // firings whose DONE the log holds
+  int64_t highest_firing_id = 0;                    // of every FIRE logged
 };
 
 class ArbiterCore {
@@ -111,9 +114,12 @@ class ArbiterCore {
 
   // Starts waiting for the experts' heartbeats (RUN_STATUS WAITING).
   void start();
-  // Instead of start(), after a crash: the marking, tick, step and firings
-  // in flight of the last MARKING taken up again, their FIREs re-sent (an
-  // expert that already ran one answers with its DONE again).
+  // Instead of start(), after a crash: the marking, tick and step of the
+  // last MARKING taken up again with its firings in flight, their FIREs
+  // re-sent (an expert that already ran one answers with its DONE again). A
+  // firing in flight is the expert's newest FIRE when the log holds no DONE
+  // for it; else its FIRE was never sent (the MARKING goes out first) and it
+  // gets a new id.
   // Throws std::invalid_argument if the point does not fit this net.
   void resume(const ResumePoint& point);
   void onDone(const beft::done_t& done);

@@ -6,10 +6,13 @@
 #include <thread>
 
 #include <sched.h>
+#include <unistd.h>
 
 #include "channels.hpp"
+#include "control_messages.hpp"
 #include "guarded_decode.hpp"
 #include "log.hpp"
+#include "run_identity.hpp"
 
 namespace beft::arbiter {
 
@@ -22,14 +25,14 @@ double SteadyClock::now() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-void LcmArbiterOutput::sendFire(const beft::fire_t& fire) { lcm_.publish(channels::kFire, &fire); }
+void LcmArbiterOutput::sendFire(const beft::fire_t& fire) { lcm_.publish(fire_channel_, &fire); }
 
 void LcmArbiterOutput::sendMarking(const beft::marking_t& marking) {
-  lcm_.publish(channels::kMarking, &marking);
+  lcm_.publish(marking_channel_, &marking);
 }
 
 void LcmArbiterOutput::sendRunStatus(const beft::run_status_t& status) {
-  lcm_.publish(channels::kRunStatus, &status);
+  lcm_.publish(run_status_channel_, &status);
 }
 
 void LcmArbiterOutput::firingEnded(const FiringRecord& record) {
@@ -37,10 +40,33 @@ void LcmArbiterOutput::firingEnded(const FiringRecord& record) {
 }
 
 std::vector<std::string> ArbiterEventQueue::channelsRead() {
-  return {channels::kDone, channels::kHeartbeat, channels::kStopRequest};
+  return {channels::kDone, channels::kHeartbeat, channels::kStopRequest, channels::kRunBeacons};
 }
 
-ArbiterEventQueue::ArbiterEventQueue(lcm::LCM& lcm, const std::string& url) {
+void ArbiterEventQueue::announce(int64_t tick) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now < next_beacon_) return;
+  next_beacon_ = now + std::chrono::milliseconds(500);
+  beft::run_beacon_t beacon{};
+  beacon.utime = std::chrono::duration_cast<std::chrono::microseconds>(
+                     std::chrono::system_clock::now().time_since_epoch())
+                     .count();
+  beacon.run_id = wire::runId();
+  char host[256] = {0};
+  beacon.host = gethostname(host, sizeof host - 1) == 0 ? host : "unknown";
+  beacon.pid = static_cast<int32_t>(getpid());
+  beacon.tick = tick;
+  lcm_.publish(channels::kRunBeacons, &beacon);
+}
+
+LcmArbiterOutput::LcmArbiterOutput(lcm::LCM& lcm, FiringLog* firing_log)
+    : lcm_(lcm),
+      firing_log_(firing_log),
+      fire_channel_(wire::runChannel(channels::kFire)),
+      marking_channel_(wire::runChannel(channels::kMarking)),
+      run_status_channel_(wire::runChannel(channels::kRunStatus)) {}
+
+ArbiterEventQueue::ArbiterEventQueue(lcm::LCM& lcm, const std::string& url) : lcm_(lcm) {
   transport::Selection spec;
   for (const auto& channel : channelsRead()) spec.rules.push_back(transport::channelRule(channel));
   source_ = transport::openReceiver(lcm, url, spec, 16, kQueueCapacity);
@@ -78,15 +104,19 @@ bool ArbiterEventQueue::receive(int timeout_ms, int spin_us) {
 void ArbiterEventQueue::onMessage(const transport::Message& message) {
   const std::string channel(message.channel);
   if (channel == channels::kDone) {
-    beft::done_t done;
+    beft::done_t done{};
     if (wire::decodeFrom(channel, message.data, message.size, done)) events_.emplace_back(std::move(done));
   } else if (channel == channels::kHeartbeat) {
-    beft::heartbeat_t heartbeat;
+    beft::heartbeat_t heartbeat{};
     if (wire::decodeFrom(channel, message.data, message.size, heartbeat)) events_.emplace_back(std::move(heartbeat));
   } else if (channel == channels::kStopRequest) {
-    beft::run_status_t request;
+    beft::run_status_t request{};
     if (wire::decodeFrom(channel, message.data, message.size, request))
       events_.emplace_back(StopRequest{request.message.empty() ? "STOP_REQUEST" : request.message});
+  } else if (channel == channels::kRunBeacons) {
+    beft::run_beacon_t beacon{};
+    if (wire::decodeFrom(channel, message.data, message.size, beacon) && beacon.run_id != wire::runId())
+      other_runs_.heard(beacon.run_id, beacon.host, beacon.pid);
   }
 }
 
@@ -125,6 +155,7 @@ bool runArbiterLoop(ArbiterEventQueue& queue, ArbiterCore& core, const Clock& cl
     }
     queue.deliverTo(core);
     core.onTimeAdvanced();
+    queue.announce(core.tick());
   }
   return true;
 }

@@ -7,6 +7,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <memory>
 #include <string>
 #include <variant>
@@ -14,6 +15,7 @@
 
 #include "arbiter_core.hpp"
 #include "firing_log.hpp"
+#include "other_run_watch.hpp"
 #include "service.hpp"
 #include "transport.hpp"
 
@@ -27,7 +29,7 @@ class SteadyClock : public Clock {
 // Publishes the core's messages on their channels and writes the firing log.
 class LcmArbiterOutput : public ArbiterOutput {
  public:
-  LcmArbiterOutput(lcm::LCM& lcm, FiringLog* firing_log) : lcm_(lcm), firing_log_(firing_log) {}
+  LcmArbiterOutput(lcm::LCM& lcm, FiringLog* firing_log);
   void sendFire(const beft::fire_t& fire) override;
   void sendMarking(const beft::marking_t& marking) override;
   void sendRunStatus(const beft::run_status_t& status) override;
@@ -36,6 +38,7 @@ class LcmArbiterOutput : public ArbiterOutput {
  private:
   lcm::LCM& lcm_;
   FiringLog* firing_log_;
+  std::string fire_channel_, marking_channel_, run_status_channel_;  // on this run (run_identity.hpp)
 };
 
 struct StopRequest {
@@ -56,6 +59,9 @@ class ArbiterEventQueue {
   // The channels it receives: DONE, HEARTBEAT, STOP_REQUEST.
   static std::vector<std::string> channelsRead();
 
+  // Sends this run's beacon on BEFT_RUNS when half a second has passed.
+  void announce(int64_t tick);
+
   // Waits up to `timeout_ms` for messages and queues every one there; polls
   // for the first `spin_us` microseconds of it instead of sleeping. Returns
   // false if receiving failed.
@@ -68,8 +74,12 @@ class ArbiterEventQueue {
  private:
   void onMessage(const transport::Message& message);
 
+
+  lcm::LCM& lcm_;
   std::unique_ptr<transport::Receiver> source_;
   std::vector<ArbiterEvent> events_;
+  OtherRunWatch other_runs_;
+  std::chrono::steady_clock::time_point next_beacon_{};
 };
 
 // Set by signal handlers, read by the loop.

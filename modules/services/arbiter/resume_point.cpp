@@ -6,6 +6,7 @@
 #include "guarded_decode.hpp"
 #include "log.hpp"
 #include "log_reader.hpp"
+#include "run_identity.hpp"
 
 namespace beft::arbiter {
 
@@ -16,16 +17,21 @@ std::optional<ResumePoint> readResumePoint(const std::string& log_path, int64_t 
   bool found = false;
   wire::LogReader log(log_path);
   wire::LogEvent event;
-  while (log.next(event)) {
+  while (log.nextOfRun(event, wire::runId())) {
     if (event.channel == channels::kMarking) {
-      beft::marking_t marking;
+      beft::marking_t marking{};
       if (!wire::decodeFrom(event.channel, event.data.data(), event.data.size(), marking)) continue;
       point.marking = std::move(marking);
       found = true;
     } else if (event.channel == channels::kFire) {
-      beft::fire_t fire;
+      beft::fire_t fire{};
       if (!wire::decodeFrom(event.channel, event.data.data(), event.data.size(), fire)) continue;
       point.highest_firing_id = std::max(point.highest_firing_id, fire.firing_id);
+      point.newest_fire[fire.expert] = fire;
+    } else if (event.channel == channels::kDone) {
+      beft::done_t done{};
+      if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), done))
+        point.done_firing_ids.insert(done.firing_id);
     }
   }
   if (log.damage().any()) log::warn("resuming from a damaged log: ", log.damage().summary());

@@ -16,6 +16,7 @@
 #include "log_reader.hpp"
 #include "ompl_planner.hpp"
 #include "planner_factory.hpp"
+#include "run_identity.hpp"
 
 namespace beft::planner_service {
 
@@ -82,10 +83,10 @@ void PlannerProcess::onMessage(const transport::Message& message) {
     latest_map_.assign(message.data, message.data + message.size);
     has_map_ = true;
   } else if (channel == channels::kPlanRequest) {
-    beft::plan_request_t request;
+    beft::plan_request_t request{};
     if (wire::decodeFrom(channel, message.data, message.size, request)) requests_.push_back(std::move(request));
   } else if (channel == channels::kRunStatus) {
-    beft::run_status_t status;
+    beft::run_status_t status{};
     if (wire::decodeFrom(channel, message.data, message.size, status) &&
         status.state == beft::run_status_t::STATE_WAITING)
       arbiter_waiting_ = true;
@@ -96,7 +97,7 @@ void PlannerProcess::onMessage(const transport::Message& message) {
 void PlannerProcess::takeNewestMap() {
   if (!has_map_ || requests_.empty()) return;
   try {
-    beft::obstacle_map_t map;
+    beft::obstacle_map_t map{};
     if (!wire::guardedDecode(latest_map_.data(), latest_map_.size(), map).ok())
       throw std::invalid_argument("not an obstacle_map_t");
     planner_->setObstacleMap(map);
@@ -111,12 +112,12 @@ void PlannerProcess::answerRequests(lcm::LCM& lcm) {
     const beft::plan_request_t request = requests_.front();
     requests_.pop_front();
     try {
-      const auto result = planner_->handle(request, wallMicros());
+      auto result = planner_->handle(request, wallMicros());
       if (!result) {
         log::debug("request ", request.request_id, " was answered before; ignored");
         continue;
       }
-      lcm.publish(channels::kPlanResult, &*result);
+      lcm.publish(wire::runChannel(channels::kPlanResult), &*result);
       ++answered_;
       if (result->success)
         log::info("request ", request.request_id, " (", result->planner, "): ", result->num_waypoints,
@@ -134,16 +135,16 @@ void PlannerProcess::resumeFromLog(const std::string& log_path) {
   std::map<int64_t, beft::plan_request_t> unanswered;
   wire::LogReader log(log_path);
   wire::LogEvent event;
-  while (log.next(event)) {
+  while (log.nextOfRun(event, wire::runId())) {
     transport::Message message{event.channel.c_str(), event.data.data(), event.data.size()};
     if (event.channel == channels::kObstacleMap) {
       onMessage(message);
     } else if (event.channel == channels::kPlanRequest) {
-      beft::plan_request_t request;
+      beft::plan_request_t request{};
       if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), request))
         unanswered.emplace(request.request_id, request);
     } else if (event.channel == channels::kPlanResult) {
-      beft::plan_result_t result;
+      beft::plan_result_t result{};
       if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), result)) {
         unanswered.erase(result.request_id);
         planner_->markAnswered(result.request_id);

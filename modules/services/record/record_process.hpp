@@ -20,6 +20,7 @@ class RecordProcess : public service::Service {
   void onStartUp() override;
   int serve(service::Context& context) override;
   bool resumable() const override { return false; }  // its log is what the others resume from
+  bool belongsToARun() const override { return false; }  // it records every run heard
 
  private:
   void recordUntilStopped(Recorder& recorder, const service::StopSignals& stop);

@@ -27,6 +27,7 @@ Recorder::Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options)
   // channels to drop.
   transport::Selection everything;
   everything.mode = transport::Selection::Mode::RejectListed;
+  everything.every_run = true;  // the log keeps every run heard, under the names heard
   source_ = transport::openReceiver(lcm, url, everything, 64, options_.queue_capacity);
   take_ = [this](const transport::Message& message) {
     if (has_exclude_ && std::regex_match(message.channel.begin(), message.channel.end(), exclude_)) return;

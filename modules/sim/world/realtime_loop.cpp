@@ -10,6 +10,7 @@
 
 #include "channels.hpp"
 #include "log.hpp"
+#include "run_identity.hpp"
 
 namespace beft::world {
 
@@ -22,7 +23,7 @@ class LcmPublisher : public beft::expert::Output {
  public:
   explicit LcmPublisher(lcm::LCM& lcm) : lcm_(lcm) {}
   void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
-    if (lcm_.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())) != 0) {
+    if (lcm_.publish(wire::runChannel(channel), bytes.data(), static_cast<unsigned>(bytes.size())) != 0) {
       log::warn("could not publish on ", channel, " (", bytes.size(), " bytes)");
     }
   }
@@ -36,7 +37,8 @@ class CommandListener {
   explicit CommandListener(WorldExpert& world) : world_(world) {}
   void onCommand(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
     try {
-      world_.onMessage(channel, buffer->data, static_cast<int>(buffer->data_size));  // refusals: counted by the guard
+      const std::string plain(wire::splitRunChannel(channel).base);
+      world_.onMessage(plain, buffer->data, static_cast<int>(buffer->data_size));  // refusals: counted by the guard
     } catch (const std::exception& e) {
       log::error("message on ", channel, " raised: ", e.what());
     }
@@ -66,7 +68,8 @@ int runRealtime(WorldExpert& world, const RealtimeOptions& options) {
     return 1;
   }
   CommandListener listener(world);
-  lcm.subscribe(channels::kRobotCommand, &CommandListener::onCommand, &listener)->setQueueCapacity(1000);
+  lcm.subscribe(wire::runChannel(channels::kRobotCommand), &CommandListener::onCommand, &listener)
+      ->setQueueCapacity(1000);
   LcmPublisher publisher(lcm);
 
   const scenario::Scenario& scenario = simulation->scenario();

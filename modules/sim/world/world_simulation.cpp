@@ -100,7 +100,7 @@ void WorldSimulation::step() {
 }
 
 beft::scene_objects_t WorldSimulation::groundTruth() const {
-  beft::scene_objects_t message;
+  beft::scene_objects_t message{};
   message.utime = utime();
   message.tick = tick();
   message.world_width = scenario_.world.width;
@@ -124,7 +124,7 @@ beft::scene_objects_t WorldSimulation::groundTruth() const {
 }
 
 beft::robot_state_t WorldSimulation::robotState() const {
-  beft::robot_state_t state;
+  beft::robot_state_t state{};
   state.utime = utime();
   state.tick = tick();
   state.x = robot_.x();

@@ -20,6 +20,8 @@
 #include "lcm_url.hpp"
 #include "log.hpp"
 #include "pnml_reader.hpp"
+#include "guarded_decode.hpp"
+#include "run_identity.hpp"
 
 namespace {
 
@@ -37,7 +39,7 @@ class InstantExperts : public ArbiterOutput {
 };
 
 beft::done_t doneFor(const beft::fire_t& fire) {
-  beft::done_t done;
+  beft::done_t done{};
   done.utime = fire.utime;
   done.expert = fire.expert;
   done.tick = fire.tick;
@@ -48,7 +50,7 @@ beft::done_t doneFor(const beft::fire_t& fire) {
 }
 
 beft::heartbeat_t heartbeatFor(const std::string& expert) {
-  beft::heartbeat_t beat;
+  beft::heartbeat_t beat{};
   beat.process = expert;
   beat.pid = static_cast<int32_t>(getpid());
   beat.host = "bench";
@@ -88,23 +90,29 @@ void respond(const std::string& url, const std::vector<std::string>& experts, st
   struct Handler {
     lcm::LCM* lcm;
     bool ended = false;
-    void onFire(const lcm::ReceiveBuffer*, const std::string&, const beft::fire_t* fire) {
-      const beft::done_t done = doneFor(*fire);
-      lcm->publish(beft::channels::kDone, &done);
+    // Raw bytes through the message guard, as every program takes them.
+    static void onFire(const lcm::ReceiveBuffer* buffer, const std::string& channel, Handler* self) {
+      beft::fire_t fire{};
+      if (!beft::wire::decodeFrom(channel, buffer->data, buffer->data_size, fire)) return;
+      const beft::done_t done = doneFor(fire);
+      self->lcm->publish(beft::wire::runChannel(beft::channels::kDone), &done);
     }
-    void onStatus(const lcm::ReceiveBuffer*, const std::string&, const beft::run_status_t* status) {
-      ended = status->state == beft::run_status_t::STATE_FINISHED ||
-              status->state == beft::run_status_t::STATE_FAILED;
+    static void onStatus(const lcm::ReceiveBuffer* buffer, const std::string& channel, Handler* self) {
+      beft::run_status_t status{};
+      if (!beft::wire::decodeFrom(channel, buffer->data, buffer->data_size, status)) return;
+      self->ended = status.state == beft::run_status_t::STATE_FINISHED ||
+                    status.state == beft::run_status_t::STATE_FAILED;
     }
   } handler{&lcm};
-  lcm.subscribe(beft::channels::kFire, &Handler::onFire, &handler)->setQueueCapacity(10000);
-  lcm.subscribe(beft::channels::kRunStatus, &Handler::onStatus, &handler);
+  lcm.subscribeFunction(beft::wire::runChannel(beft::channels::kFire), &Handler::onFire, &handler)
+      ->setQueueCapacity(10000);
+  lcm.subscribeFunction(beft::wire::runChannel(beft::channels::kRunStatus), &Handler::onStatus, &handler);
   auto next_heartbeat = std::chrono::steady_clock::now();
   while (!stop && !handler.ended) {
     if (std::chrono::steady_clock::now() >= next_heartbeat) {
       for (const auto& name : experts) {
         const beft::heartbeat_t beat = heartbeatFor(name);
-        lcm.publish(beft::channels::kHeartbeat, &beat);
+        lcm.publish(beft::wire::runChannel(beft::channels::kHeartbeat), &beat);
       }
       next_heartbeat += std::chrono::milliseconds(200);
     }

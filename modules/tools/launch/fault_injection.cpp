@@ -30,9 +30,9 @@ int64_t TickFollower::poll() {
   try {
     wire::LogReader log(path_, offset_);
     wire::LogEvent event;
-    while (log.next(event)) {
+    while (log.nextOfRun(event, run_id_)) {
       if (event.channel != channels::kMarking) continue;
-      beft::marking_t marking;
+      beft::marking_t marking{};
       if (wire::guardedDecode(event.data.data(), event.data.size(), marking).ok()) tick_ = std::max(tick_, marking.tick);
     }
     offset_ = log.position();

@@ -23,12 +23,13 @@ PlannedKill parsePlannedKill(const std::string& text);
 // arbiter has reached (its RUN_STATUS and MARKING messages).
 class TickFollower {
  public:
-  explicit TickFollower(std::string log_path) : path_(std::move(log_path)) {}
+  TickFollower(std::string log_path, int64_t run_id) : path_(std::move(log_path)), run_id_(run_id) {}
   // Reads what was added since the last call; the newest tick seen, -1 if none.
   int64_t poll();
 
  private:
   std::string path_;
+  int64_t run_id_;
   uint64_t offset_ = 0;
   int64_t tick_ = -1;
 };

@@ -1,8 +1,11 @@
 #include "launch_file.hpp"
 
+#include <filesystem>
 #include <tinyxml2.h>
 
 #include <set>
+
+#include "run_identity.hpp"
 
 namespace beft::launch {
 
@@ -157,6 +160,15 @@ LaunchSpec loadLaunchFile(const std::string& path, const std::map<std::string, s
   }
   if (spec.processes.empty()) throw LaunchError(where(path, root->GetLineNum()) + "no <process> in the launch file");
   return spec;
+}
+
+int64_t runIdOf(const std::string& launch_file, const std::map<std::string, std::string>& args) {
+  std::string description = std::filesystem::path(launch_file).filename().string();
+  for (const auto& [name, value] : args) {
+    if (name == "lcm_url" || name.size() >= 5 && name.compare(name.size() - 5, 5, "_host") == 0) continue;
+    description += "\n" + name + "=" + value;
+  }
+  return wire::runIdFor(description);
 }
 
 }  // namespace beft::launch

@@ -13,6 +13,7 @@
 // unless lcm_url="0".
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -61,6 +62,11 @@ std::map<std::string, std::string> parseSettings(const std::vector<std::string>&
 // Reads and resolves a launch file; overrides set or add <arg> values.
 // Throws LaunchError("FILE:LINE: what is wrong").
 LaunchSpec loadLaunchFile(const std::string& path, const std::map<std::string, std::string>& overrides);
+
+// The run id of a launch (run_identity.hpp): from the launch file's name and
+// its arguments but the LCM URL and host labels, so the launches of one run
+// on several machines agree on it without being told. Never 0.
+int64_t runIdOf(const std::string& launch_file, const std::map<std::string, std::string>& args);
 
 // Splits an argument string on whitespace, honouring "double" and 'single' quotes.
 std::vector<std::string> splitArguments(const std::string& text);

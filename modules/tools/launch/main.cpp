@@ -12,12 +12,13 @@
 #include "launch_file.hpp"
 #include "lcm_url.hpp"
 #include "own_bin_dir.hpp"
+#include "run_identity.hpp"
 #include "supervisor.hpp"
 
 namespace {
 
 struct Options {
-  std::string file, lcm_url, record;
+  std::string file, lcm_url, record, run_id;
   std::vector<std::string> sets, except;
   std::string host = "local";
   bool new_port = false;
@@ -38,6 +39,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--lcm-url", o.lcm_url, "LCM URL for every process (default: BEFT_LCM_URL or host-local)");
   app.add_flag("--new-port", o.new_port, "use a free UDP port of its own instead of the default URL");
   app.add_option("--record", o.record, "record the run's LCM traffic to this log file");
+  app.add_option("--run-id", o.run_id,
+                 "the run's id, stamped on every message; default: derived from the launch file and its "
+                 "arguments (not --host), so the launches of one run on several machines agree");
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 }
@@ -64,12 +68,14 @@ int launch(const Options& o) {
   try {
     auto overrides = beft::launch::parseSettings(o.sets);
     overrides["lcm_url"] = options.lcm_url;
-    const auto outcome = beft::launch::supervise(beft::launch::loadLaunchFile(o.file, overrides), options);
+    const auto spec = beft::launch::loadLaunchFile(o.file, overrides);
+    options.run_id = o.run_id.empty() ? beft::launch::runIdOf(o.file, spec.args) : beft::wire::parseRunId(o.run_id);
+    const auto outcome = beft::launch::supervise(spec, options);
     std::printf("[launch] %s\n", outcome.message.c_str());
     if (outcome.interrupted) return 130;
     if (outcome.arbiter_ran) return outcome.arbiter_exit_code == 0 ? 0 : 1;
     return 0;
-  } catch (const beft::launch::LaunchError& e) {
+  } catch (const std::exception& e) {  // LaunchError, a bad --run-id
     std::fprintf(stderr, "[launch] error: %s\n", e.what());
     return 2;
   }

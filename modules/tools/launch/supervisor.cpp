@@ -21,6 +21,8 @@
 #include <functional>
 #include <thread>
 
+#include "run_identity.hpp"
+
 namespace beft::launch {
 
 namespace {
@@ -229,7 +231,8 @@ void stopAll(std::vector<Child>& children, Printer& printer, double grace_s) {
 }  // namespace
 
 std::string commandLineOf(const ProcessSpec& process, const SupervisorOptions& options) {
-  std::string line = resolveCommand(process.command, options.bin_dir);
+  std::string line = options.run_id != 0 ? "BEFT_RUN_ID=" + wire::runIdText(options.run_id) + " " : "";
+  line += resolveCommand(process.command, options.bin_dir);
   for (const auto& arg : process.args) line += " " + arg;
   if (process.append_lcm_url) line += " --lcm-url '" + options.lcm_url + "'";
   return line;
@@ -334,7 +337,8 @@ bool onChildExit(Child& child, int status, const SupervisorOptions& options, Pri
 // Kills planned with --kill, once the run's log shows their tick.
 class Killer {
  public:
-  explicit Killer(const SupervisorOptions& options) : kills_(options.kills), follower_(options.record_log) {}
+  explicit Killer(const SupervisorOptions& options)
+      : kills_(options.kills), follower_(options.record_log, options.run_id) {}
   void check(std::vector<Child>& children, Printer& printer) {
     if (std::all_of(kills_.begin(), kills_.end(), [](const PlannedKill& k) { return k.done; })) return;
     const int64_t tick = follower_.poll();
@@ -403,6 +407,8 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
 
   Printer printer(options.quiet_children, options.output_file);
   RunOutcome outcome;
+  // Every process of the run stamps its messages with the run id and refuses another run's.
+  if (options.run_id != 0) setenv("BEFT_RUN_ID", wire::runIdText(options.run_id).c_str(), 1);
   std::vector<Child> children = childrenToStart(spec, options, printer);
   for (auto& child : children) {
     if (!start(child, printer)) {
@@ -417,7 +423,8 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
       return outcome;
     }
   }
-  printer.own("started " + std::to_string(children.size()) + " processes on " + options.lcm_url);
+  printer.own("started " + std::to_string(children.size()) + " processes on " + options.lcm_url +
+              (options.run_id != 0 ? " as " + wire::describeRun(options.run_id) : ""));
   watchChildren(children, options, printer, outcome);
   stopAll(children, printer, options.stop_grace_s);
   if (outcome.message.empty() && outcome.arbiter_exit_code >= 0)

@@ -44,12 +44,12 @@ TickImages readTickImages(const std::string& path) {
   wire::LogEvent event;
   while (log.next(event)) {
     if (event.channel == channels::kCameraColor) {
-      beft::camera_frame_t frame;
+      beft::camera_frame_t frame{};
       if (wire::guardedDecode(event.data.data(), event.data.size(), frame).ok() &&
           frame.encoding == beft::camera_frame_t::ENCODING_RGB8)
         images.camera[frame.tick] = std::move(frame);
     } else if (event.channel == channels::kObstacleMap) {
-      beft::obstacle_map_t map;
+      beft::obstacle_map_t map{};
       if (wire::guardedDecode(event.data.data(), event.data.size(), map).ok()) images.maps[map.tick] = std::move(map);
     }
   }

@@ -67,6 +67,9 @@ beft::report::RunRecord readRecord(const Options& o) {
   }
   for (const auto& [channel, count] : record.rejected)
     std::cerr << "beft-report: warning: " << count << " message(s) on " << channel << " refused as malformed\n";
+  if (record.other_run_messages > 0)
+    std::cerr << "beft-report: warning: " << record.other_run_messages
+              << " message(s) of another run on the same LCM URL were left out\n";
   if (!record.log_damage.empty())
     std::cerr << "beft-report: warning: " << o.log_path << ": " << record.log_damage << "\n";
   if (record.robot.empty()) std::cerr << "beft-report: warning: " << o.log_path << " has no ROBOT_STATE\n";

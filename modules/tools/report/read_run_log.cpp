@@ -15,6 +15,7 @@
 #include "channels.hpp"
 #include "guarded_decode.hpp"
 #include "log_reader.hpp"
+#include "run_identity.hpp"
 #include "run_record.hpp"
 
 namespace beft::report {
@@ -62,7 +63,9 @@ class RecordBuilder {
     const std::string& channel = event.channel;
     if (channel == channels::kFire && record_.first_fire_us < 0) record_.first_fire_us = event.timestamp;
     if (channel == channels::kDone) record_.last_done_us = std::max(record_.last_done_us, event.timestamp);
-    if (!wire::MessageRules::beftTypes().checkForChannel(channel, event.data.data(), event.data.size()).ok()) {
+    const wire::Verdict verdict =
+        wire::MessageRules::beftTypes().checkForChannel(channel, event.data.data(), event.data.size());
+    if (!verdict.ok()) {
       ++record_.rejected[channel];
       return;
     }
@@ -92,7 +95,7 @@ class RecordBuilder {
 
  private:
   bool addGroundTruth(const wire::LogEvent& event) {
-    scene_objects_t scene;
+    scene_objects_t scene{};
     if (!decode(event, scene)) return false;
     record_.scenario_name = scene.scenario;
     record_.world_width = scene.world_width;
@@ -111,7 +114,7 @@ class RecordBuilder {
   }
 
   bool addRobotState(const wire::LogEvent& event) {
-    robot_state_t state;
+    robot_state_t state{};
     if (!decode(event, state)) return false;
     RobotSample sample;
     sample.t = seconds(state.utime);
@@ -128,7 +131,7 @@ class RecordBuilder {
   }
 
   bool addHypotheses(const wire::LogEvent& event) {
-    hypotheses_t message;
+    hypotheses_t message{};
     if (!decode(event, message)) return false;
     HypothesesSample sample;
     sample.t = seconds(message.utime);
@@ -155,7 +158,7 @@ class RecordBuilder {
   }
 
   bool addWeights(const wire::LogEvent& event) {
-    dynamic_weights_t message;
+    dynamic_weights_t message{};
     if (!decode(event, message)) return false;
     WeightSample sample;
     sample.t = seconds(message.utime);
@@ -168,7 +171,7 @@ class RecordBuilder {
   }
 
   bool addTaskStack(const wire::LogEvent& event) {
-    task_stack_t message;
+    task_stack_t message{};
     if (!decode(event, message)) return false;
     TaskSample sample;
     sample.t = seconds(message.utime);
@@ -181,7 +184,7 @@ class RecordBuilder {
   }
 
   bool addObstacleMap(const wire::LogEvent& event) {
-    obstacle_map_t message;
+    obstacle_map_t message{};
     if (!decode(event, message)) return false;
     try {
       record_.obstacle_map = planners::decodeObstacleMap(message);
@@ -192,7 +195,7 @@ class RecordBuilder {
   }
 
   bool addStatus(const wire::LogEvent& event, std::string& into) {
-    run_status_t status;
+    run_status_t status{};
     if (!decode(event, status)) return false;
     into = status.message;
     return true;
@@ -213,12 +216,15 @@ RunRecord readRunLog(const std::string& path) {
   RunRecord record;
   record.log_path = path;
   try {
+    // The run of BEFT_RUN_ID (beft run sets it), else the arbiter's in the log.
+    const int64_t run = wire::runId() != 0 ? wire::runId() : wire::runOfLog(path);
     wire::LogReader log(path);
     RecordBuilder builder(record);
     wire::LogEvent event;
-    while (log.next(event)) builder.add(event);
+    while (log.nextOfRun(event, run)) builder.add(event);
     builder.finish();
     record.log_damage = log.damage().summary();
+    record.other_run_messages = static_cast<int64_t>(log.otherRunEvents());
   } catch (const std::runtime_error& error) {
     throw ReportError(error.what());
   }

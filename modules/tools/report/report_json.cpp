@@ -75,6 +75,7 @@ nlohmann::json toJson(const RunReport& report) {
   json["rejected_total"] = rejected_total;
   json["log_damage"] = report.log_damage;
   json["log_complete"] = report.log_complete;
+  json["other_run_messages"] = report.other_run_messages;
   return json;
 }
 

@@ -92,6 +92,7 @@ struct RunRecord {
   int64_t events = 0;
   std::map<std::string, int64_t> rejected;  // channel -> messages the guard refused (malformed, foreign type)
   std::string log_damage;                   // the log reader's account of skipped bytes, "" if none
+  int64_t other_run_messages = 0;           // valid messages of another run on the same URL, left out
 
   double simTime() const { return robot.empty() ? 0.0 : robot.back().t; }
   double wallSpan() const { return (last_timestamp_us - first_timestamp_us) * 1e-6; }

@@ -98,6 +98,7 @@ void scoreRunFigures(const RunRecord& record, const ScoringOptions& options, Run
   report.rejected_messages = record.rejected;
   report.log_damage = record.log_damage;
   report.log_complete = !options.log_incomplete;
+  report.other_run_messages = record.other_run_messages;
 }
 
 // The person a victim candidate stands for: the one of its id, else the

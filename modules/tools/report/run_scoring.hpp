@@ -78,6 +78,7 @@ struct RunReport {
   std::map<std::string, int64_t> rejected_messages;  // per channel: malformed or of another type
   std::string log_damage;                             // "" when the log was whole
   bool log_complete = true;                           // false when the recorder died during the run
+  int64_t other_run_messages = 0;                     // another run's messages heard on the URL, left out
   double person_confidence = 0;
 };
 

@@ -20,6 +20,7 @@
 #include "lcm_url.hpp"
 #include "load_scenario.hpp"
 #include "own_bin_dir.hpp"
+#include "run_identity.hpp"
 #include "supervisor.hpp"
 
 namespace {
@@ -72,6 +73,7 @@ struct Options {
   std::string net = std::string(BEFT_SOURCE_DIR) + "/scenarios/nets/default.pnml";
   std::string planner = "pf-geodesic";
   std::vector<std::string> except, sets, kills;
+  std::string run_id;
   long long seed = -1, max_ticks = -1;  // -1: the scenario's seed, duration / dt
   bool verbose = false, report = true;
 };
@@ -94,6 +96,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--max-ticks", o.max_ticks, "stop after this many ticks (default: duration / dt)");
   app.add_option("--except", o.except, "do not start this process; start it by hand (repeatable)");
   app.add_option("--set", o.sets, "NAME=VALUE for another <arg> of the launch file");
+  app.add_option("--run-id", o.run_id,
+                 "the run's id, stamped on every message (default: derived from the launch file and its "
+                 "arguments, so a rerun writes the same messages); another run on the same LCM URL is refused");
   app.add_option("--kill", o.kills,
                  "NAME@TICK: SIGKILL this process once the run reaches the tick, to see it restarted and resume "
                  "from the run's log (fault injection; repeatable)");
@@ -159,7 +164,8 @@ int runMission(Options& o) {
   try {
     for (const auto& kill : o.kills) options.kills.push_back(beft::launch::parsePlannedKill(kill));
     args = launchArguments(o, scenario, options.lcm_url);
-  } catch (const beft::launch::LaunchError& e) {
+    options.run_id = o.run_id.empty() ? beft::launch::runIdOf(o.launch_file, args) : beft::wire::parseRunId(o.run_id);
+  } catch (const std::exception& e) {  // LaunchError, a bad --run-id
     std::fprintf(stderr, "[run] error: %s\n", e.what());
     return 2;
   }

@@ -17,6 +17,8 @@
 #include "channels.hpp"
 #include "guarded_decode.hpp"
 #include "lcm_url.hpp"
+#include "run_discovery.hpp"
+#include "run_identity.hpp"
 #include "task_cli.hpp"
 #include "task_messages.hpp"
 
@@ -65,7 +67,7 @@ int sendCommand(lcm::LCM& lcm, beft::task_command_t command, bool wait, double t
       for (const auto& e : m.events)
         if (e.command_id == command.command_id) answers.push_back(e);
     };
-    subscription = lcm.subscribeFunction(beft::channels::kTaskEvents, &Handler<beft::task_events_t>::handle, &events_handler);
+    subscription = lcm.subscribeFunction(beft::wire::runChannel(beft::channels::kTaskEvents), &Handler<beft::task_events_t>::handle, &events_handler);
     subscription->setQueueCapacity(1000);
   }
   // A clear of an empty stack changes no task: an empty stack confirms it too.
@@ -75,9 +77,9 @@ int sendCommand(lcm::LCM& lcm, beft::task_command_t command, bool wait, double t
     stack_handler.on_message = [&](const beft::task_stack_t& m) {
       if (m.tasks.empty()) empty_stack_seen = true;
     };
-    stack_subscription = lcm.subscribeFunction(beft::channels::kTaskStack, &Handler<beft::task_stack_t>::handle, &stack_handler);
+    stack_subscription = lcm.subscribeFunction(beft::wire::runChannel(beft::channels::kTaskStack), &Handler<beft::task_stack_t>::handle, &stack_handler);
   }
-  if (lcm.publish(beft::channels::kTaskCommand, &command) != 0) {
+  if (lcm.publish(beft::wire::runChannel(beft::channels::kTaskCommand), &command) != 0) {
     std::fprintf(stderr, "beft-task: error: could not publish on %s\n", beft::channels::kTaskCommand.name);
     return 1;
   }
@@ -142,6 +144,7 @@ struct Options {
   bool pop_done = false, pop_failed = false;
   std::string reason;
   bool json = false;  // list as JSON
+  std::string run_id;  // "" : the one run heard on the URL
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
@@ -156,6 +159,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--timeout", o.timeout_s, "how long to wait for an answer [s]")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  app.add_option("--run-id", o.run_id,
+                 "the run to talk to (hex as its channels show it after '@', or 0x...); default: BEFT_RUN_ID, "
+                 "else the one run whose heartbeats are heard on the URL");
   app.footer(
       "Tasks (push):\n" + beft::task_cli::pushUsage() +
       "\nExamples:\n"
@@ -202,7 +208,7 @@ int listStack(lcm::LCM& lcm, const Options& o) {
   handler.on_message = [&](const beft::task_stack_t& m) {
     if (!stack) stack = m;
   };
-  auto* sub = lcm.subscribeFunction(beft::channels::kTaskStack, &Handler<beft::task_stack_t>::handle, &handler);
+  auto* sub = lcm.subscribeFunction(beft::wire::runChannel(beft::channels::kTaskStack), &Handler<beft::task_stack_t>::handle, &handler);
   sub->setQueueCapacity(100);
   if (!waitFor(lcm, o.timeout_s, [&] { return stack.has_value(); })) {
     std::fprintf(stderr,
@@ -265,8 +271,19 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "beft-task: error: cannot open LCM at %s\n", o.lcm_url.c_str());
     return 1;
   }
+  try {
+    if (!o.run_id.empty()) beft::wire::setRunId(beft::wire::parseRunId(o.run_id));
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "beft-task: error: %s\n", e.what());
+    return 2;
+  }
+  const std::string why = o.run_id.empty() ? beft::wire::adoptTheRunHeard(lcm, std::min(o.timeout_s, 2.0)) : "";
+  if (!why.empty()) {
+    std::fprintf(stderr, "beft-task: error: %s\n", why.c_str());
+    return 2;
+  }
   if (o.action == Action::List) return listStack(lcm, o);
-  beft::task_command_t command;
+  beft::task_command_t command{};
   std::string what;
   if (const auto code = buildCommand(o, command, what)) return *code;
   return sendCommand(lcm, command, !o.no_wait, o.timeout_s, what);

@@ -24,7 +24,7 @@ object_labels_t labelsFor(const std::string& id, const std::string& label, doubl
 
 // One tick of percepts, built up by the tests.
 struct Tick {
-  scene_objects_t scene;
+  scene_objects_t scene{};
   visual_percepts_t vision{};
   labels_t visual_labels{};
   acoustic_percepts_t audio{};

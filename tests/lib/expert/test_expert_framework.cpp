@@ -82,7 +82,7 @@ beft::robot_state_t stateAt(int64_t tick, double x) {
 }
 
 beft::fire_t fireToken(const std::string& expert_name, int64_t tick, int64_t id) {
-  beft::fire_t f;
+  beft::fire_t f{};
   f.utime = tick * 100000;
   f.expert = expert_name;
   f.transition = "t_" + expert_name;

@@ -62,7 +62,7 @@ std::vector<Received> receiveAtLeast(Source& source, std::size_t count) {
 }
 
 std::string encodedFire(const std::string& expert) {
-  beft::fire_t fire;
+  beft::fire_t fire{};
   fire.utime = 1;
   fire.expert = expert;
   fire.transition = "t";

@@ -171,7 +171,7 @@ TEST(MessageGuard, AbsurdLengthsAreRefusedBeforeAnythingIsAllocated) {
   for (int32_t length : {-1, 0, -2147483647, 2147483647, 1 << 30}) {
     auto damaged = bytes;
     setInt32At(damaged, 16, length);  // the expert string's length, after fingerprint and utime
-    beft::fire_t decoded;
+    beft::fire_t decoded{};
     Verdict verdict;
     EXPECT_NO_THROW(verdict = guardedDecode(damaged.data(), damaged.size(), decoded));
     EXPECT_FALSE(verdict.ok()) << length;
@@ -183,7 +183,7 @@ TEST(MessageGuard, AbsurdLengthsAreRefusedBeforeAnythingIsAllocated) {
   for (int32_t count : {-5, 100000000}) {
     auto damaged = list;
     setInt32At(damaged, 24, count);  // num_hypotheses, after fingerprint, utime and tick
-    beft::hypotheses_t decoded;
+    beft::hypotheses_t decoded{};
     Verdict verdict;
     EXPECT_NO_THROW(verdict = guardedDecode(damaged.data(), damaged.size(), decoded));
     EXPECT_EQ(verdict.fault, count < 0 ? Fault::kNegativeLength : Fault::kLengthBeyondBytes);
@@ -194,7 +194,7 @@ TEST(MessageGuard, AbsurdLengthsAreRefusedBeforeAnythingIsAllocated) {
 TEST(MessageGuard, AnotherTypesFingerprintAndUnknownFingerprintsAreNamed) {
   beft::fire_t fire{};
   const auto bytes = encode(fire);
-  beft::hypotheses_t hypotheses;
+  beft::hypotheses_t hypotheses{};
   EXPECT_EQ(guardedDecode(bytes.data(), bytes.size(), hypotheses).fault, Fault::kWrongType);
   auto foreign = bytes;
   foreign[0] ^= 0x5a;
@@ -211,13 +211,13 @@ TEST(MessageGuard, ValuesAreCheckedAsTheLcmCommentsDeclare) {
   beft::fire_t fire{};
   fire.tick = -3;  // "tick index, >= 0"
   auto bytes = encode(fire);
-  beft::fire_t decoded;
+  beft::fire_t decoded{};
   EXPECT_EQ(guardedDecode(bytes.data(), bytes.size(), decoded).fault, Fault::kBelowBound);
 
   beft::task_command_t command{};
   command.command = 9;  // COMMAND_* has 0, 1, 2
   bytes = encode(command);
-  beft::task_command_t decoded_command;
+  beft::task_command_t decoded_command{};
   Verdict verdict = guardedDecode(bytes.data(), bytes.size(), decoded_command);
   EXPECT_EQ(verdict.fault, Fault::kBadEnum);
   EXPECT_EQ(verdict.text(), "task_command_t.command: value not among the declared constants");

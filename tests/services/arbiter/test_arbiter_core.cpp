@@ -162,7 +162,7 @@ class Simulation : public ArbiterOutput {
   void scheduleHeartbeat(const std::string& name, double time) {
     schedule(time, [this, name] {
       if (clock_.t >= scripts_[name].dies_at) return;
-      beft::heartbeat_t beat;
+      beft::heartbeat_t beat{};
       beat.process = name;
       beat.pid = 1;
       beat.host = "sim";
@@ -205,7 +205,7 @@ class Simulation : public ArbiterOutput {
     MockExpert& mock = mocks_[fire.expert];
     const Script& script = scripts_[fire.expert];
     ++runs_[{fire.expert, fire.tick}];
-    beft::done_t done;
+    beft::done_t done{};
     done.utime = fire.utime;
     done.expert = fire.expert;
     done.tick = fire.tick;
@@ -463,7 +463,7 @@ TEST(ArbiterCore, DropsDuplicateAndStrayDones) {
   Simulation sim(readPnmlFile(kNets + "experts_only.pnml"), testConfig(2));
   sim.expert("geometry").done_copies = [](const beft::fire_t& f) { return f.tick == 0 ? 3 : 1; };
   sim.at(0.0003, [&sim] {  // while the world's first firing (id 1) runs
-    beft::done_t stray;
+    beft::done_t stray{};
     stray.expert = "vision";
     stray.firing_id = 999;  // never issued
     sim.inject(stray);

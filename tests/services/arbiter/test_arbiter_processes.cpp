@@ -191,7 +191,7 @@ class Responder {
       if (Clock::now() >= next_heartbeat) {
         for (const auto& name : experts_) {
           if (gone && gone(name)) continue;
-          beft::heartbeat_t beat;
+          beft::heartbeat_t beat{};
           beat.process = name;
           beat.pid = getpid();
           beat.host = "test";
@@ -226,7 +226,7 @@ class Responder {
     if (drop_fire && drop_fire(*fire, copy)) return;
     if (!answered_.count(fire->firing_id)) events.push_back({'F', fire->expert, fire->tick, fire->firing_id});
     if (on_fire) on_fire(lcm_, *fire);
-    beft::done_t done;
+    beft::done_t done{};
     done.utime = fire->utime;
     done.expert = fire->expert;
     done.tick = fire->tick;
@@ -373,7 +373,7 @@ TEST(ArbiterProcess, StopRequestEndsTheRunAfterTheTick) {
   ASSERT_TRUE(responder.good());
   responder.on_fire = [](lcm::LCM& lcm, const beft::fire_t& f) {
     if (f.expert != "world" || f.tick != 5) return;
-    beft::run_status_t stop;
+    beft::run_status_t stop{};
     stop.tick = f.tick;
     stop.state = beft::run_status_t::STATE_FINISHED;
     stop.message = "enough for this test";

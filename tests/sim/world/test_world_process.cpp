@@ -204,7 +204,7 @@ TEST(WorldProcess, LockstepPublishesEachTickAsTheInProcessWorldDoes) {
 
   constexpr int kTicks = 12;
   for (int k = 0; k < kTicks; ++k) {
-    beft::robot_command_t command;
+    beft::robot_command_t command{};
     bool send_command = false;
     if (k == 3) {
       command = velocityCommand(0.8, 0.3, 20);
@@ -229,7 +229,7 @@ TEST(WorldProcess, LockstepPublishesEachTickAsTheInProcessWorldDoes) {
     expected[beft::channels::kCameraDepth].push_back(encoded(camera.depth));
     expected[beft::channels::kCameraInstance].push_back(encoded(camera.instance));
 
-    beft::fire_t fire;
+    beft::fire_t fire{};
     fire.utime = static_cast<int64_t>(k) * 100000;
     fire.expert = "world";
     fire.transition = "world";
@@ -281,7 +281,7 @@ TEST(WorldProcess, LockstepPublishesEachTickAsTheInProcessWorldDoes) {
   EXPECT_GT(victim_pixels, 50);
   EXPECT_NE(world.output().find("non-finite"), std::string::npos);  // the refused command was logged
 
-  beft::run_status_t status;
+  beft::run_status_t status{};
   status.utime = 0;
   status.tick = kTicks;
   status.state = beft::run_status_t::STATE_FINISHED;

@@ -237,10 +237,11 @@ TEST(Supervisor, RecordsFromTheFirstMessageOfTheFirstProcess) {
   TempDir dir;
   SupervisorOptions options;
   options.lcm_url = "udpm://239.255.76.67:" + std::to_string(findFreeUdpPort(35000, 39999)) + "?ttl=0";
-  // beft-task takes --lcm-url before its subcommand, so it is written here.
+  // beft-task takes --lcm-url before its subcommand, so it is written here;
+  // --run-id 0: no listening for the run on the URL first.
   const auto file = dir.write("run.xml", R"(<launch>
   <process name="talker" command="beft-task" args="--lcm-url )" + options.lcm_url +
-                                             R"( push --no-wait goto 1 2 90" lcm_url="0"/>
+                                             R"( --run-id 0 push --no-wait goto 1 2 90" lcm_url="0"/>
   <process name="arbiter" command="sh" args="-c 'sleep 0.5'" role="arbiter" lcm_url="0"/>
 </launch>)");
   options.quiet_children = true;

@@ -1,0 +1,110 @@
+#include "run_identity.hpp"
+
+#include <atomic>
+#include <climits>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <mutex>
+#include <stdexcept>
+
+#include "log.hpp"
+
+namespace beft::wire {
+
+namespace {
+
+std::atomic<int64_t> g_run_id{0};
+std::once_flag g_from_environment;
+
+void readEnvironment() {
+  std::call_once(g_from_environment, [] {
+    const char* text = std::getenv("BEFT_RUN_ID");
+    if (text == nullptr || *text == '\0') return;
+    try {
+      g_run_id.store(parseRunId(text));
+    } catch (const std::invalid_argument&) {
+      // Refused where it is set (the launcher); a bad value means no run.
+    }
+  });
+}
+
+}  // namespace
+
+int64_t runId() {
+  readEnvironment();
+  return g_run_id.load(std::memory_order_relaxed);
+}
+
+void setRunId(int64_t id) {
+  readEnvironment();  // so that a later first call does not overwrite it
+  g_run_id.store(id);
+}
+
+int64_t parseRunId(const std::string& text) {
+  std::size_t used = 0;
+  long long value = -1;
+  try {
+    value = std::stoll(text, &used, 16);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (text.empty() || used != text.size() || value < 0)
+    throw std::invalid_argument("run id '" + text + "' is not a hexadecimal number (as channels show it after '@')");
+  return value;
+}
+
+int64_t runIdFor(const std::string& description) {
+  uint64_t hash = 1469598103934665603ull;  // FNV-1a
+  for (unsigned char c : description) hash = (hash ^ c) * 1099511628211ull;
+  const int64_t id = static_cast<int64_t>(hash >> 1);  // >= 0
+  return id == 0 ? 1 : id;
+}
+
+bool isUrlWideChannel(std::string_view channel) {
+  return channel == "BEFT_RUNS" || channel.substr(0, 4) == "LCM_";
+}
+
+std::string runChannel(const std::string& channel, int64_t run_id) {
+  std::string name = channel;
+  if (run_id == 0 || isUrlWideChannel(channel)) return name;
+  char suffix[24];
+  std::snprintf(suffix, sizeof suffix, "@%llx", static_cast<unsigned long long>(run_id));
+  return name + suffix;
+}
+
+std::string runChannel(const std::string& channel) { return runChannel(channel, runId()); }
+
+std::string runIdText(int64_t run_id) {
+  char text[20];
+  std::snprintf(text, sizeof text, "%llx", static_cast<unsigned long long>(run_id));
+  return text;
+}
+
+void logRunOf(const std::string& lcm_url) {
+  if (runId() != 0) {
+    log::info("in ", describeRun(runId()), " (its channels end in ", runChannel("", runId()), ")");
+  } else if (lcm_url.rfind("udpm://", 0) == 0) {
+    log::info("no BEFT_RUN_ID: on the plain channel names; to join a run started by beft run or beft launch, "
+              "start this process with the command line the launcher prints (BEFT_RUN_ID=...)");
+  }
+}
+
+std::string describeRun(int64_t run_id) { return run_id == 0 ? "no run id" : "run " + runIdText(run_id); }
+
+RunChannel splitRunChannel(std::string_view channel) {
+  const auto at = channel.rfind('@');
+  if (at == std::string_view::npos || at + 1 >= channel.size() || channel.size() - at - 1 > 16) return {channel, 0};
+  uint64_t id = 0;
+  for (char c : channel.substr(at + 1)) {
+    int digit;
+    if (c >= '0' && c <= '9') digit = c - '0';
+    else if (c >= 'a' && c <= 'f') digit = c - 'a' + 10;
+    else return {channel, 0};
+    id = id * 16 + static_cast<uint64_t>(digit);
+  }
+  if (id == 0 || id > static_cast<uint64_t>(INT64_MAX)) return {channel, 0};
+  return {channel.substr(0, at), static_cast<int64_t>(id)};
+}
+
+}  // namespace beft::wire

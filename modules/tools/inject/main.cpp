@@ -1,0 +1,111 @@
+// beft-inject: plays copies of a run's logged messages onto an LCM URL,
+// damaged or as they are, at a fixed rate: the malformed and foreign traffic
+// of a shared lab network, for robustness tests and `beft bench faults`.
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <optional>
+#include <random>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+#include <lcm/lcm-cpp.hpp>
+
+#include "command_line.hpp"
+#include "log_reader.hpp"
+#include "message_damage.hpp"
+#include "run_identity.hpp"
+
+namespace {
+
+volatile std::sig_atomic_t g_stop = 0;
+void onSignal(int) { g_stop = 1; }
+
+struct Options {
+  std::string log_path, lcm_url, damage = "all", into_run;
+  double rate = 3000, seconds = 0;
+  bool as_is = false;
+  uint64_t seed = 1;
+  std::size_t max_events = 20000;
+};
+
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
+  CLI::App app(
+      "Publishes copies of the messages of a recorded run (LOG) on an LCM URL at a fixed rate, damaged "
+      "(bit flips, truncation, trailing junk, another type's fingerprint, another channel's message, "
+      "overwritten words) or as they are (--as-is: another run on the same URL). Round and round the "
+      "log until --seconds have passed or SIGINT/SIGTERM.",
+      "beft-inject");
+  app.add_option("log", o.log_path, "a run's LCM log")->required()->check(CLI::ExistingFile);
+  app.add_option("--lcm-url", o.lcm_url, "where to publish")->required();
+  app.add_option("--rate", o.rate, "messages per second")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--seconds", o.seconds, "stop after this long (0: until a signal)")->capture_default_str();
+  app.add_option("--damage", o.damage, "bits,truncate,junk,foreign,channel,words | all | malformed")
+      ->capture_default_str();
+  app.add_flag("--as-is", o.as_is, "no damage: the run's messages, on its channels, as recorded");
+  app.add_option("--into-run", o.into_run,
+                 "publish on this run's channels (hex id, as channels show it after '@') instead of the log's");
+  app.add_option("--seed", o.seed, "seed of the damage")->capture_default_str();
+  app.add_option("--max-events", o.max_events, "events of the log kept in memory")->capture_default_str();
+  return beft::parseCommandLine(app, argc, argv);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (const auto code = parseOptions(argc, argv, o)) return *code;
+  std::vector<beft::inject::Damage> kinds;
+  int64_t into_run = -1;
+  std::vector<beft::inject::DamagedMessage> events;
+  try {
+    if (!o.as_is) kinds = beft::inject::parseDamage(o.damage);
+    if (!o.into_run.empty()) into_run = beft::wire::parseRunId(o.into_run);
+    beft::wire::LogReader log(o.log_path);
+    beft::wire::LogEvent event;
+    while (events.size() < o.max_events && log.next(event)) {
+      const auto split = beft::wire::splitRunChannel(event.channel);
+      if (beft::wire::isUrlWideChannel(event.channel)) continue;  // another run's beacon would be a lie
+      const std::string channel =
+          into_run >= 0 ? beft::wire::runChannel(std::string(split.base), into_run) : event.channel;
+      events.push_back({channel, event.data});
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "beft-inject: error: %s\n", e.what());
+    return 2;
+  }
+  if (events.empty()) {
+    std::fprintf(stderr, "beft-inject: error: %s holds no message\n", o.log_path.c_str());
+    return 2;
+  }
+  lcm::LCM lcm(o.lcm_url);
+  if (!lcm.good()) {
+    std::fprintf(stderr, "beft-inject: error: cannot open LCM at %s\n", o.lcm_url.c_str());
+    return 1;
+  }
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+  std::mt19937_64 random(o.seed);
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const auto period = std::chrono::duration<double>(1.0 / o.rate);
+  uint64_t sent = 0;
+  std::size_t next = 0;
+  while (!g_stop && (o.seconds <= 0 || Clock::now() - start < std::chrono::duration<double>(o.seconds))) {
+    const auto& original = events[next];
+    next = (next + 1) % events.size();
+    if (o.as_is) {
+      lcm.publish(original.channel, original.data.data(), static_cast<unsigned>(original.data.size()));
+    } else {
+      const auto kind = kinds[random() % kinds.size()];
+      const auto& other = events[random() % events.size()];
+      const auto damaged = beft::inject::damage(original.channel, original.data, kind, other, random);
+      lcm.publish(damaged.channel, damaged.data.data(), static_cast<unsigned>(damaged.data.size()));
+    }
+    ++sent;
+    std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(period * static_cast<double>(sent)));
+  }
+  std::printf("beft-inject: published %llu messages in %.1f s\n", static_cast<unsigned long long>(sent),
+              std::chrono::duration<double>(Clock::now() - start).count());
+  return 0;
+}
