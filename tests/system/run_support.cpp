@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "log_reader.hpp"
+#include "message_check.hpp"
 
 namespace beft::system_test {
 
@@ -94,6 +95,9 @@ std::map<DataKey, std::vector<uint8_t>> dataMessages(const std::vector<LoggedMes
   std::map<std::pair<std::string, int64_t>, int> count;
   for (const auto& event : log) {
     if (!kDataChannels.count(event.channel) || event.data.size() < 16) continue;
+    // What a process of the run would refuse (injected damage) is no message of the run.
+    if (!wire::MessageRules::beftTypes().checkForChannel(event.channel, event.data.data(), event.data.size()).ok())
+      continue;
     int64_t utime = 0;  // the first field after the 8-byte fingerprint, big-endian
     for (int i = 8; i < 16; ++i) utime = (utime << 8) | event.data[i];
     const int order = count[{event.channel, utime}]++;

@@ -1,0 +1,216 @@
+// Faults a lab network brings, with real processes: a process killed at any
+// tick, malformed traffic on the run's own channels, another run on the same
+// URL, a damaged log. Each disturbed yard run must write exactly the data
+// messages of the undisturbed one.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <map>
+#include <thread>
+
+#include "run_support.hpp"
+
+using namespace beft::system_test;
+
+namespace {
+
+constexpr int kTicks = 300;
+
+struct FaultRun {
+  std::string dir;
+  ProgramResult result;
+  std::vector<LoggedMessage> log;
+  nlohmann::json report;
+};
+
+FaultRun runYard(const std::string& tag, const std::string& extra_args) {
+  FaultRun run;
+  run.dir = makeTempDir("faults_" + tag);
+  run.result = runCommand(binDir() + "/beft-run " + sourceDir() + "/scenarios/yard.xml --max-ticks " +
+                              std::to_string(kTicks) + " --out " + run.dir + " " + extra_args,
+                          600);
+  try {
+    run.log = readLog(run.dir + "/run.lcmlog");
+    run.report = readJson(run.dir + "/report.json");
+  } catch (const std::exception& e) {
+    run.result.output += std::string("\n[test] ") + e.what();
+  }
+  return run;
+}
+
+const FaultRun& cleanRun() {
+  static const FaultRun run = runYard("clean", "");
+  return run;
+}
+
+std::string processLog(const FaultRun& run) { return runCommand("cat " + run.dir + "/processes.log", 10).output; }
+
+void expectSameDataMessages(const FaultRun& run) {
+  const FaultRun& clean = cleanRun();
+  ASSERT_EQ(clean.result.exit_code, 0) << clean.result.output;
+  const DataComparison comparison = compareDataMessages(clean.log, run.log);
+  EXPECT_GT(comparison.expected, 1000u);
+  EXPECT_EQ(comparison.compared, comparison.expected) << "messages missing from the disturbed run";
+  EXPECT_EQ(comparison.differing, 0u) << "first difference: " << comparison.first_difference;
+}
+
+// A run started in the background, and the URL and run id it prints.
+struct BackgroundRun {
+  pid_t pid = -1;
+  FaultRun run;
+  std::string url, run_id;
+};
+
+BackgroundRun startYard(const std::string& tag) {
+  BackgroundRun background;
+  background.run.dir = makeTempDir("faults_" + tag);
+  const std::string out = background.run.dir + "/run_output.txt";
+  background.pid = fork();
+  if (background.pid == 0) {
+    const std::string command = binDir() + "/beft-run " + sourceDir() + "/scenarios/yard.xml --max-ticks " +
+                                std::to_string(kTicks) + " --out " + background.run.dir + " > " + out + " 2>&1";
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  for (int i = 0; i < 200 && (background.url.empty() || background.run_id.empty()); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    const auto text = runCommand("cat " + out, 5).output;
+    const auto line = lineAfter(text, "[run] LCM ");
+    if (!line.empty()) background.url = line.substr(0, line.find(';'));
+    const auto started = lineAfter(text, "[launch] started ");
+    if (const auto at = started.find(" as run "); at != std::string::npos) background.run_id = started.substr(at + 8);
+  }
+  return background;
+}
+
+void finish(BackgroundRun& background) {
+  int status = 0;
+  waitpid(background.pid, &status, 0);
+  background.run.result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  background.run.result.output = runCommand("cat " + background.run.dir + "/run_output.txt", 5).output;
+  background.run.log = readLog(background.run.dir + "/run.lcmlog");
+  background.run.report = readJson(background.run.dir + "/report.json");
+}
+
+// beft-inject in the background until killed.
+pid_t inject(const std::string& arguments) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const std::string command = "exec " + binDir() + "/beft-inject " + arguments + " > /dev/null 2>&1";
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  return pid;
+}
+
+void stop(pid_t pid) {
+  kill(pid, SIGTERM);
+  waitpid(pid, nullptr, 0);
+}
+
+}  // namespace
+
+class KilledProcess : public ::testing::TestWithParam<std::pair<const char*, int>> {};
+
+TEST_P(KilledProcess, ResumesFromTheLogAndTheRunWritesTheSameDataMessages) {
+  const auto [process, tick] = GetParam();
+  const FaultRun run = runYard(std::string("kill_") + process, "--kill " + std::string(process) + "@" + std::to_string(tick));
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output << processLog(run);
+  const std::string processes = processLog(run);
+  EXPECT_NE(processes.find("killing " + std::string(process) + " (SIGKILL) at tick"), std::string::npos) << processes;
+  EXPECT_NE(processes.find(std::string(process) + " killed by signal"), std::string::npos);
+  EXPECT_NE(processes.find("resuming from the run's log"), std::string::npos);
+  EXPECT_NE(processes.find("resumed"), std::string::npos);
+  expectSameDataMessages(run);
+  EXPECT_EQ(run.report["completed"], cleanRun().report["completed"]);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryKindOfProcess, KilledProcess,
+                         ::testing::Values(std::make_pair("fusion", 120), std::make_pair("exploration", 150),
+                                           std::make_pair("world", 90), std::make_pair("arbiter", 170),
+                                           std::make_pair("planner", 60), std::make_pair("blackboard", 100),
+                                           std::make_pair("tasks", 200)),
+                         [](const auto& info) { return std::string(info.param.first); });
+
+TEST(KilledRecorder, StopsTheRunAndMarksItsLogIncomplete) {
+  const FaultRun run = runYard("kill_logger", "--kill logger@100");  // the recorder runs as "logger"
+  EXPECT_NE(run.result.exit_code, 0);
+  EXPECT_NE(run.result.output.find("the recorder killed by signal"), std::string::npos) << run.result.output;
+  EXPECT_NE(run.result.output.find("the run's log is incomplete"), std::string::npos);
+  EXPECT_EQ(run.report.value("log_complete", true), false) << run.report.dump();
+}
+
+TEST(MalformedTraffic, OnTheRunsOwnChannelsChangesNoDataMessage) {
+  const FaultRun& clean = cleanRun();
+  ASSERT_EQ(clean.result.exit_code, 0);
+  BackgroundRun background = startYard("malformed");
+  ASSERT_FALSE(background.url.empty());
+  ASSERT_FALSE(background.run_id.empty());
+  const pid_t injector = inject(clean.dir + "/run.lcmlog --lcm-url '" + background.url +
+                                "' --rate 3000 --damage malformed --into-run " + background.run_id);
+  finish(background);
+  stop(injector);
+  ASSERT_EQ(background.run.result.exit_code, 0) << background.run.result.output;
+  expectSameDataMessages(background.run);
+  EXPECT_GT(background.run.report["rejected_total"].get<int64_t>(), 1000) << background.run.report.dump();
+}
+
+TEST(MalformedTraffic, RandomDamageThatMayDecodeKillsNoProcess) {
+  const FaultRun& clean = cleanRun();
+  BackgroundRun background = startYard("random_damage");
+  ASSERT_FALSE(background.run_id.empty());
+  const pid_t injector = inject(clean.dir + "/run.lcmlog --lcm-url '" + background.url +
+                                "' --rate 3000 --damage all --seed 3 --into-run " + background.run_id);
+  finish(background);
+  stop(injector);
+  const std::string processes = processLog(background.run);
+  EXPECT_EQ(processes.find("killed by signal"), std::string::npos) << processes;
+  EXPECT_EQ(processes.find("terminate called"), std::string::npos);
+  EXPECT_GT(background.run.report["rejected_total"].get<int64_t>(), 100);
+}
+
+TEST(AnotherRun, OnTheSameUrlChangesNoDataMessageAndIsCounted) {
+  const FaultRun& clean = cleanRun();
+  // Another scenario's recorded run (peek, no run id) and a copy of this
+  // one's under another run id, beside this run on its URL.
+  BackgroundRun background = startYard("other_run");
+  ASSERT_FALSE(background.url.empty());
+  const pid_t injector =
+      inject(sourceDir() + "/tests/system/data/peek_6_ticks.lcmlog --lcm-url '" + background.url + "' --rate 3000 --as-is");
+  const pid_t second = inject(clean.dir + "/run.lcmlog --lcm-url '" + background.url +
+                              "' --rate 1000 --as-is --into-run 1234");
+  finish(background);
+  stop(injector);
+  stop(second);
+  ASSERT_EQ(background.run.result.exit_code, 0) << background.run.result.output;
+  expectSameDataMessages(background.run);
+  EXPECT_GT(background.run.report["other_run_messages"].get<int64_t>(), 1000) << background.run.report.dump();
+}
+
+TEST(DamagedLog, IsReadToItsEndAndTheDamageReported) {
+  const FaultRun& clean = cleanRun();
+  ASSERT_EQ(clean.result.exit_code, 0);
+  const std::string dir = makeTempDir("damaged_log");
+  std::ifstream in(clean.dir + "/run.lcmlog", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  // Garbage in the middle, a record's length field destroyed, and the last event cut.
+  bytes.insert(bytes.size() / 3, std::string(5000, '\x5a'));
+  bytes[bytes.size() / 2] ^= 0x7f;
+  bytes.resize(bytes.size() - 700);
+  std::ofstream(dir + "/run.lcmlog", std::ios::binary) << bytes;
+  const auto report = runCommand(binDir() + "/beft-report " + dir + "/run.lcmlog --scenario " + sourceDir() +
+                                     "/scenarios/yard.xml --out " + dir + " --quiet",
+                                 120);
+  ASSERT_EQ(report.exit_code, 0) << report.output;
+  const auto json = readJson(dir + "/report.json");
+  const std::string damage = json["log_damage"];
+  EXPECT_NE(damage.find("damaged stretch"), std::string::npos) << damage;
+  EXPECT_NE(damage.find("cut short"), std::string::npos) << damage;
+  EXPECT_EQ(json["victims"].size(), clean.report["victims"].size());
+  EXPECT_NE(report.output.find("warning"), std::string::npos) << report.output;
+}
