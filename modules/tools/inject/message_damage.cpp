@@ -1,5 +1,6 @@
 #include "message_damage.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace beft::inject {
@@ -71,11 +72,15 @@ DamagedMessage damage(const std::string& channel, const std::vector<uint8_t>& da
     case Damage::kForeignType:
       for (std::size_t i = 0; i < 8 && i < out.data.size(); ++i) out.data[i] = static_cast<uint8_t>(random());
       break;
-    case Damage::kWrongChannel:
-      // Another channel's message under this channel's name.
+    case Damage::kWrongChannel: {
+      // Another channel's message under this channel's name; of the same type
+      // (CAMERA_COLOR on CAMERA_DEPTH) it would be valid, so it gets a trailing byte.
       out.data = other.data;
-      if (other.channel == channel) out.data.push_back(0);  // same type: make it malformed still
+      const bool same_type = other.data.size() >= 8 && data.size() >= 8 &&
+                             std::equal(other.data.begin(), other.data.begin() + 8, data.begin());
+      if (same_type) out.data.push_back(0);
       break;
+    }
     case Damage::kWordsOverwritten:
       for (int i = 0; i < 3 && out.data.size() >= 12; ++i) {
         const std::size_t at = 8 + below(out.data.size() - 11);

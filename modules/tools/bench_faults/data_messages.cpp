@@ -1,0 +1,47 @@
+#include "data_messages.hpp"
+
+#include <cstdio>
+#include <set>
+
+#include "log_reader.hpp"
+#include "message_check.hpp"
+
+namespace beft::bench {
+
+std::map<DataKey, std::vector<uint8_t>> dataMessages(const std::string& log_path) {
+  // The data plane: what the world and the experts publish (control, wall-clock and service messages left out).
+  static const std::set<std::string> kDataChannels = {
+      "GT_OBJECTS", "ROBOT_STATE",     "CAMERA_COLOR",    "CAMERA_DEPTH", "CAMERA_INSTANCE", "GEOMETRY",
+      "VISION",     "OBSTACLE_MAP",    "AUDIO",           "LABELS_VISUAL", "LABELS_ACOUSTIC", "HYPOTHESES",
+      "DYNAMIC_WEIGHTS", "TASK_STACK", "TASK_COMMAND",    "ROBOT_CMD",    "PLAN_REQUEST"};
+  std::map<DataKey, std::vector<uint8_t>> messages;
+  std::map<std::pair<std::string, int64_t>, int> count;
+  const int64_t run = wire::runOfLog(log_path);
+  wire::LogReader log(log_path);
+  wire::LogEvent event;
+  while (log.nextOfRun(event, run)) {
+    if (!kDataChannels.count(event.channel) ||
+        !wire::MessageRules::beftTypes().checkForChannel(event.channel, event.data.data(), event.data.size()).ok())
+      continue;
+    int64_t utime = 0;  // the first field after the 8-byte fingerprint
+    for (int i = 8; i < 16; ++i) utime = (utime << 8) | event.data[static_cast<std::size_t>(i)];
+    const int order = count[{event.channel, utime}]++;
+    messages[{event.channel, utime, order}] = event.data;
+  }
+  return messages;
+}
+
+std::string compareRuns(const std::map<DataKey, std::vector<uint8_t>>& expected,
+                        const std::map<DataKey, std::vector<uint8_t>>& actual) {
+  for (const auto& [key, data] : expected) {
+    char where[160];
+    std::snprintf(where, sizeof where, "%s at t = %.1f s", std::get<0>(key).c_str(), std::get<1>(key) * 1e-6);
+    const auto it = actual.find(key);
+    if (it == actual.end()) return std::string("no: ") + where + " missing";
+    if (it->second != data) return std::string("no: ") + where + " differs";
+  }
+  if (actual.size() > expected.size()) return "no: " + std::to_string(actual.size() - expected.size()) + " extra";
+  return "yes";
+}
+
+}  // namespace beft::bench
