@@ -44,7 +44,8 @@ std::string readFile(const std::string& path) {
 }
 
 std::string tempPath(const std::string& name) {
-  return "/tmp/beft_test_arbiter_" + std::to_string(getpid()) + "_" + name;
+  static int next = 0;  // several children at once get files of their own
+  return "/tmp/beft_test_arbiter_" + std::to_string(getpid()) + "_" + std::to_string(next++) + "_" + name;
 }
 
 // A child process with stdout and stderr in files.
@@ -365,6 +366,26 @@ TEST(ArbiterProcess, ADeadExpertEndsTheRunByTheNetsPolicy) {
   EXPECT_TRUE(contains(final_status->message, "after 1 retries")) << final_status->message;
   EXPECT_EQ(positionOf(responder.events, 'F', "visual_labels", 4), -1);
   EXPECT_TRUE(contains(arbiter.err(), "run FAILED in tick 4")) << arbiter.err();
+}
+
+// Two runs on one URL by mistake: each arbiter hears the other's beacon and
+// says so within a second, while neither takes the other's messages.
+TEST(ArbiterProcess, TwoArbitersOnOneUrlBothSaySoWithinASecond) {
+  const std::string url = uniqueUrl(3);
+  auto withRun = [&](const std::string& run_id) {
+    std::vector<std::string> args = {"/usr/bin/env", "BEFT_RUN_ID=" + run_id};
+    for (const auto& arg : arbiterArgs(url, kNets + "experts_only.pnml", {})) args.push_back(arg);
+    args.back() = "1.5";  // --startup-timeout
+    return args;
+  };
+  Child first(withRun("a1"));
+  Child second(withRun("b2"));
+  // Both wait for experts that never come, and fail after 1.5 s.
+  ASSERT_TRUE(first.waitFor(20.0));
+  ASSERT_TRUE(second.waitFor(20.0));
+  EXPECT_TRUE(contains(first.err(), "another run (run b2")) << first.err();
+  EXPECT_TRUE(contains(second.err(), "another run (run a1")) << second.err();
+  EXPECT_TRUE(contains(first.err(), "shares this LCM URL with this run (run a1)")) << first.err();
 }
 
 TEST(ArbiterProcess, StopRequestEndsTheRunAfterTheTick) {
