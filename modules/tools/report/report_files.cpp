@@ -33,7 +33,8 @@ void writeReportFiles(const RunRecord& record, const RunReport& report, const st
 
   const auto json_path = dir / "report.json";
   std::ofstream json_file(json_path);
-  json_file << toJson(report).dump(2) << "\n";
+  // Strings come from received messages: bytes that are not UTF-8 are replaced, never fatal.
+  json_file << toJson(report).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   if (!json_file) throw ReportError(json_path.string() + ": cannot write the report");
 
   writePng(renderMap(record, report), dir / "map.png");

@@ -154,7 +154,7 @@ std::string stackJson(const beft::task_stack_t& stack) {
                      {"note", task.note}});
   }
   nlohmann::json root = {{"utime", stack.utime}, {"tick", stack.tick}, {"tasks", tasks}};
-  return root.dump(2) + "\n";
+  return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // received strings may not be UTF-8
 }
 
 }  // namespace beft::task_cli
