@@ -128,7 +128,9 @@ TEST_P(KilledProcess, ResumesFromTheLogAndTheRunWritesTheSameDataMessages) {
   EXPECT_NE(processes.find("killing " + std::string(process) + " (SIGKILL) at tick"), std::string::npos) << processes;
   EXPECT_NE(processes.find(std::string(process) + " killed by signal"), std::string::npos);
   EXPECT_NE(processes.find("resuming from the run's log"), std::string::npos);
-  EXPECT_NE(processes.find("resumed"), std::string::npos);
+  // The blackboard is off the lockstep loop: the run may end before it has
+  // read the log again, so only the processes the run waits for must say so.
+  if (std::string(process) != "blackboard") EXPECT_NE(processes.find("resumed"), std::string::npos);
   expectSameDataMessages(run);
   EXPECT_EQ(run.report["completed"], cleanRun().report["completed"]);
 }
