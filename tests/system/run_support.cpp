@@ -13,8 +13,10 @@
 #include <stdexcept>
 #include <thread>
 
+#include "channels.hpp"
 #include "log_reader.hpp"
 #include "message_check.hpp"
+#include "run_identity.hpp"
 
 namespace beft::system_test {
 
@@ -70,8 +72,8 @@ std::string makeTempDir(const std::string& tag) {
   return pattern;
 }
 
-std::vector<LoggedMessage> readLog(const std::string& path, uint64_t* other_run_events) {
-  const int64_t run = wire::runOfLog(path);
+std::vector<LoggedMessage> readLog(const std::string& path, uint64_t* other_run_events, const std::string& run_id) {
+  const int64_t run = run_id.empty() ? wire::runOfLog(path) : wire::parseRunId(run_id);
   wire::LogReader log(path);
   std::vector<LoggedMessage> events;
   wire::LogEvent event;
@@ -87,14 +89,10 @@ nlohmann::json readJson(const std::string& path) {
 }
 
 std::map<DataKey, std::vector<uint8_t>> dataMessages(const std::vector<LoggedMessage>& log) {
-  static const std::set<std::string> kDataChannels = {
-      "GT_OBJECTS",      "ROBOT_STATE",     "CAMERA_COLOR", "CAMERA_DEPTH",    "CAMERA_INSTANCE", "GEOMETRY",
-      "VISION",          "OBSTACLE_MAP",    "AUDIO",        "LABELS_VISUAL",   "LABELS_ACOUSTIC", "HYPOTHESES",
-      "DYNAMIC_WEIGHTS", "TASK_STACK",      "TASK_COMMAND", "ROBOT_CMD",       "PLAN_REQUEST"};
   std::map<DataKey, std::vector<uint8_t>> messages;
   std::map<std::pair<std::string, int64_t>, int> count;
   for (const auto& event : log) {
-    if (!kDataChannels.count(event.channel) || event.data.size() < 16) continue;
+    if (!channels::isDataPlaneChannel(event.channel) || event.data.size() < 16) continue;
     // What a process of the run would refuse (injected damage) is no message of the run.
     if (!wire::MessageRules::beftTypes().checkForChannel(event.channel, event.data.data(), event.data.size()).ok())
       continue;

@@ -29,9 +29,11 @@ struct LoggedMessage {
   std::vector<uint8_t> data;
 };
 
-// Every event of an LCM log file of its run (the arbiter's), in order, under
-// plain channel names; other runs' events are counted.
-std::vector<LoggedMessage> readLog(const std::string& path, uint64_t* other_run_events = nullptr);
+// Every event of an LCM log file of one run, in order, under plain channel
+// names; other runs' events are counted. The run: `run_id` (hex, as beft run
+// prints it) or, when empty, the arbiter's of the first FIRE in the log.
+std::vector<LoggedMessage> readLog(const std::string& path, uint64_t* other_run_events = nullptr,
+                                   const std::string& run_id = "");
 
 template <typename Message>
 std::vector<Message> messagesOn(const std::vector<LoggedMessage>& log, const std::string& channel) {

@@ -50,15 +50,24 @@ const FaultRun& cleanRun() {
 
 std::string processLog(const FaultRun& run) { return runCommand("cat " + run.dir + "/processes.log", 10).output; }
 
+// The ticks the arbiter ran, as it says when the run ends (the log may have
+// lost the last ticks' datagrams).
+int ticksRun(const FaultRun& run) {
+  const std::string said = lineAfter(processLog(run), "[arbiter] [arbiter] info: FINISHED: finished after ");
+  return said.empty() ? -1 : std::stoi(said);
+}
+
 void expectSameDataMessages(const FaultRun& run) {
   const FaultRun& clean = cleanRun();
   ASSERT_EQ(clean.result.exit_code, 0) << clean.result.output;
   const DataComparison comparison = compareDataMessages(clean.log, run.log);
   EXPECT_GT(comparison.expected, 1000u);
   // The recorder, in the background, loses datagrams on a loaded machine (it
-  // says so; hundreds were seen on a busy 2-core machine), so what is
-  // compared is every message both logs hold: each must be identical.
-  EXPECT_GE(comparison.compared * 100, comparison.expected * 80) << "messages missing from the disturbed run";
+  // says so; a fifth of them under a flood on a busy 2-core machine), so
+  // what is compared is every message both logs hold, each identical, and
+  // the run must have gone as far as the clean one.
+  EXPECT_GE(comparison.compared * 100, comparison.expected * 50) << "messages missing from the disturbed run";
+  EXPECT_EQ(ticksRun(run), ticksRun(clean)) << "the disturbed run ended elsewhere";
   EXPECT_EQ(comparison.differing, 0u) << "first difference: " << comparison.first_difference;
 }
 
@@ -96,7 +105,8 @@ void finish(BackgroundRun& background) {
   waitpid(background.pid, &status, 0);
   background.run.result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   background.run.result.output = runCommand("cat " + background.run.dir + "/run_output.txt", 5).output;
-  background.run.log = readLog(background.run.dir + "/run.lcmlog");
+  // Other runs share this log: this run's messages are those of its id.
+  background.run.log = readLog(background.run.dir + "/run.lcmlog", nullptr, background.run_id);
   background.run.report = readJson(background.run.dir + "/report.json");
 }
 
@@ -130,7 +140,9 @@ TEST_P(KilledProcess, ResumesFromTheLogAndTheRunWritesTheSameDataMessages) {
   EXPECT_NE(processes.find("resuming from the run's log"), std::string::npos);
   // The blackboard is off the lockstep loop: the run may end before it has
   // read the log again, so only the processes the run waits for must say so.
-  if (std::string(process) != "blackboard") EXPECT_NE(processes.find("resumed"), std::string::npos);
+  if (std::string(process) != "blackboard") {
+    EXPECT_NE(processes.find("resumed"), std::string::npos);
+  }
   expectSameDataMessages(run);
   EXPECT_EQ(run.report["completed"], cleanRun().report["completed"]);
 }

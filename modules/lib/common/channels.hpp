@@ -6,6 +6,7 @@
 
 #include <cstring>
 #include <ostream>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -120,6 +121,19 @@ inline const std::vector<ChannelEntry>& allChannels() {
   static const std::vector<ChannelEntry> entries = {BEFT_CHANNELS(BEFT_CHANNEL_ENTRY)};
 #undef BEFT_CHANNEL_ENTRY
   return entries;
+}
+
+// The data plane: what the world and the experts publish for a tick, which
+// two runs of one scenario and seed must publish alike (control messages,
+// wall-clock fields such as PLAN_RESULT's planning time, and services' answers
+// left out). Runs are compared by these (tests, beft bench faults).
+inline bool isDataPlaneChannel(const std::string& channel) {
+  static const std::set<std::string> names = {
+      kGroundTruth.name, kRobotState.name,  kCameraColor.name,    kCameraDepth.name,    kCameraInstance.name,
+      kGeometry.name,    kVision.name,      kObstacleMap.name,    kAudio.name,          kLabelsVisual.name,
+      kLabelsAcoustic.name, kHypotheses.name, kDynamicWeights.name, kTaskStack.name,   kTaskCommand.name,
+      kRobotCommand.name,   kPlanRequest.name};
+  return names.count(channel) > 0;
 }
 
 // The type carried on a channel: "beft.bb_snapshot_t" for any

@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <unordered_map>
 
 #include <beft/bb_query_t.hpp>
 #include <beft/bb_snapshot_t.hpp>
@@ -44,12 +45,19 @@ class LcmOutput : public Output {
  public:
   explicit LcmOutput(lcm::LCM& lcm) : lcm_(lcm) {}
   void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
-    if (lcm_.publish(wire::runChannel(channel), bytes.data(), static_cast<unsigned>(bytes.size())) != 0)
+    if (lcm_.publish(onThisRun(channel), bytes.data(), static_cast<unsigned>(bytes.size())) != 0)
       log::warn("could not publish on ", channel, " (", bytes.size(), " bytes)");
   }
 
  private:
+  // The run's name of each channel, made once: publishing is on every firing's path.
+  const std::string& onThisRun(const std::string& channel) {
+    auto it = run_names_.find(channel);
+    if (it == run_names_.end()) it = run_names_.emplace(channel, wire::runChannel(channel)).first;
+    return it->second;
+  }
   lcm::LCM& lcm_;
+  std::unordered_map<std::string, std::string> run_names_;
 };
 
 // Holds what the LCM handlers received; the main loop decides what to do.
@@ -235,9 +243,7 @@ class Runner {
     resendDone();
   }
 
-  void resendDone() {
-    lcm_.publish(wire::runChannel(channels::kDone), &last_done_);
-  }
+  void resendDone() { lcm_.publish(done_channel_, &last_done_); }
 
   // What wakes the expert: its own FIREs, the run's waiting and end, and its
   // snapshot answer. Its inputs go to a socket of their own that nothing
@@ -317,6 +323,7 @@ class Runner {
   std::string snapshot_channel_;
   bool snapshot_received_ = false;
   std::multiset<uint64_t> logged_recently_;  // inputs the resume replayed that may also arrive live
+  const std::string done_channel_ = wire::runChannel(channels::kDone);
 };
 
 }  // namespace

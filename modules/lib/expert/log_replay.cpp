@@ -148,18 +148,17 @@ std::map<int64_t, beft::done_t> donesOf(const std::string& process_name, const s
   return dones;
 }
 
-uint64_t fingerprintOf(const std::string& channel, const std::vector<uint8_t>& bytes) {
+uint64_t fingerprintOf(const std::string& channel, const uint8_t* bytes, std::size_t size) {
   uint64_t hash = 1469598103934665603ull;  // FNV-1a over channel and bytes
   for (char c : channel) hash = (hash ^ static_cast<uint8_t>(c)) * 1099511628211ull;
-  for (uint8_t b : bytes) hash = (hash ^ b) * 1099511628211ull;
+  for (std::size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
   return hash;
 }
 
 }  // namespace
 
 uint64_t messageFingerprint(const std::string& channel, const void* data, std::size_t size) {
-  const auto* bytes = static_cast<const uint8_t*>(data);
-  return fingerprintOf(channel, std::vector<uint8_t>(bytes, bytes + size));
+  return fingerprintOf(channel, static_cast<const uint8_t*>(data), size);
 }
 
 ReplayResult replayLog(Expert& expert, const std::string& process_name, const std::string& log_path) {
@@ -221,7 +220,7 @@ ResumeState resumeFromLog(Expert& expert, const std::string& process_name, const
   while (log.nextOfRun(event, wire::runId())) {
     if (feeder.feed(event)) {
       ++state.inputs;
-      if (event.timestamp >= overlap_from_us) state.logged_recently.insert(fingerprintOf(event.channel, event.data));
+      if (event.timestamp >= overlap_from_us) state.logged_recently.insert(fingerprintOf(event.channel, event.data.data(), event.data.size()));
     }
   }
   feeder.firePending();

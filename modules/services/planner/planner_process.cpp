@@ -131,8 +131,15 @@ void PlannerProcess::answerRequests(lcm::LCM& lcm) {
   }
 }
 
-void PlannerProcess::resumeFromLog(const std::string& log_path) {
-  std::map<int64_t, beft::plan_request_t> unanswered;
+void PlannerProcess::resumeFromLog(const std::string& log_path, int64_t live_since_us) {
+  // What was sent before this process listened is in the log once the
+  // recorder, which may lag, has written anything newer.
+  if (!wire::waitForLogPast(log_path, live_since_us, 5.0))
+    log::warn("the run's log ", log_path, " has nothing newer than this restart after 5 s: "
+              "resuming from what it holds");
+  // Each unanswered request with the map that was newest when it was sent,
+  // as a live request would have been answered.
+  std::map<int64_t, UnansweredRequest> unanswered;
   wire::LogReader log(log_path);
   wire::LogEvent event;
   while (log.nextOfRun(event, wire::runId())) {
@@ -142,7 +149,7 @@ void PlannerProcess::resumeFromLog(const std::string& log_path) {
     } else if (event.channel == channels::kPlanRequest) {
       beft::plan_request_t request{};
       if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), request))
-        unanswered.emplace(request.request_id, request);
+        unanswered.emplace(request.request_id, UnansweredRequest{request, latest_map_});
     } else if (event.channel == channels::kPlanResult) {
       beft::plan_result_t result{};
       if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), result)) {
@@ -151,10 +158,25 @@ void PlannerProcess::resumeFromLog(const std::string& log_path) {
       }
     }
   }
-  for (auto& [id, request] : unanswered) requests_.push_back(std::move(request));
-  log::info("resumed from ", log_path, ": ", unanswered.size(), " request(s) to answer",
+  for (auto& [id, request] : unanswered) unanswered_.push_back(std::move(request));
+  log::info("resumed from ", log_path, ": ", unanswered_.size(), " request(s) to answer",
             has_map_ ? ", with the newest map" : ", no map yet",
             log.damage().any() ? " (log: " + log.damage().summary() + ")" : "");
+}
+
+void PlannerProcess::answerUnanswered(lcm::LCM& lcm) {
+  const std::vector<uint8_t> newest_map = latest_map_;
+  const bool had_map = has_map_;
+  for (auto& unanswered : unanswered_) {
+    latest_map_ = std::move(unanswered.map);
+    has_map_ = !latest_map_.empty();
+    requests_.push_back(std::move(unanswered.request));
+    takeNewestMap();
+    answerRequests(lcm);
+  }
+  unanswered_.clear();
+  latest_map_ = newest_map;
+  has_map_ = had_map;
 }
 
 int PlannerProcess::serve(service::Context& context) {
@@ -175,14 +197,16 @@ int PlannerProcess::serve(service::Context& context) {
   log::info("requests: ", sources.wake->description());
   log::info("planning with ", config_.default_planner, " (robot radius ", config_.robot_radius, " m) on ",
             context.lcm_url);
+  const int64_t live_since_us = wallMicros();
   const transport::Handler to_inbox = [this](const transport::Message& m) { onMessage(m); };
   if (!context.resume_log.empty()) {
     try {
-      resumeFromLog(context.resume_log);
+      resumeFromLog(context.resume_log, live_since_us);
     } catch (const std::exception& e) {
       log::error("cannot resume from ", context.resume_log, ": ", e.what());
       return 1;
     }
+    answerUnanswered(context.lcm);
   }
   service::HeartbeatSender heartbeats(context.lcm, context.process_name);
   while (!context.stop.any()) {

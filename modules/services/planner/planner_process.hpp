@@ -33,7 +33,15 @@ class PlannerProcess : public service::Service {
   void takeNewestMap();
   void answerRequests(lcm::LCM& lcm);
   // After a crash: the newest map and the requests not yet answered, from the run's log.
-  void resumeFromLog(const std::string& log_path);
+  void resumeFromLog(const std::string& log_path, int64_t live_since_us);
+  // Answers them, each on the map that was newest when it was sent.
+  void answerUnanswered(lcm::LCM& lcm);
+
+  struct UnansweredRequest {
+    beft::plan_request_t request;
+    std::vector<uint8_t> map;  // encoded obstacle_map_t, or empty
+  };
+  std::vector<UnansweredRequest> unanswered_;
 
   ServiceConfig config_;
   std::vector<std::string> pf_params_;

@@ -1,26 +1,21 @@
 #include "data_messages.hpp"
 
 #include <cstdio>
-#include <set>
 
+#include "channels.hpp"
 #include "log_reader.hpp"
 #include "message_check.hpp"
 
 namespace beft::bench {
 
-std::map<DataKey, std::vector<uint8_t>> dataMessages(const std::string& log_path) {
-  // The data plane: what the world and the experts publish (control, wall-clock and service messages left out).
-  static const std::set<std::string> kDataChannels = {
-      "GT_OBJECTS", "ROBOT_STATE",     "CAMERA_COLOR",    "CAMERA_DEPTH", "CAMERA_INSTANCE", "GEOMETRY",
-      "VISION",     "OBSTACLE_MAP",    "AUDIO",           "LABELS_VISUAL", "LABELS_ACOUSTIC", "HYPOTHESES",
-      "DYNAMIC_WEIGHTS", "TASK_STACK", "TASK_COMMAND",    "ROBOT_CMD",    "PLAN_REQUEST"};
+std::map<DataKey, std::vector<uint8_t>> dataMessages(const std::string& log_path, int64_t run_id) {
   std::map<DataKey, std::vector<uint8_t>> messages;
   std::map<std::pair<std::string, int64_t>, int> count;
-  const int64_t run = wire::runOfLog(log_path);
+  const int64_t run = run_id != 0 ? run_id : wire::runOfLog(log_path);
   wire::LogReader log(log_path);
   wire::LogEvent event;
   while (log.nextOfRun(event, run)) {
-    if (!kDataChannels.count(event.channel) ||
+    if (!channels::isDataPlaneChannel(event.channel) ||
         !wire::MessageRules::beftTypes().checkForChannel(event.channel, event.data.data(), event.data.size()).ok())
       continue;
     int64_t utime = 0;  // the first field after the 8-byte fingerprint

@@ -21,6 +21,7 @@
 #include "command_line.hpp"
 #include "data_messages.hpp"
 #include "own_bin_dir.hpp"
+#include "run_identity.hpp"
 
 namespace {
 
@@ -30,6 +31,7 @@ struct Outcome {
   std::string identical;
   long long rejected = 0, other_run = 0, restarts = 0;
   double ticks_per_s = 0;
+  int64_t run_id = 0;  // as beft run printed it: other runs share the log
 };
 
 std::string readFile(const std::string& path) {
@@ -75,6 +77,9 @@ Outcome runYard(const std::string& name, const std::string& dir, const std::stri
   }
   Outcome outcome;
   outcome.name = name;
+  const std::string started = lineAfter(readFile(dir + "/out.txt"), "[launch] started ");
+  if (const auto at = started.find(" as run "); at != std::string::npos)
+    outcome.run_id = beft::wire::parseRunId(started.substr(at + 8));
   try {
     const auto report = nlohmann::json::parse(readFile(dir + "/report.json"));
     outcome.completed = report.value("completed", false);
@@ -117,9 +122,9 @@ int main(int argc, char** argv) {
   std::vector<Outcome> outcomes;
   const std::string clean_dir = work + "/clean";
   outcomes.push_back(runYard("clean", clean_dir, "", ticks, nullptr));
-  const auto clean = beft::bench::dataMessages(clean_dir + "/run.lcmlog");
+  const auto clean = beft::bench::dataMessages(clean_dir + "/run.lcmlog", outcomes.back().run_id);
   auto compare = [&](Outcome outcome, const std::string& dir) {
-    outcome.identical = beft::bench::compareRuns(clean, beft::bench::dataMessages(dir + "/run.lcmlog"));
+    outcome.identical = beft::bench::compareRuns(clean, beft::bench::dataMessages(dir + "/run.lcmlog", outcome.run_id));
     outcomes.push_back(outcome);
   };
   outcomes.back().identical = "(reference)";

@@ -7,6 +7,7 @@
 #include "channels.hpp"
 #include "guarded_decode.hpp"
 #include "launch_file.hpp"
+#include "run_identity.hpp"
 
 namespace beft::launch {
 
@@ -26,19 +27,22 @@ PlannedKill parsePlannedKill(const std::string& text) {
   return kill;
 }
 
+TickFollower::TickFollower(const std::string& lcm_url, int64_t run_id)
+    : lcm_(std::make_unique<lcm::LCM>(lcm_url)) {
+  if (lcm_->good()) lcm_->subscribeFunction(wire::runChannel(channels::kMarking, run_id), &onMarking, this);
+}
+
+TickFollower::~TickFollower() = default;
+
+void TickFollower::onMarking(const lcm::ReceiveBuffer* buffer, const std::string& channel, TickFollower* self) {
+  beft::marking_t marking{};
+  if (wire::decodeFrom(channel, buffer->data, buffer->data_size, marking)) self->tick_ = std::max(self->tick_, marking.tick);
+}
+
 int64_t TickFollower::poll() {
-  try {
-    wire::LogReader log(path_, offset_);
-    wire::LogEvent event;
-    while (log.nextOfRun(event, run_id_)) {
-      if (event.channel != channels::kMarking) continue;
-      beft::marking_t marking{};
-      if (wire::guardedDecode(event.data.data(), event.data.size(), marking).ok()) tick_ = std::max(tick_, marking.tick);
+  if (lcm_->good())
+    while (lcm_->handleTimeout(0) > 0) {
     }
-    offset_ = log.position();
-  } catch (const std::exception&) {
-    // Not written yet.
-  }
   return tick_;
 }
 

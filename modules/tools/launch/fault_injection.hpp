@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "log_reader.hpp"
+#include <memory>
+
+#include <lcm/lcm-cpp.hpp>
 
 namespace beft::launch {
 
@@ -19,18 +21,19 @@ struct PlannedKill {
 // "NAME@TICK" -> PlannedKill; throws LaunchError naming what is wrong.
 PlannedKill parsePlannedKill(const std::string& text);
 
-// Follows the run's log as the recorder writes it and tells the tick the
-// arbiter has reached (its RUN_STATUS and MARKING messages).
+// Tells the tick the arbiter has reached, from its MARKING messages on the
+// bus (not from the log: the recorder, in the background, may lag seconds
+// behind on a loaded machine).
 class TickFollower {
  public:
-  TickFollower(std::string log_path, int64_t run_id) : path_(std::move(log_path)), run_id_(run_id) {}
-  // Reads what was added since the last call; the newest tick seen, -1 if none.
+  TickFollower(const std::string& lcm_url, int64_t run_id);
+  ~TickFollower();
+  // Takes what arrived since the last call; the newest tick seen, -1 if none.
   int64_t poll();
 
  private:
-  std::string path_;
-  int64_t run_id_;
-  uint64_t offset_ = 0;
+  static void onMarking(const lcm::ReceiveBuffer* buffer, const std::string& channel, TickFollower* self);
+  std::unique_ptr<lcm::LCM> lcm_;
   int64_t tick_ = -1;
 };
 

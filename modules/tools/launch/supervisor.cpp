@@ -18,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <functional>
 #include <thread>
 
@@ -337,11 +338,13 @@ bool onChildExit(Child& child, int status, const SupervisorOptions& options, Pri
 // Kills planned with --kill, once the run's log shows their tick.
 class Killer {
  public:
-  explicit Killer(const SupervisorOptions& options)
-      : kills_(options.kills), follower_(options.record_log, options.run_id) {}
+  explicit Killer(const SupervisorOptions& options) : kills_(options.kills) {
+    // Only when kills are planned: the launcher otherwise holds no LCM instance of its own.
+    if (!kills_.empty()) follower_ = std::make_unique<TickFollower>(options.lcm_url, options.run_id);
+  }
   void check(std::vector<Child>& children, Printer& printer) {
     if (std::all_of(kills_.begin(), kills_.end(), [](const PlannedKill& k) { return k.done; })) return;
-    const int64_t tick = follower_.poll();
+    const int64_t tick = follower_->poll();
     for (auto& planned : kills_) {
       if (planned.done || tick < planned.tick) continue;
       for (auto& child : children) {
@@ -355,7 +358,7 @@ class Killer {
 
  private:
   std::vector<PlannedKill> kills_;
-  TickFollower follower_;
+  std::unique_ptr<TickFollower> follower_;
 };
 
 void watchChildren(std::vector<Child>& children, const SupervisorOptions& options, Printer& printer,

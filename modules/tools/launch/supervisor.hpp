@@ -22,7 +22,7 @@ struct SupervisorOptions {
   double stop_grace_s = 3.0;          // SIGTERM, then SIGKILL after this
   bool quiet_children = false;        // do not echo children's output
   std::string output_file;            // also append every prefixed line here
-  std::vector<PlannedKill> kills;     // fault injection: SIGKILL a process at a tick (needs record_log)
+  std::vector<PlannedKill> kills;     // fault injection: SIGKILL a process when the run reaches a tick
   int64_t run_id = 0;                 // given to every process as BEFT_RUN_ID (0: none)
 };
 
