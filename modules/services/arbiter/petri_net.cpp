@@ -13,6 +13,12 @@ const char* actionName(ExpiryAction action) {
   return "?";
 }
 
+size_t Net::arcCount() const {
+  size_t arcs = 0;
+  for (const auto& t : transitions) arcs += t.inputs.size() + t.outputs.size();
+  return arcs;
+}
+
 Marking Net::initialMarking() const {
   Marking marking(places.size(), 0);
   for (size_t i = 0; i < places.size(); ++i) marking[i] = places[i].initial_tokens;

@@ -63,6 +63,12 @@ struct Net {
   std::vector<Transition> transitions;
   int tick_transition = -1;          // index into transitions
   std::vector<std::string> warnings; // things worth a look that are not errors
+  // Read as any P/T net: what keeps it from being an arbiter schedule
+  // (a transition naming no expert, no tick transition, ...), "FILE:LINE: ...".
+  std::vector<std::string> schedule_problems;
+  bool annotated = false;            // some node carries the arbiter's <toolspecific tool="beft">
+
+  size_t arcCount() const;
 
   Marking initialMarking() const;
   // Distinct expert names in order of first appearance.

@@ -1,5 +1,7 @@
 #include "pnml_reader.hpp"
 
+#include "xml_encoding.hpp"
+
 #include <sys/stat.h>
 #include <tinyxml2.h>
 
@@ -43,8 +45,64 @@ std::string trim(const char* text) {
   return s.substr(first, last - first + 1);
 }
 
+// The name without a namespace prefix ("pnml:place" -> "place").
+const char* localName(const char* element_name) {
+  if (!element_name) return "";
+  const char* colon = std::strrchr(element_name, ':');
+  return colon ? colon + 1 : element_name;
+}
+
 bool isName(const char* element_name, const char* expected) {
-  return element_name && std::strcmp(element_name, expected) == 0;
+  return std::strcmp(localName(element_name), expected) == 0;
+}
+
+const XMLElement* firstChild(const XMLElement& parent, const char* name) {
+  for (const XMLElement* e = parent.FirstChildElement(); e; e = e->NextSiblingElement())
+    if (isName(e->Name(), name)) return e;
+  return nullptr;
+}
+
+const XMLElement* nextSibling(const XMLElement& element, const char* name) {
+  for (const XMLElement* e = element.NextSiblingElement(); e; e = e->NextSiblingElement())
+    if (isName(e->Name(), name)) return e;
+  return nullptr;
+}
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+// Net types that are high-level nets, not place/transition nets.
+bool isHighLevelType(const std::string& type) {
+  const std::string t = lowercase(type);
+  for (const char* kind : {"symmetricnet", "highlevelnet", "hlpng", "hlcorestructure", "coloured", "colored"})
+    if (t.find(kind) != std::string::npos) return true;
+  return false;
+}
+
+// TAPAAL's own file format looks like PNML but is not: its places carry the
+// marking and invariant as attributes, arcs a time interval, and the file
+// has shared places, constants and queries.
+std::string tapaalNativeSign(const XMLElement& root) {
+  for (const XMLElement* e = root.FirstChildElement(); e; e = e->NextSiblingElement()) {
+    for (const char* own : {"shared-place", "shared-transition", "constant", "query", "k-bound", "feature"})
+      if (isName(e->Name(), own)) return "<" + std::string(own) + ">";
+    if (!isName(e->Name(), "net")) continue;
+    for (const XMLElement* node = e->FirstChildElement(); node; node = node->NextSiblingElement()) {
+      if (isName(node->Name(), "place") && (node->Attribute("initialMarking") || node->Attribute("invariant")))
+        return "a place with an initialMarking or invariant attribute";
+      if ((isName(node->Name(), "arc") || isName(node->Name(), "inputArc") || isName(node->Name(), "outputArc")) &&
+          node->Attribute("inscription"))
+        return "an arc with an inscription attribute";
+    }
+  }
+  return "";
 }
 
 bool validExpertName(const std::string& name) {
@@ -71,6 +129,40 @@ std::optional<double> parseSeconds(const std::string& text) {
   const double value = std::strtod(text.c_str(), &end);
   if (errno != 0 || end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
   return value;
+}
+
+// A marking or weight as tools write it: "3", PIPE's "Default,3" (token
+// class, count), or "" for none. Several classes with tokens: coloured.
+struct TokenCount {
+  std::optional<long long> value;
+  bool coloured = false;
+};
+
+TokenCount parseTokenCount(const std::string& text) {
+  TokenCount count;
+  if (text.empty()) {
+    count.value = 0;
+    return count;
+  }
+  if (text.find(',') == std::string::npos) {
+    count.value = parseWholeNumber(text);
+    return count;
+  }
+  std::vector<std::string> fields;
+  std::stringstream stream(text);
+  for (std::string field; std::getline(stream, field, ',');) fields.push_back(trim(field.c_str()));
+  if (fields.size() % 2 != 0) return count;
+  long long total = 0;
+  int classes_used = 0;
+  for (size_t i = 0; i + 1 < fields.size(); i += 2) {
+    const auto n = parseWholeNumber(fields[i + 1]);
+    if (!n) return count;
+    if (*n != 0) ++classes_used;
+    total += *n;
+  }
+  count.coloured = classes_used > 1;
+  count.value = total;
+  return count;
 }
 
 // tinyxml2's message without its "Error=... ErrorID=... Line number=N" wrapper.
@@ -101,7 +193,9 @@ struct PendingArc {
 
 class PnmlReader {
  public:
-  explicit PnmlReader(std::string file) { net_.file = std::move(file); }
+  PnmlReader(std::string file, PnmlReadOptions options) : options_(std::move(options)) {
+    net_.file = std::move(file);
+  }
 
   Net read(tinyxml2::XMLDocument& document) {
     if (document.Error()) {
@@ -114,22 +208,49 @@ class PnmlReader {
               std::string("root element is <") + (root ? root->Name() : "") + ">, expected <pnml>");
       throw NetError(problems_);
     }
-    const XMLElement* net_element = nullptr;
-    int nets = 0;
-    for (const XMLElement* e = root->FirstChildElement("net"); e; e = e->NextSiblingElement("net")) {
-      if (++nets == 1) net_element = e;
-      else problem(e->GetLineNum(), "second <net> in the file; the arbiter reads one net per file");
-    }
-    if (!net_element) {
-      problem(root->GetLineNum(), "<pnml> holds no <net>");
+    if (const std::string sign = tapaalNativeSign(*root); !sign.empty()) {
+      problem(root->GetLineNum(), "this is TAPAAL's own format (" + sign +
+                                      "), not PNML: export the net from TAPAAL as PNML");
       throw NetError(problems_);
     }
+    const XMLElement* net_element = chooseNet(*root);
+    if (!net_element) throw NetError(problems_);
     readNet(*net_element);
     if (!problems_.empty()) throw NetError(problems_);
     return std::move(net_);
   }
 
  private:
+  // The <net> asked for, or the first; several without a choice are noted.
+  const XMLElement* chooseNet(const XMLElement& root) {
+    std::vector<const XMLElement*> nets;
+    for (const XMLElement* e = firstChild(root, "net"); e; e = nextSibling(*e, "net")) nets.push_back(e);
+    if (nets.empty()) {
+      problem(root.GetLineNum(), "<pnml> holds no <net>");
+      return nullptr;
+    }
+    std::string ids;
+    for (const XMLElement* e : nets) ids += (ids.empty() ? "'" : ", '") + trim(e->Attribute("id")) + "'";
+    if (!options_.net_id.empty()) {
+      for (const XMLElement* e : nets)
+        if (trim(e->Attribute("id")) == options_.net_id) return e;
+      problem(root.GetLineNum(), "no <net> with id '" + options_.net_id + "' (the file has " + ids + ")");
+      return nullptr;
+    }
+    if (nets.size() > 1)
+      net_.warnings.push_back(net_.file + ":" + std::to_string(nets[0]->GetLineNum()) + ": the file holds " +
+                              std::to_string(nets.size()) + " nets (" + ids + "); reading the first, '" +
+                              trim(nets[0]->Attribute("id")) + "' (choose one with --net-id)");
+    return nets[0];
+  }
+
+  // What makes the net no arbiter schedule: an error for the arbiter, a
+  // finding of its own when any P/T net is read.
+  void scheduleProblem(int line, const std::string& message) {
+    if (options_.schedule) problem(line, message);
+    else net_.schedule_problems.push_back(net_.file + ":" + std::to_string(line) + ": " + message);
+  }
+
   void problem(int line, const std::string& message) {
     if (problems_.size() < kMaxProblems)
       problems_.push_back(net_.file + ":" + std::to_string(line) + ": " + message);
@@ -139,16 +260,45 @@ class PnmlReader {
 
   void readNet(const XMLElement& net) {
     net_.id = trim(net.Attribute("id"));
-    if (const char* type = net.Attribute("type")) {
-      const std::string t = type;
-      const std::string suffix = "ptnet";
-      if (t.size() < suffix.size() || t.compare(t.size() - suffix.size(), suffix.size(), suffix) != 0)
-        problem(net.GetLineNum(), "net type '" + t + "' is not a P/T net (.../grammar/ptnet expected)");
-    }
+    if (!checkNetType(net)) return;
     net_.name = labelText(net, "name").value_or("");
+    readTokenClasses(net);
     readContainer(net);
     resolveArcs();
     checkStructure(net.GetLineNum());
+  }
+
+  // ISO P/T nets, ProM's and pm4py's core model, WoPeD's ptNetb and PIPE's
+  // "P/T net" are read; high-level nets are refused; other types are read
+  // as P/T nets with a warning.
+  bool checkNetType(const XMLElement& net) {
+    const std::string type = trim(net.Attribute("type"));
+    if (type.empty()) return true;
+    if (isHighLevelType(type)) {
+      problem(net.GetLineNum(), "net type '" + type + "' is a high-level net, not a place/transition net "
+                                "(.../grammar/ptnet expected)");
+      return false;
+    }
+    const std::string t = lowercase(type);
+    if (endsWith(t, "ptnet") || endsWith(t, "pnmlcoremodel") || endsWith(t, "ptnetb") || t == "p/t net")
+      return true;
+    net_.warnings.push_back(net_.file + ":" + std::to_string(net.GetLineNum()) + ": net type '" + type +
+                            "' is not known; read as a place/transition net");
+    return true;
+  }
+
+  // PIPE declares its token classes under <net>; more than one in use makes
+  // a coloured net.
+  void readTokenClasses(const XMLElement& net) {
+    std::vector<std::string> enabled;
+    for (const XMLElement* e = firstChild(net, "token"); e; e = nextSibling(*e, "token"))
+      if (trim(e->Attribute("enabled")) != "false") enabled.push_back(trim(e->Attribute("id")));
+    if (enabled.size() > 1) {
+      std::string names;
+      for (const auto& name : enabled) names += (names.empty() ? "" : ", ") + name;
+      problem(net.GetLineNum(), "a coloured PIPE net (token classes " + names +
+                                    "): only place/transition nets, with one kind of token, are read");
+    }
   }
 
   // <net> and <page>: nodes may sit at any depth of pages.
@@ -199,14 +349,14 @@ class PnmlReader {
   // its <text> child, else its <value> child, else its own text.
   std::optional<std::string> labelText(const XMLElement& owner, const char* label,
                                        int* line = nullptr) {
-    const XMLElement* element = owner.FirstChildElement(label);
+    const XMLElement* element = firstChild(owner, label);
     if (!element) return std::nullopt;
     if (line) *line = element->GetLineNum();
-    if (const XMLElement* text = element->FirstChildElement("text")) {
+    if (const XMLElement* text = firstChild(*element, "text")) {
       if (line) *line = text->GetLineNum();
       return trim(text->GetText());
     }
-    if (const XMLElement* value = element->FirstChildElement("value")) {
+    if (const XMLElement* value = firstChild(*element, "value")) {
       if (line) *line = value->GetLineNum();
       return trim(value->GetText());
     }
@@ -216,17 +366,17 @@ class PnmlReader {
   // The <toolspecific tool="beft"> element of a node, if any (one at most).
   const XMLElement* beftAnnotation(const XMLElement& owner, const std::string& owner_id) {
     const XMLElement* found = nullptr;
-    for (const XMLElement* e = owner.FirstChildElement("toolspecific"); e;
-         e = e->NextSiblingElement("toolspecific")) {
+    for (const XMLElement* e = firstChild(owner, "toolspecific"); e; e = nextSibling(*e, "toolspecific")) {
       if (trim(e->Attribute("tool")) != kToolName) continue;
+      net_.annotated = true;
       if (found) {
-        problem(e->GetLineNum(), "second <toolspecific tool=\"beft\"> in '" + owner_id + "'");
+        scheduleProblem(e->GetLineNum(), "second <toolspecific tool=\"beft\"> in '" + owner_id + "'");
         continue;
       }
       const char* version = e->Attribute("version");
       if (version && trim(version) != kToolVersion)
-        problem(e->GetLineNum(), "<toolspecific tool=\"beft\"> version '" + trim(version) +
-                                     "' is not supported (version \"1\" expected)");
+        scheduleProblem(e->GetLineNum(), "<toolspecific tool=\"beft\"> version '" + trim(version) +
+                                             "' is not supported (version \"1\" expected)");
       found = e;
     }
     return found;
@@ -238,18 +388,25 @@ class PnmlReader {
     place.id = declareId(e, NodeKind::Place, static_cast<int>(net_.places.size()));
     if (place.id.empty()) return;
     place.name = labelText(e, "name").value_or("");
+    if (const XMLElement* sort = firstChild(e, "hlinitialMarking") ? firstChild(e, "hlinitialMarking")
+                                                                     : firstChild(e, "type"))
+      problem(sort->GetLineNum(), "place '" + place.id + "' has a <" + localName(sort->Name()) +
+                                      ">, which only high-level nets have; only place/transition nets are read");
     int line = place.line;
     if (const auto text = labelText(e, "initialMarking", &line)) {
-      const auto tokens = parseWholeNumber(*text);
-      if (!tokens || *tokens < 0 || *tokens > 1000000)
+      const TokenCount tokens = parseTokenCount(*text);
+      if (tokens.coloured)
+        problem(line, "initial marking '" + *text + "' of place '" + place.id +
+                          "' holds tokens of several colours: a coloured net, not a place/transition net");
+      else if (!tokens.value || *tokens.value < 0 || *tokens.value > 1000000)
         problem(line, "initial marking '" + *text + "' of place '" + place.id +
                           "' is not a whole number between 0 and 1000000");
       else
-        place.initial_tokens = static_cast<int>(*tokens);
+        place.initial_tokens = static_cast<int>(*tokens.value);
     }
     if (const XMLElement* annotation = beftAnnotation(e, place.id)) {
       for (const XMLElement* c = annotation->FirstChildElement(); c; c = c->NextSiblingElement())
-        problem(c->GetLineNum(), "unknown element <" + std::string(c->Name()) +
+        scheduleProblem(c->GetLineNum(), "unknown element <" + std::string(c->Name()) +
                                      "> in <toolspecific tool=\"beft\"> of place '" + place.id +
                                      "' (places take no beft options)");
     }
@@ -261,7 +418,7 @@ class PnmlReader {
     if (text == "retry" && allow_retry) return ExpiryAction::Retry;
     if (text == "skip") return ExpiryAction::Skip;
     if (text == "fail") return ExpiryAction::Fail;
-    problem(e.GetLineNum(), "<" + std::string(e.Name()) + "> of transition '" + transition_id +
+    scheduleProblem(e.GetLineNum(), "<" + std::string(e.Name()) + "> of transition '" + transition_id +
                                 "' is '" + text + "'; expected " +
                                 (allow_retry ? "retry, skip or fail" : "skip or fail"));
     return std::nullopt;
@@ -271,7 +428,7 @@ class PnmlReader {
                                              const std::string& transition_id) {
     const auto seconds = parseSeconds(text);
     if (!seconds || *seconds <= 0.0 || *seconds > 86400.0) {
-      problem(e.GetLineNum(), "<" + std::string(e.Name()) + "> of transition '" + transition_id +
+      scheduleProblem(e.GetLineNum(), "<" + std::string(e.Name()) + "> of transition '" + transition_id +
                                   "' is '" + text + "'; expected seconds, > 0 and <= 86400");
       return std::nullopt;
     }
@@ -288,7 +445,7 @@ class PnmlReader {
 
     const XMLElement* annotation = beftAnnotation(e, id);
     if (!annotation) {
-      problem(transition.line,
+      scheduleProblem(transition.line,
               "transition '" + id + "' names no expert: add <toolspecific tool=\"beft\" version=\"1\">"
               "<expert>NAME</expert></toolspecific>, or <silent/> there for a join or fork");
       net_.transitions.push_back(std::move(transition));
@@ -306,7 +463,7 @@ class PnmlReader {
       const std::string option = c->Name();
       const std::string text = trim(c->GetText());
       if (!seen.insert(option).second) {
-        problem(c->GetLineNum(), "<" + option + "> given twice in transition '" + id + "'");
+        scheduleProblem(c->GetLineNum(), "<" + option + "> given twice in transition '" + id + "'");
         continue;
       }
       if (option == "expert") {
@@ -338,7 +495,7 @@ class PnmlReader {
         policy_line = c->GetLineNum();
         const auto n = parseWholeNumber(text);
         if (!n || *n < 0 || *n > 100) {
-          problem(c->GetLineNum(), "<retries> of transition '" + id + "' is '" + text +
+          scheduleProblem(c->GetLineNum(), "<retries> of transition '" + id + "' is '" + text +
                                        "'; expected a whole number from 0 to 100");
         } else {
           policy.retries = static_cast<int>(*n);
@@ -350,7 +507,7 @@ class PnmlReader {
         policy_line = c->GetLineNum();
         if (auto a = parseAction(*c, text, id, false)) policy.after_retries = *a;
       } else {
-        problem(c->GetLineNum(), "unknown element <" + option +
+        scheduleProblem(c->GetLineNum(), "unknown element <" + option +
                                      "> in <toolspecific tool=\"beft\"> of transition '" + id +
                                      "' (known: expert silent tick level timeout heartbeat_timeout "
                                      "on_timeout on_failure retries after_retries)");
@@ -364,29 +521,29 @@ class PnmlReader {
     }
     const bool silent = marked_silent || transition.is_tick;
     if (expert && silent) {
-      problem(annotation->GetLineNum(),
+      scheduleProblem(annotation->GetLineNum(),
               "transition '" + id + "' names expert '" + *expert + "' but is marked " +
                   (transition.is_tick ? "<tick/> (the tick transition must be silent)" : "<silent/>"));
     } else if (expert && !validExpertName(*expert)) {
-      problem(annotation->GetLineNum(), "expert name '" + *expert + "' of transition '" + id +
+      scheduleProblem(annotation->GetLineNum(), "expert name '" + *expert + "' of transition '" + id +
                                             "' must be letters, digits, '_', '-' or '.'");
     } else if (!expert && !silent) {
-      problem(annotation->GetLineNum(),
+      scheduleProblem(annotation->GetLineNum(),
               "transition '" + id + "' names no expert: add <expert>NAME</expert>, or <silent/> "
               "for a join or fork");
     }
     if (expert) transition.expert = *expert;
 
     if (silent && has_policy)
-      problem(policy_line, "transition '" + id +
+      scheduleProblem(policy_line, "transition '" + id +
                                "' is silent: timeouts, retries and policies apply to experts only");
     const bool uses_retry = policy.on_timeout == ExpiryAction::Retry ||
                             policy.on_failure == ExpiryAction::Retry;
     if (uses_retry && !retries_given) policy.retries = 1;
     if (uses_retry && retries_given && policy.retries == 0)
-      problem(policy_line, "transition '" + id + "' has a retry policy with <retries>0</retries>");
+      scheduleProblem(policy_line, "transition '" + id + "' has a retry policy with <retries>0</retries>");
     if (!uses_retry && (retries_given || after_retries_given))
-      problem(policy_line, "transition '" + id + "' gives <retries>/<after_retries> but neither "
+      scheduleProblem(policy_line, "transition '" + id + "' gives <retries>/<after_retries> but neither "
                            "<on_timeout> nor <on_failure> is retry");
     net_.transitions.push_back(std::move(transition));
   }
@@ -402,9 +559,15 @@ class PnmlReader {
       arcs_refused_ = true;
       return;
     }
+    if (const std::string kind = specialArcKind(e); !kind.empty()) {
+      problem(arc.line, "arc '" + arc.id + "' is " + kind + " arc; only place/transition nets (normal arcs) are read");
+      arcs_refused_ = true;
+      return;
+    }
     int line = arc.line;
     if (const auto text = labelText(e, "inscription", &line)) {
-      const auto weight = parseWholeNumber(*text);
+      const TokenCount count = parseTokenCount(text->empty() ? "1" : *text);
+      const auto weight = count.coloured ? std::nullopt : count.value;
       if (!weight || *weight < 1 || *weight > 1000000) {
         problem(line, "weight '" + *text + "' of arc '" + arc.id +
                           "' is not a whole number between 1 and 1000000");
@@ -414,6 +577,25 @@ class PnmlReader {
       arc.weight = static_cast<int>(*weight);
     }
     arcs_.push_back(arc);
+  }
+
+  // "an inhibitor" for an inhibitor arc (PIPE's <type value="inhibitor"/>,
+  // a type attribute, a <type><text> label), "" for a normal one.
+  static std::string specialArcKind(const XMLElement& arc) {
+    std::string kind = trim(arc.Attribute("type"));
+    for (const XMLElement* c = arc.FirstChildElement(); c && kind.empty(); c = c->NextSiblingElement()) {
+      if (!isName(c->Name(), "type") && !isName(c->Name(), "arctype")) continue;
+      kind = trim(c->Attribute("value"));
+      if (kind.empty())
+        if (const XMLElement* text = firstChild(*c, "text")) kind = trim(text->GetText());
+      if (kind.empty()) kind = trim(c->GetText());
+    }
+    const std::string k = lowercase(kind);
+    if (k.empty() || k == "normal" || k == "regular" || k == "standard") return "";
+    if (k.find("inhibitor") != std::string::npos) return "an inhibitor";
+    if (k.find("reset") != std::string::npos) return "a reset";
+    if (k.find("read") != std::string::npos || k.find("test") != std::string::npos) return "a read";
+    return "a '" + kind + "'";
   }
 
   // Follows reference nodes to the place or transition they stand for.
@@ -461,9 +643,20 @@ class PnmlReader {
       }
       const auto key = std::make_pair(arc.source, arc.target);
       if (const auto previous = first_line.find(key); previous != first_line.end()) {
-        problem(arc.line, "second arc from '" + arc.source + "' to '" + arc.target +
-                              "' (first at line " + std::to_string(previous->second) +
-                              "); use one arc with a weight");
+        const std::string message = "second arc from '" + arc.source + "' to '" + arc.target +
+                                    "' (first at line " + std::to_string(previous->second) + ")";
+        if (options_.schedule) {
+          problem(arc.line, message + "; use one arc with a weight");
+          continue;
+        }
+        // Any P/T net: parallel arcs act as one arc of their summed weight.
+        net_.warnings.push_back(net_.file + ":" + std::to_string(arc.line) + ": " + message +
+                                ": read as one arc with the weights added");
+        std::vector<ArcEnd>& ends = source->kind == NodeKind::Place ? net_.transitions[target->index].inputs
+                                                                    : net_.transitions[source->index].outputs;
+        const int place = source->kind == NodeKind::Place ? source->index : target->index;
+        for (ArcEnd& end : ends)
+          if (end.place == place) end.weight += arc.weight;
         continue;
       }
       first_line[key] = arc.line;
@@ -475,22 +668,22 @@ class PnmlReader {
   }
 
   void checkStructure(int net_line) {
-    if (net_.places.empty()) problem(net_line, "the net has no places");
-    if (net_.transitions.empty()) problem(net_line, "the net has no transitions");
+    if (net_.places.empty()) scheduleProblem(net_line, "the net has no places");
+    if (net_.transitions.empty()) scheduleProblem(net_line, "the net has no transitions");
     std::vector<int> ticks;
     for (size_t i = 0; i < net_.transitions.size(); ++i) {
       const Transition& t = net_.transitions[i];
       if (t.is_tick) ticks.push_back(static_cast<int>(i));
       // A refused arc already explains a missing input.
       if (t.inputs.empty() && !arcs_refused_)
-        problem(t.line, "transition '" + t.id + "' has no input place, so it would fire without end");
+        scheduleProblem(t.line, "transition '" + t.id + "' has no input place, so it would fire without end");
     }
     if (ticks.empty()) {
-      problem(net_line, "no tick transition: mark the silent transition that closes a tick with "
+      scheduleProblem(net_line, "no tick transition: mark the silent transition that closes a tick with "
                         "<toolspecific tool=\"beft\" version=\"1\"><tick/></toolspecific>");
     } else if (ticks.size() > 1) {
       for (size_t i = 1; i < ticks.size(); ++i)
-        problem(net_.transitions[ticks[i]].line,
+        scheduleProblem(net_.transitions[ticks[i]].line,
                 "second tick transition '" + net_.transitions[ticks[i]].id + "' (first: '" +
                     net_.transitions[ticks[0]].id + "'); a net has exactly one");
     } else {
@@ -507,6 +700,7 @@ class PnmlReader {
                                 net_.places[i].id + "' has no arcs");
   }
 
+  PnmlReadOptions options_;
   Net net_;
   std::vector<std::string> problems_;
   std::map<std::string, DeclaredId> ids_;
@@ -519,7 +713,7 @@ class PnmlReader {
 NetError::NetError(std::vector<std::string> problems)
     : std::runtime_error(joinLines(problems)), problems_(std::move(problems)) {}
 
-Net readPnmlFile(const std::string& path) {
+Net readPnmlFile(const std::string& path, const PnmlReadOptions& options) {
   struct stat info {};
   if (stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
     throw NetError({path + ": is a directory, not a PNML file"});
@@ -527,13 +721,19 @@ Net readPnmlFile(const std::string& path) {
   if (!in) throw NetError({path + ": cannot open the file: " + std::strerror(errno)});
   std::ostringstream text;
   text << in.rdbuf();
-  return readPnmlString(text.str(), path);
+  return readPnmlString(text.str(), path, options);
 }
 
-Net readPnmlString(const std::string& text, const std::string& display_name) {
+Net readPnmlString(const std::string& bytes, const std::string& display_name, const PnmlReadOptions& options) {
+  std::string text;
+  try {
+    text = xmlTextAsUtf8(bytes);
+  } catch (const std::exception& e) {
+    throw NetError({display_name + ":1: " + e.what()});
+  }
   tinyxml2::XMLDocument document;
   document.Parse(text.c_str(), text.size());
-  PnmlReader reader(display_name);
+  PnmlReader reader(display_name, options);
   return reader.read(document);
 }
 

@@ -1,10 +1,17 @@
 // Reads a P/T net in PNML (ISO/IEC 15909-2) with the arbiter's annotations.
 //
-// Accepted: <place>, <transition>, <arc> anywhere under <net>, nested <page>s
-// flattened, <referencePlace>/<referenceTransition> resolved; labels in
-// <text> (PNML 2009) or <value> (older files); <name> optional; arc weight in
-// <inscription> (default 1); <initialMarking> (default 0). Graphics and other
-// tools' <toolspecific> elements are ignored.
+// Accepted: ISO place/transition nets (type .../grammar/ptnet, with or
+// without the PNML namespace or a prefix), ProM's and pm4py's pnmlcoremodel,
+// WoPeD's ptNetb, PIPE's files; <place>, <transition>, <arc> anywhere under
+// <net> (WoPeD puts them there, without a page), nested <page>s flattened,
+// <referencePlace>/<referenceTransition> resolved (chains too); labels in
+// <text> (PNML 2009) or <value> (older files, PIPE's "Default,1"); <name>
+// optional; arc weight in <inscription> (default 1); <initialMarking>
+// (default 0); arcs in any order; any encoding the XML declaration names.
+// Graphics and other tools' <toolspecific> elements are ignored.
+// Refused with the reason: high-level and symmetric nets, coloured PIPE nets,
+// inhibitor, reset and other special arcs, TAPAAL's native format, ids used
+// twice.
 //
 // The arbiter's annotations, in <toolspecific tool="beft" version="1">:
 //   on a transition:  <expert>NAME</expert>        the expert it fires
@@ -40,9 +47,18 @@ class NetError : public std::runtime_error {
   std::vector<std::string> problems_;
 };
 
+struct PnmlReadOptions {
+  // Which <net> of a file that holds several; "" reads the first (and says so).
+  std::string net_id;
+  // true (the arbiter): what makes the net no schedule is an error. false
+  // (analysis of any P/T net): it goes to Net::schedule_problems instead.
+  bool schedule = true;
+};
+
 // Throws NetError (also when the file cannot be read).
-Net readPnmlFile(const std::string& path);
+Net readPnmlFile(const std::string& path, const PnmlReadOptions& options = {});
 // The same from text; display_name stands for the file name in messages.
-Net readPnmlString(const std::string& text, const std::string& display_name);
+Net readPnmlString(const std::string& text, const std::string& display_name,
+                   const PnmlReadOptions& options = {});
 
 }  // namespace beft::arbiter

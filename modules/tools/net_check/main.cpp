@@ -1,182 +1,123 @@
-// beft-net-check: explores a Petri net's reachable states and says whether
-// the arbiter can run it: 1-safe, no dead transition, the tick end reachable
-// from every reachable state. Run as `./beft net check FILE.pnml`.
+// beft-net-check: analyses any place/transition net in PNML (bounded, k-safe,
+// deadlocks with a firing sequence, dead transitions, reversible) and, when
+// the net is annotated as an arbiter schedule, whether the arbiter can run it.
+// Run as `./beft net check FILE.pnml`.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <optional>
 #include <string>
 
+#include "analysis_report.hpp"
 #include "command_line.hpp"
+#include "net_analysis.hpp"
 #include "pnml_reader.hpp"
 #include "reachability.hpp"
+#include "schedule_report.hpp"
 
 namespace {
 
 using namespace beft::arbiter;
-
-constexpr size_t kTraceHead = 24;  // a long trace shows its start and its end
-constexpr size_t kTraceTail = 8;
-
-void printTrace(const ReachableState& state) {
-  std::string trace;
-  const size_t n = state.trace.size();
-  for (size_t i = 0; i < n; ++i) {
-    if (n > kTraceHead + kTraceTail && i == kTraceHead) {
-      trace += ", ... " + std::to_string(n - kTraceHead - kTraceTail) + " more steps ...";
-      i = n - kTraceTail - 1;
-      continue;
-    }
-    trace += (trace.empty() ? "" : ", ") + state.trace[i];
-  }
-  std::printf("      reached by: %s\n", trace.empty() ? "(the initial marking)" : trace.c_str());
-}
-
-void printSummary(const Net& net, const std::string& path) {
-  size_t silent = 0;
-  for (const auto& t : net.transitions) silent += t.silent() ? 1 : 0;
-  const auto experts = net.experts();
-  std::printf("net '%s' (%s): %zu places, %zu transitions: %zu fire an expert, %zu silent\n",
-              net.id.c_str(), path.c_str(), net.places.size(), net.transitions.size(),
-              net.transitions.size() - silent, silent);
-  std::printf("tick transition: %s\n", net.transitions[net.tick_transition].id.c_str());
-  std::string list;
-  for (const auto& name : experts) {
-    std::string level;
-    for (const auto& t : net.transitions)
-      if (t.expert == name && !t.level.empty()) level = t.level;
-    list += (list.empty() ? "" : ", ") + name + (level.empty() ? "" : " (" + level + ")");
-  }
-  std::printf("experts (%zu): %s\n", experts.size(), list.c_str());
-}
-
-void printSafety(const Net& net, const ReachabilityReport& report) {
-  if (report.unbounded) {
-    std::printf("bounded: NO, place '%s' grows without limit: %s covers an earlier marking\n",
-                net.places[report.growing_place].id.c_str(),
-                describeState(net, *report.unbounded_witness).c_str());
-    printTrace(*report.unbounded_witness);
-  }
-  if (report.unbounded) {
-    std::printf("1-safe: NO (unbounded)\n");
-  } else if (report.safe) {
-    std::printf("1-safe: %s\n", report.complete ? "yes" : "unknown (exploration incomplete)");
-  } else {
-    std::printf("1-safe: NO\n");
-    std::printf("      place '%s' holds %d tokens in: %s\n", net.places[report.unsafe_place].id.c_str(),
-                report.unsafe_witness->tokens[report.unsafe_place],
-                describeState(net, *report.unsafe_witness).c_str());
-    printTrace(*report.unsafe_witness);
-  }
-
-}
-
-void printDeadTransitions(const Net& net, const ReachabilityReport& report) {
-  if (!report.complete) {
-    std::printf("dead transitions: unknown (exploration incomplete); %zu not fired in the part explored\n",
-                report.dead_transitions.size());
-  } else if (report.dead_transitions.empty()) {
-    std::printf("dead transitions: none\n");
-  } else {
-    std::printf("dead transitions: %zu\n", report.dead_transitions.size());
-    for (int t : report.dead_transitions) {
-      const Transition& transition = net.transitions[t];
-      std::printf("      %s:%d: %s%s can never fire\n", net.file.c_str(), transition.line,
-                  transition.id.c_str(),
-                  transition.silent() ? "" : (" (" + transition.expert + ")").c_str());
-    }
-  }
-
-}
-
-void printDeadlocks(const Net& net, const ReachabilityReport& report) {
-  if (report.num_deadlocks == 0) {
-    std::printf("deadlock markings: none\n");
-  } else {
-    std::printf("deadlock markings: %zu (nothing enabled, nothing running)\n", report.num_deadlocks);
-    for (const auto& state : report.deadlock_witnesses) {
-      std::printf("      %s\n", describeState(net, state).c_str());
-      printTrace(state);
-    }
-  }
-
-}
-
-void printTickEnd(const Net& net, const ReachabilityReport& report) {
-  if (!report.complete) {
-    std::printf("tick end reachable from every reachable marking: unknown (exploration incomplete)\n");
-  } else if (report.num_states_without_tick_end == 0) {
-    std::printf("tick end reachable from every reachable marking: yes\n");
-  } else {
-    std::printf("tick end reachable from every reachable marking: NO (%zu markings cannot reach it)\n",
-                report.num_states_without_tick_end);
-    std::printf("      for example: %s\n", describeState(net, *report.no_tick_end_witness).c_str());
-    printTrace(*report.no_tick_end_witness);
-  }
-
-}
-
-// The last line and the exit code: 0 when 1-safe and live, 1 with the reasons.
-int printVerdict(const ReachabilityReport& report, const ReachabilityOptions& options) {
-  if (report.ok()) {
-    std::printf("result: OK, 1-safe and live\n");
-    return 0;
-  }
-  std::string reasons;
-  const auto add = [&reasons](const std::string& r) { reasons += (reasons.empty() ? "" : "; ") + r; };
-  if (report.unbounded) add("unbounded");
-  else if (!report.complete) add("exploration incomplete (more than " + std::to_string(options.max_states) + " states)");
-  if (!report.safe && !report.unbounded) add("not 1-safe");
-  if (report.complete && !report.dead_transitions.empty())
-    add(std::to_string(report.dead_transitions.size()) + " dead transition(s)");
-  if (report.num_deadlocks > 0) add(std::to_string(report.num_deadlocks) + " deadlock marking(s)");
-  if (report.num_states_without_tick_end > 0) add("the tick end is not always reachable");
-  std::printf("result: NOT OK: %s\n", reasons.c_str());
-  return 1;
-}
+namespace report = beft::net_check;
 
 struct Options {
   std::string path;
-  ReachabilityOptions reachability;
+  std::string net_id;
+  size_t max_markings = 1000000;
+  bool json = false;
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
-      "Checks a PNML net for the arbiter: explores every reachable state (an expert transition\n"
-      "is start + end, so concurrent firings are explored in every order; an expert runs one\n"
-      "firing at a time) and reports the number of reachable markings, whether the net is\n"
-      "1-safe, dead transitions, deadlock markings, and whether the end of the tick (the tick\n"
-      "transition enabled) is reachable from every reachable marking.\n"
-      "Exit 0: 1-safe and live; 1: not (the reasons are printed); 2: the file does not parse.",
+      "Analyses a place/transition net in PNML, as written by any editor (ISO PNML, ProM, pm4py,\n"
+      "WoPeD, PIPE): its reachable markings under the standard firing rule, whether it is bounded\n"
+      "(with a firing sequence that can repeat for ever when not), the most tokens a place holds\n"
+      "(k-safe, 1-safe), a reachable deadlock with the shortest firing sequence to it, dead\n"
+      "transitions, and whether the initial marking is reachable again from every marking.\n"
+      "When the net carries the arbiter's annotations (<toolspecific tool=\"beft\">), the BEFT\n"
+      "checks follow: every transition an expert or silent, one tick transition, and, in the\n"
+      "arbiter's model (an expert transition is start + end), 1-safe, no dead transition and the\n"
+      "tick end reachable from every reachable marking.\n"
+      "Exit 0: analysed (and, for a schedule, the arbiter can run it); 1: a schedule the arbiter\n"
+      "cannot run (the reasons are printed); 2: the file is not a readable P/T net.",
       "beft-net-check");
   app.add_option("net", o.path, "PNML file")->required();
-  app.add_option("--max-states", o.reachability.max_states, "stop exploring after this many states")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--net-id", o.net_id, "the <net> to read when the file holds several (default: the first)");
+  app.add_option("--max-markings,--max-states", o.max_markings,
+                 "stop the search after this many markings and say what was learned so far")
+      ->capture_default_str()
+      ->check(CLI::Range(size_t{1}, size_t{200000000}));
+  app.add_flag("--json", o.json, "print one JSON object instead of text");
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 }
 
+struct ScheduleVerdict {
+  bool checked = false;  // annotated and free of annotation problems
+  ReachabilityReport report;
+};
+
+nlohmann::json scheduleJson(const Net& net, const ScheduleVerdict& verdict) {
+  if (!net.annotated) return nullptr;
+  nlohmann::json json;
+  json["problems"] = net.schedule_problems;
+  if (verdict.checked) {
+    json["states"] = verdict.report.num_states;
+    json["complete"] = verdict.report.complete;
+    json["safe"] = verdict.report.safe && !verdict.report.unbounded;
+    json["live"] = verdict.report.live();
+    json["ok"] = verdict.report.ok();
+  } else {
+    json["ok"] = false;
+  }
+  return json;
+}
+
 int check(const Options& o) {
+  PnmlReadOptions read_options;
+  read_options.net_id = o.net_id;
+  read_options.schedule = false;
   Net net;
   try {
-    net = readPnmlFile(o.path);
+    net = readPnmlFile(o.path, read_options);
   } catch (const NetError& e) {
     for (const auto& problem : e.problems()) std::fprintf(stderr, "%s\n", problem.c_str());
     return 2;
   }
+  NetAnalysisOptions analysis_options;
+  analysis_options.max_markings = o.max_markings;
+  const NetAnalysis analysis = analyseNet(net, analysis_options);
+
+  ReachabilityOptions schedule_options;
+  schedule_options.max_states = o.max_markings;
+  ScheduleVerdict schedule;
+  schedule.checked = net.annotated && net.schedule_problems.empty();
+  if (schedule.checked) schedule.report = exploreReachability(net, schedule_options);
+  const int exit_code = !net.annotated ? 0 : schedule.checked && schedule.report.ok() ? 0 : 1;
+
+  if (o.json) {
+    nlohmann::json json = report::analysisJson(net, analysis);
+    json["schedule"] = scheduleJson(net, schedule);
+    std::printf("%s\n", json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+    return exit_code;
+  }
+  std::printf("net '%s' (%s): %zu places, %zu transitions, %zu arcs\n", net.id.c_str(), o.path.c_str(),
+              net.places.size(), net.transitions.size(), net.arcCount());
   for (const auto& warning : net.warnings) std::printf("warning: %s\n", warning.c_str());
-  printSummary(net, o.path);
-  const ReachabilityReport report = exploreReachability(net, o.reachability);
-  std::printf("reachable markings: %zu (places and firings in flight; %zu distinct markings of the places)%s\n",
-              report.num_states, report.num_place_markings,
-              report.complete    ? ""
-              : report.unbounded ? " -- exploration stopped: the net is unbounded, results are partial"
-                                 : " -- exploration stopped at --max-states, results are partial");
-  printSafety(net, report);
-  printDeadTransitions(net, report);
-  printDeadlocks(net, report);
-  printTickEnd(net, report);
-  return printVerdict(report, o.reachability);
+  report::printAnalysis(net, analysis, analysis_options);
+  if (!net.annotated) {
+    std::printf("BEFT schedule: not annotated (no <toolspecific tool=\"beft\">); `./beft net annotate` makes one\n");
+    return exit_code;
+  }
+  std::printf("BEFT schedule checks (an expert transition is start + end; an expert runs one firing at a time):\n");
+  if (!schedule.checked) {
+    for (const auto& problem : net.schedule_problems) std::printf("  %s\n", problem.c_str());
+    std::printf("result: NOT OK: %zu problem(s) with the annotations\n", net.schedule_problems.size());
+    return exit_code;
+  }
+  report::printScheduleSummary(net, o.path);
+  report::printScheduleChecks(net, schedule.report, schedule_options);
+  return exit_code;
 }
 
 }  // namespace

@@ -261,7 +261,7 @@ TEST(PnmlReader, ReportsMalformedXmlAndWrongDocuments) {
   auto lines = baseLines();
   const std::string text = "<pnml>\n<net id=\"n\" type=\"http://www.pnml.org/version-2009/grammar/symmetricnet\">\n" +
                            [&] { std::string s; for (auto& l : lines) s += l + "\n"; return s; }() + "</net>\n</pnml>\n";
-  expectOneProblem(text, 2, "is not a P/T net");
+  expectOneProblem(text, 2, "is a high-level net, not a place/transition net");
 }
 
 TEST(PnmlReader, ReportsEveryProblemAtOnce) {
