@@ -460,7 +460,7 @@ class PnmlReader {
     int policy_line = annotation->GetLineNum();
     FiringPolicy& policy = transition.policy;
     for (const XMLElement* c = annotation->FirstChildElement(); c; c = c->NextSiblingElement()) {
-      const std::string option = c->Name();
+      const std::string option = localName(c->Name());
       const std::string text = trim(c->GetText());
       if (!seen.insert(option).second) {
         scheduleProblem(c->GetLineNum(), "<" + option + "> given twice in transition '" + id + "'");

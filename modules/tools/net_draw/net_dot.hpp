@@ -1,0 +1,24 @@
+// A Petri net as a Graphviz graph: places as circles with their tokens,
+// transitions as boxes with the expert they fire (silent ones as bars, the
+// tick doubled), arcs with their weight when above 1.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "petri_net.hpp"
+
+namespace beft::net_draw {
+
+// A marking to draw instead of the initial one, e.g. a run's last MARKING.
+struct ShownMarking {
+  std::map<std::string, int> tokens;  // place id -> tokens; places not listed hold none
+  std::vector<std::string> running;   // experts firing at that moment
+  std::string caption;                // "run 5cb3..., tick 299, step 3000: done tasks"
+};
+
+std::string netToDot(const arbiter::Net& net, const std::optional<ShownMarking>& marking);
+
+}  // namespace beft::net_draw
