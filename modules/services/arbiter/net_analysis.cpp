@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <random>
 
 #include "coverability.hpp"
 #include "state_store.hpp"
@@ -49,6 +50,7 @@ class Explorer {
       result_.reversible = initialReachableFromAll();
     } else {
       decideByCoverability();
+      if (!result_.deadlock) huntDeadlockByRandomWalks();
       // A deadlock other than the initial marking never leads back to it.
       if (result_.deadlock.value_or(false) && result_.deadlock_marking != net_.initialMarking())
         result_.reversible = false;
@@ -63,8 +65,42 @@ class Explorer {
   }
 
  private:
+  // When the search could not finish, a deadlock may lie deeper than it
+  // went: seeded random firing sequences (the same every run) look for one.
+  // A deadlock found this way is real, its trace is just not the shortest.
+  void huntDeadlockByRandomWalks() {
+    std::mt19937_64 random(options_.walk_seed);
+    const size_t steps_per_walk = std::max<size_t>(1000, options_.max_markings / 1000);
+    size_t steps_left = options_.max_markings;
+    std::vector<int> enabled, trace;
+    while (steps_left > 0) {
+      Marking marking = net_.initialMarking();
+      trace.clear();
+      for (size_t step = 0; step < steps_per_walk && steps_left > 0; ++step, --steps_left) {
+        enabled.clear();
+        for (size_t t = 0; t < net_.transitions.size(); ++t)
+          if (isEnabled(net_.transitions[t], marking)) enabled.push_back(static_cast<int>(t));
+        if (enabled.empty()) {
+          result_.deadlock = true;
+          result_.deadlock_trace = trace;
+          result_.deadlock_marking = marking;
+          result_.deadlock_by_random_walk = true;
+          return;
+        }
+        const int t = enabled[std::uniform_int_distribution<size_t>(0, enabled.size() - 1)(random)];
+        consumeInputs(net_.transitions[t], marking);
+        produceOutputs(net_.transitions[t], marking);
+        result_.fired[t] = true;
+        trace.push_back(t);
+        if (std::any_of(marking.begin(), marking.end(), [](int tokens) { return tokens > kTokenCeiling; })) break;
+      }
+    }
+  }
+
   void decideByCoverability() {
-    const Coverability graph = coverabilityGraph(net_, options_.max_markings);
+    // A tenth of the budget: the graph is small when places grow (omega
+    // folds them), and as large as the search when they do not.
+    const Coverability graph = coverabilityGraph(net_, std::max<size_t>(1000, options_.max_markings / 10));
     result_.coverability_nodes = graph.nodes;
     if (!graph.complete) return;
     result_.place_bounds = graph.max_tokens;

@@ -10,11 +10,14 @@
 // adding M' - M; after such a proof the search goes on for a hundredth of
 // its budget, to find deadlocks near the start, and stops. The search stops
 // at max_markings; when it did not complete, Karp and Miller's coverability
-// graph (coverability.hpp) decides the bound of every place and which
-// transitions can fire. What neither could decide is "unknown".
+// graph (coverability.hpp; a tenth of the budget) decides the bound of every place and which
+// transitions can fire, and seeded random firing sequences (as many steps as
+// the search's budget) look for a deadlock deeper than the search went.
+// What none of them could decide is "unknown".
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -24,6 +27,7 @@ namespace beft::arbiter {
 
 struct NetAnalysisOptions {
   size_t max_markings = 1000000;  // the search stops there (complete = false)
+  uint64_t walk_seed = 1;         // of the random walks that hunt a deadlock when the search stops
 };
 
 struct NetAnalysis {
@@ -56,6 +60,7 @@ struct NetAnalysis {
   std::optional<bool> deadlock;
   std::vector<int> deadlock_trace;  // transition indices
   Marking deadlock_marking;
+  bool deadlock_by_random_walk = false;  // found past the search: a real trace, maybe not the shortest
 
   std::vector<bool> fired;  // per transition: fired somewhere in the part explored
   // Transitions that can never fire, when known (the complete search, or

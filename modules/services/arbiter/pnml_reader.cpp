@@ -305,7 +305,13 @@ class PnmlReader {
   void readContainer(const XMLElement& container) {
     for (const XMLElement* e = container.FirstChildElement(); e; e = e->NextSiblingElement()) {
       const char* name = e->Name();
-      if (isName(name, "page")) {
+      if (isName(name, "page") && firstChild(*e, "net")) {
+        // WoPeD keeps a subprocess as a page holding a <net> of its own,
+        // with the id of the transition it refines: that transition stands
+        // for it here.
+        net_.warnings.push_back(net_.file + ":" + std::to_string(e->GetLineNum()) + ": WoPeD subprocess '" +
+                                trim(e->Attribute("id")) + "' is read as its transition; its inner net is not expanded");
+      } else if (isName(name, "page")) {
         declareId(*e, NodeKind::Other, -1);
         readContainer(*e);
       } else if (isName(name, "place")) {

@@ -99,9 +99,11 @@ void printAnalysis(const Net& net, const NetAnalysis& analysis, const NetAnalysi
   printBoundedness(net, analysis);
   std::printf("  1-safe: %s\n", yesNoUnknown(analysis.safe()));
   if (analysis.deadlock.value_or(false)) {
-    std::printf("  deadlock: YES, %s reached by %s\n", describeMarking(net, analysis.deadlock_marking).c_str(),
+    std::printf("  deadlock: YES, %s reached by %s%s\n", describeMarking(net, analysis.deadlock_marking).c_str(),
                 analysis.deadlock_trace.empty() ? "(the initial marking)"
-                                                : traceText(net, analysis.deadlock_trace).c_str());
+                                                : traceText(net, analysis.deadlock_trace).c_str(),
+                analysis.deadlock_by_random_walk ? " (found by a random walk past the search: maybe not the shortest)"
+                                                 : "");
   } else {
     std::printf("  deadlock: %s\n", analysis.deadlock ? "none" : "unknown (none found in the part explored)");
   }
@@ -138,7 +140,10 @@ nlohmann::json analysisJson(const Net& net, const NetAnalysis& analysis) {
   json["safe"] = orNull(analysis.safe());
   json["deadlock"] = orNull(analysis.deadlock);
   json["deadlock_trace"] = analysis.deadlock.value_or(false) ? idsOf(net, analysis.deadlock_trace) : nlohmann::json(nullptr);
-  if (analysis.deadlock.value_or(false)) json["deadlock_marking"] = markingJson(net, analysis.deadlock_marking);
+  if (analysis.deadlock.value_or(false)) {
+    json["deadlock_marking"] = markingJson(net, analysis.deadlock_marking);
+    json["deadlock_trace_shortest"] = !analysis.deadlock_by_random_walk;
+  }
   const auto& dead = analysis.dead_transitions;
   json["dead_transitions"] = dead ? idsOf(net, *dead) : nlohmann::json(nullptr);
   if (!dead) {

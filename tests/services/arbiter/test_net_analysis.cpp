@@ -167,6 +167,27 @@ TEST(NetAnalysis, CoverabilityGivesTheBoundsTheSearchCouldNotReach) {
   EXPECT_EQ(partial.reversible, std::nullopt);
 }
 
+TEST(NetAnalysis, RandomWalksFindADeadlockDeeperThanTheSearchWent) {
+  // emit adds one to out for ever; stop needs 300 of them, then nothing is enabled.
+  const Net net = netOf(R"(<place id="on"><initialMarking><text>1</text></initialMarking></place>
+      <place id="out"/><place id="off"/><transition id="emit"/><transition id="stop"/>
+      <arc id="1" source="on" target="emit"/><arc id="2" source="emit" target="on"/>
+      <arc id="3" source="emit" target="out"/><arc id="4" source="on" target="stop"/>
+      <arc id="5" source="out" target="stop"><inscription><text>300</text></inscription></arc>
+      <arc id="6" source="stop" target="off"/>)");
+  NetAnalysisOptions options;
+  options.max_markings = 3000;
+  const NetAnalysis analysis = analyseNet(net, options);
+  EXPECT_LT(analysis.markings, 300u);  // the search stopped short of the deadlock
+  ASSERT_EQ(analysis.deadlock, true);
+  EXPECT_TRUE(analysis.deadlock_by_random_walk);
+  ASSERT_GE(analysis.deadlock_trace.size(), 301u);
+  EXPECT_EQ(net.transitions[analysis.deadlock_trace.back()].id, "stop");
+  EXPECT_EQ(analysis.deadlock_marking[net.placeIndex("off")], 1);
+  // Seeded: the same trace every time.
+  EXPECT_EQ(analyseNet(net, options).deadlock_trace, analysis.deadlock_trace);
+}
+
 TEST(Coverability, RaisesToOmegaOnlyWhatGrows) {
   const Net net = anyNet("generator.pnml");
   const Coverability graph = coverabilityGraph(net, 1000);
