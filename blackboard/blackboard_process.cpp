@@ -36,7 +36,6 @@ class Traffic {
     const std::string channel(message.channel);
     if (channel == channels::kBlackboardQuery) {
       beft::bb_query_t query{};
-      const int size = static_cast<int>(message.size);
       if (wire::decodeFrom(channel, message.data, message.size, query)) onQuery(query);
       return;
     }
