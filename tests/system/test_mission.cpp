@@ -13,6 +13,7 @@
 #include <beft/hypotheses_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
+#include <beft/task_command_t.hpp>
 
 #include "model.hpp"
 #include "run_support.hpp"
@@ -55,18 +56,6 @@ const nlohmann::json* victimEntry(const nlohmann::json& report, const std::strin
 }
 
 double seconds(int64_t utime) { return static_cast<double>(utime) * 1e-6; }
-
-// Weight of one object in every DYNAMIC_WEIGHTS message: (sim time, weight).
-std::vector<std::pair<double, double>> weightsOf(const std::vector<LoggedMessage>& log, const std::string& id) {
-  std::vector<std::pair<double, double>> series;
-  std::set<int64_t> seen_ticks;
-  for (const auto& dw : messagesOn<beft::dynamic_weights_t>(log, "DYNAMIC_WEIGHTS")) {
-    if (!seen_ticks.insert(dw.tick).second) continue;
-    for (const auto& w : dw.weights)
-      if (w.object_id == id) series.emplace_back(seconds(dw.utime), w.weight);
-  }
-  return series;
-}
 
 }  // namespace
 
@@ -130,47 +119,80 @@ TEST(MissionDecoy, RadioIsFalsifiedAndTheRealVictimReported) {
   EXPECT_NE(victimEntry(run.report, "victim"), nullptr) << run.report.dump(2);
 }
 
-TEST(MissionFig4, WeightsFollowThePapersFigure4) {
+// The spec's curves for fig4_dw (spec/model.md, "Dynamic weighting, eq. 4"),
+// written out per phase of the scenario, independently of the DW code: the
+// weight of each object at DW step k (t = 0.5 k s).
+double curveSpan(int t) { return std::log(std::min(t, 10)) / (2 * std::log(100.0)); }
+
+double expectedWalker(int k) {
+  if (k == 0) return 0.5;                                    // newly heard
+  if (k < 20) return std::max(0.0, 0.25 - curveSpan(k));     // walking: falls from 0.25 to 0
+  if (k < 50) return 0.75 + curveSpan(k - 19);               // yelling from 10 s: jumps to 0.75, rises to 1
+  if (k < 60) return 0.75 - curveSpan(k - 49);               // stops at 25 s: from 0.75 to the residual 0.5
+  return 0.75 + curveSpan(k - 59);                           // endangered by the spreading fire from 30 s
+}
+
+double expectedFire(int k) {
+  if (k == 0) return 0.5;
+  if (k < 60) return 0.5 - curveSpan(k);                     // burning: falls from 0.5 to 0.25
+  return 0.75 + curveSpan(k - 59);                           // spreading from 30 s
+}
+
+TEST(MissionFig4, EveryWeightAtEveryStepIsTheSpecsCurve) {
   // The whole 45 s: the exploration expert keeps watching after everything is settled.
   const auto& run = missionRun("fig4_dw", "--set stop_when_done=0");
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
-  const auto walker = weightsOf(run.log, "walker");
-  const auto fire = weightsOf(run.log, "fire1");
-  ASSERT_FALSE(walker.empty());
-  ASSERT_FALSE(fire.empty());
-  auto at = [](const std::vector<std::pair<double, double>>& series, double t) {
-    double w = NAN;
-    for (const auto& [time, weight] : series)
-      if (time <= t + 1e-9) w = weight;
-    return w;
-  };
-  auto maxIn = [](const std::vector<std::pair<double, double>>& series, double from, double to) {
-    double m = -1;
-    for (const auto& [time, weight] : series)
-      if (time >= from && time <= to) m = std::max(m, weight);
-    return m;
-  };
-  // Before yelling: a congruent walker, weight at or below the residual.
-  EXPECT_LE(at(walker, 9.5), 0.5);
-  // Yelling starts at 10 s: jumps to 0.75 (within two DW steps of the pipeline), then >= 0.99
-  // within T_max = 10 steps of 0.5 s.
-  EXPECT_GE(at(walker, 11.0), 0.75 - 1e-9);
-  EXPECT_GE(maxIn(walker, 10.0, 16.0), 0.99);
-  // Stops at 25 s: falls back to the residual 0.5.
-  EXPECT_NEAR(at(walker, 33.0), 0.5, 0.01);
-  // The fire spreads at 30 s: its weight rises.
-  EXPECT_GT(at(fire, 44.0), at(fire, 29.5) + 0.2);
-  // The turn-to reflex: the head faces the walker soon after it starts yelling.
-  const auto states = messagesOn<beft::robot_state_t>(run.log, "ROBOT_STATE");
-  const auto objects = messagesOn<beft::scene_objects_t>(run.log, "GT_OBJECTS");
+  std::map<int64_t, beft::dynamic_weights_t> by_tick;
+  for (const auto& message : messagesOn<beft::dynamic_weights_t>(run.log, "DYNAMIC_WEIGHTS")) by_tick[message.tick] = message;
+  std::map<int64_t, beft::robot_state_t> robot_at;
+  for (const auto& state : messagesOn<beft::robot_state_t>(run.log, "ROBOT_STATE")) robot_at[state.tick] = state;
   std::map<int64_t, std::pair<double, double>> walker_at;
-  for (const auto& gt : objects)
+  for (const auto& gt : messagesOn<beft::scene_objects_t>(run.log, "GT_OBJECTS"))
     for (const auto& o : gt.objects)
       if (o.id == "walker") walker_at[gt.tick] = {o.x, o.y};
+
+  int steps_checked = 0, directions_checked = 0;
+  for (int k = 0; k < 90; ++k) {
+    const auto found = by_tick.find(5 * k);  // DW steps every 0.5 s = 5 ticks
+    if (found == by_tick.end()) continue;    // a datagram the recorder lost
+    std::map<std::string, double> weight;
+    for (const auto& w : found->second.weights) weight[w.object_id] = w.weight;
+    ASSERT_EQ(weight.size(), 2u) << "step " << k;
+    EXPECT_NEAR(weight["walker"], expectedWalker(k), 1e-9) << "walker at t = " << 0.5 * k << " s";
+    EXPECT_NEAR(weight["fire1"], expectedFire(k), 1e-9) << "fire1 at t = " << 0.5 * k << " s";
+    ++steps_checked;
+    // DW's viewing direction: towards the heaviest object at or above 0.75
+    // (the walker wins the ties with the fire: first heard), none below.
+    const double direction = found->second.viewing_direction;
+    const bool walker_leads = expectedWalker(k) >= 0.75 - 1e-12;
+    if (!walker_leads) {
+      EXPECT_TRUE(std::isnan(direction)) << "t = " << 0.5 * k << " s: " << direction;
+    } else if (robot_at.count(5 * k) && walker_at.count(5 * k)) {
+      const auto& robot = robot_at[5 * k];
+      const auto [wx, wy] = walker_at[5 * k];
+      EXPECT_NEAR(direction, std::atan2(wy - robot.y, wx - robot.x) * 180 / M_PI, 1e-6) << "t = " << 0.5 * k << " s";
+      ++directions_checked;
+    }
+  }
+  EXPECT_GE(steps_checked, 80);
+  EXPECT_GE(directions_checked, 40);
+
+  // The turn-to reflexes, in order: the walker's yell, then at 30 s the
+  // endangered walker and the spreading fire, in the order first heard.
+  std::vector<std::pair<std::string, double>> reflexes;
+  for (const auto& command : messagesOn<beft::task_command_t>(run.log, "TASK_COMMAND"))
+    if (command.command == beft::task_command_t::COMMAND_PUSH && command.task.origin == "dw")
+      reflexes.emplace_back(command.task.object_id, seconds(command.utime));
+  ASSERT_EQ(reflexes.size(), 3u);
+  EXPECT_EQ(reflexes[0], std::make_pair(std::string("walker"), 10.0));
+  EXPECT_EQ(reflexes[1], std::make_pair(std::string("walker"), 30.0));
+  EXPECT_EQ(reflexes[2], std::make_pair(std::string("fire1"), 30.0));
+
+  // The head follows: it faces the walker soon after the yell.
   double best = 180;
-  for (const auto& s : states) {
-    if (seconds(s.utime) < 10.0 || seconds(s.utime) > 16.0 || !walker_at.count(s.tick)) continue;
-    const auto [wx, wy] = walker_at[s.tick];
+  for (const auto& [tick, s] : robot_at) {
+    if (seconds(s.utime) < 10.0 || seconds(s.utime) > 16.0 || !walker_at.count(tick)) continue;
+    const auto [wx, wy] = walker_at[tick];
     best = std::min(best, std::abs(beft::model::azimuth(s.x, s.y, s.yaw + s.head_yaw, wx, wy)));
   }
   EXPECT_LT(best, 10.0) << "the head never faced the yelling walker";

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 
 #include <beft/dynamic_weights_t.hpp>
@@ -29,10 +30,14 @@ std::string DwExpert::description() const {
          "dw_step_s of simulated time. A new object starts at 0.5; its congruency c comes from its "
          "estimated label (best category of LABELS_ACOUSTIC) and activity (AUDIO) through the "
          "scenario's congruency table (GT_OBJECTS). The weight rises while c >= 0.75 and falls "
-         "otherwise; a higher c makes it jump to c; a silent object keeps its weight. Turn-to "
+         "otherwise; only a change to an incongruent c jumps (to 0.75); once incongruent, an object "
+         "falls back to residual_floor and no lower, heard or silent; a silent object that never was "
+         "incongruent keeps its weight; a person within danger_radius of a spreading fire is "
+         "endangered (c = 0.75). Turn-to "
          "reflex: when a weight crosses reflex_threshold upward, a look_at task for that object is "
          "pushed on TASK_COMMAND with priority reflex_priority. Publishes DYNAMIC_WEIGHTS every tick "
-         "(every weight, the viewing direction from ROBOT_STATE, the current task from TASK_STACK).";
+         "(every weight, the viewing direction it computes: towards the object with the highest weight "
+         "at or above reflex_threshold, NaN when none; the current task from TASK_STACK).";
 }
 
 void DwExpert::declareParameters(DeclaredParameters& parameters) {
@@ -49,10 +54,19 @@ void DwExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("reevaluate", parameters_.reevaluate, "re-evaluate c after more than T_max unchanged steps");
   parameters.declare("min_perceptibility", min_perceptibility_, 0, 1,
                      "an object counts as heard when its a_P is at least this");
+  parameters.declare("residual_floor", parameters_.residual_floor, 0, 1,
+                     "the lowest weight of an object that has been incongruent");
+  parameters.declare("danger_radius", parameters_.danger_radius, 0, DeclaredParameters::kNoLimit,
+                     "a person this close to a hazard (centre to centre) is endangered: c = incongruent_c; 0: off [m]");
+  parameters.declare("danger_labels", danger_labels_, "labels of hazards, comma-separated (a hazard's pair has c >= incongruent_c)");
 }
 
 void DwExpert::onStartUp() {
   step_us_ = static_cast<int64_t>(std::llround(step_s_ * 1e6));
+  parameters_.danger_labels.clear();
+  std::stringstream labels(danger_labels_);
+  for (std::string label; std::getline(labels, label, ',');)
+    if (!label.empty()) parameters_.danger_labels.push_back(label);
   CongruencyTable table;
   table.setDefaultValue(default_c_);
   dw_ = std::make_unique<DynamicWeighting>(parameters_, table);
@@ -124,6 +138,17 @@ std::vector<Stimulus> DwExpert::stimuliOf(const acoustic_percepts_t& audio, cons
   return stimuli;
 }
 
+// The direction DW would have the head face: towards the object with the
+// highest weight at or above the reflex threshold; NaN when there is none.
+double DwExpert::viewingDirection(const robot_state_t* robot) const {
+  const ObjectWeight* heaviest = nullptr;
+  for (const auto& object : dw_->objects())
+    if (object.weight >= parameters_.reflex_threshold && (!heaviest || object.weight > heaviest->weight))
+      heaviest = &object;
+  if (heaviest == nullptr || robot == nullptr) return std::nan("");
+  return model::wrapDegrees(std::atan2(heaviest->y - robot->y, heaviest->x - robot->x) * 180.0 / M_PI);
+}
+
 expert::Outcome DwExpert::fire(const expert::Firing& firing, expert::Output& out) {
   if (!dw_) startUp();
   const auto* scene = scene_.ofTick(firing.tick);
@@ -169,7 +194,7 @@ expert::Outcome DwExpert::fire(const expert::Firing& firing, expert::Output& out
   message.tick = firing.tick;
   const auto* robot = robot_.ofTick(firing.tick);
   if (robot == nullptr) robot = robot_.latest();
-  message.viewing_direction = robot ? model::wrapDegrees(robot->yaw + robot->head_yaw) : 0.0;
+  message.viewing_direction = viewingDirection(robot);
   const auto* stack = stack_.latest();
   if (stack != nullptr && !stack->tasks.empty()) {
     const auto top = tasks::fromMessage(stack->tasks.front());

@@ -35,6 +35,7 @@ class DwExpert : public expert::Expert {
 
  private:
   bool stepDue(int64_t utime) const;
+  double viewingDirection(const robot_state_t* robot) const;
   std::vector<Stimulus> stimuliOf(const acoustic_percepts_t& audio, const labels_t* labels) const;
   void adoptTable(const scene_objects_t& scene);
 
@@ -45,6 +46,7 @@ class DwExpert : public expert::Expert {
   bool reflex_enabled_ = true;
   double default_c_ = 0.5;
   double min_perceptibility_ = 0.0;
+  std::string danger_labels_ = "fire";  // comma-separated
   std::unique_ptr<DynamicWeighting> dw_;
   int64_t last_step_index_ = std::numeric_limits<int64_t>::min();
   std::vector<std::tuple<std::string, std::string, double>> adopted_entries_;  // scenario table in use

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,13 @@ struct DwParameters {
   double incongruent_c = 0.75;    // a pair with c >= this rises, others fall
   double reflex_threshold = 0.75; // upward crossing triggers the turn-to reflex
   bool reevaluate = true;         // re-evaluate c after T_max unchanged steps
+  double residual_floor = 0.5;    // the lowest weight of an object that has been incongruent
+  // Danger between objects: a person within danger_radius (centre to centre)
+  // of a hazard (a label of danger_labels whose current pair has c >=
+  // incongruent_c) is endangered: its c is incongruent_c. 0 turns it off.
+  double danger_radius = 3.0;     // [m]
+  std::vector<std::string> danger_labels{"fire"};
+  std::string endangered_label = "person";
 };
 
 // One object sounding at a DW step, as the acoustic experts estimate it.
@@ -60,6 +68,8 @@ struct ObjectWeight {
   double x = 0, y = 0;          // the last position estimate [m]
   bool sounding = false;        // sounding at the last DW step
   int64_t first_step = 0;       // DW step index when first heard
+  bool was_incongruent = false; // once incongruent, residual_floor is its floor
+  bool endangered = false;      // near a hazard at the last DW step
 };
 
 // An upward crossing of the reflex threshold at one DW step.
@@ -77,9 +87,10 @@ class DynamicWeighting {
   const CongruencyTable& table() const { return table_; }
   const DwParameters& parameters() const { return parameters_; }
 
-  // One DW step with every object that sounds now. Objects not listed keep
-  // their weight and curve. Returns the reflex triggers of this step, in the
-  // order the objects were first heard.
+  // One DW step with every object that sounds now. An object not listed has
+  // fallen silent: one that was never incongruent keeps its weight; an
+  // incongruent one falls to the residual (spec/model.md). Returns the reflex
+  // triggers of this step, in the order the objects were first heard.
   std::vector<ReflexTrigger> step(const std::vector<Stimulus>& sounding);
 
   // Every object ever heard, in the order first heard.
@@ -88,9 +99,13 @@ class DynamicWeighting {
   int64_t stepsTaken() const { return steps_taken_; }
 
  private:
-  // Advances one known, sounding object by one step; returns its new weight.
-  double advance(ObjectWeight& object, double pair_c) const;
+  // Advances one known object by one step: heard with congruency c, or
+  // silent (nullopt); returns its new weight.
+  double advance(ObjectWeight& object, std::optional<double> c) const;
   double curve(const ObjectWeight& object) const;
+  void startCurve(ObjectWeight& object, double c) const;
+  // Marks every person near a hazard, from the last pair and position heard.
+  void markEndangered();
 
   DwParameters parameters_;
   model::Parameters curve_parameters_;

@@ -94,7 +94,9 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
       // Expected pixels only change with the camera or the objects' shapes and poses.
       if (expected_pose_.width == 0 || !samePose(*instance, expected_pose_) || !sameSolids(*scene, expected_scene_)) {
         const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
-        expected_ = ray_caster_.expectedPixelsPerObject(solids, camera::cameraOfFrame(*instance));
+        // Counted without the image's borders and range: what falls outside
+        // them counts as occluded (spec/model.md, O_v).
+        expected_ = ray_caster_.expectedPixelsPerObject(solids, camera::withoutViewLimits(camera::cameraOfFrame(*instance)));
         expected_pose_ = poseOf(*instance);
         expected_scene_ = *scene;
       }

@@ -1,9 +1,10 @@
 // Visual occlusion O_v (spec/model.md) of every object with a visual:
 //   O_v = 100 * (1 - visible / expected)
 // visible: the object's pixels in the instance image; expected: the pixels
-// it would cover from the same camera if nothing were in front of it
-// (camera::expectedPixelsPerObject). Out of view or beyond range
-// (expected = 0) gives 100.
+// it would cover from the same camera if nothing were in front of it and the
+// image had no borders and no range (camera::expectedPixelsPerObject with
+// camera::withoutViewLimits), so the part of an object outside the field of
+// view or beyond range counts as occluded. Out of view gives 100.
 #pragma once
 
 #include <vector>

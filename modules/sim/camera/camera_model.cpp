@@ -25,6 +25,16 @@ CameraFrame::CameraFrame(const Camera& camera) {
   cy = 0.5 * camera.intrinsics.height;
 }
 
+Camera withoutViewLimits(const Camera& camera, int widen) {
+  Camera wide = camera;
+  const double half_tan = std::tan(0.5 * camera.intrinsics.fov_deg * kDegToRad) * widen;
+  wide.intrinsics.fov_deg = 2.0 * std::atan(half_tan) / kDegToRad;
+  wide.intrinsics.width = camera.intrinsics.width * widen;
+  wide.intrinsics.height = camera.intrinsics.height * widen;
+  wide.intrinsics.range = 1e5;  // beyond any world: range no longer limits
+  return wide;
+}
+
 double focalLengthPx(double fov_deg, int width) {
   return 0.5 * width / std::tan(0.5 * fov_deg * kDegToRad);
 }

@@ -74,6 +74,14 @@ Camera cameraOfFrame(const beft::camera_frame_t& frame);
 // Focal length in pixels for a horizontal field of view and image width.
 double focalLengthPx(double fov_deg, int width);
 
+// The camera an object's whole silhouette is counted with, for the
+// denominator of the visual occlusion O_v (spec/model.md: the part of an
+// object outside the field of view or beyond range counts as occluded): the
+// same optical centre, axis and focal length in pixels, an image plane
+// `widen` times as wide and high (centred on the same axis), and no range
+// limit within the world.
+Camera withoutViewLimits(const Camera& camera, int widen = 3);
+
 // Ray through the centre of pixel (u, v), from the optical centre; forward
 // component 1 (see above). Pixels outside the image are allowed.
 Eigen::Vector3d pixelRay(const Camera& camera, int u, int v);

@@ -181,6 +181,11 @@ void plotHeading(cv::Mat& image, const std::vector<std::pair<double, double>>& s
   std::vector<cv::Point> segment;
   double previous = 0;
   for (const auto& [t, heading] : series) {
+    if (!std::isfinite(heading)) {  // no direction (DW: no weight at the reflex threshold): a gap
+      if (!segment.empty()) cv::polylines(image, segment, false, color, thickness, cv::LINE_AA);
+      segment.clear();
+      continue;
+    }
     const double h = wrap180(heading);
     if (!segment.empty() && std::abs(h - previous) > 180) {  // wrapped around: break the line
       cv::polylines(image, segment, false, color, thickness, cv::LINE_AA);
@@ -189,7 +194,7 @@ void plotHeading(cv::Mat& image, const std::vector<std::pair<double, double>>& s
     segment.emplace_back(axes.x(t), y(h));
     previous = h;
   }
-  cv::polylines(image, segment, false, color, thickness, cv::LINE_AA);
+  if (!segment.empty()) cv::polylines(image, segment, false, color, thickness, cv::LINE_AA);
 }
 
 void drawViewingDirection(cv::Mat& image, const RunRecord& record, const Axes& axes) {
@@ -229,8 +234,13 @@ cv::Mat renderWeights(const RunRecord& record) {
   drawWeights(image, record, axes, objects);
   drawTaskStrip(image, record, axes);
   drawViewingDirection(image, record, axes);
+  // The paper's Fig. 4 names the viewing direction DW computes in its title.
+  std::string direction = "none";
+  for (const auto& sample : record.weights)
+    if (std::isfinite(sample.viewing_direction)) direction = draw::formatNumber(wrap180(sample.viewing_direction), 0) + " deg";
   const std::string title = "Dynamic weighting (eq. 4)" +
-                            (record.scenario_name.empty() ? std::string() : ": " + record.scenario_name);
+                            (record.scenario_name.empty() ? std::string() : ": " + record.scenario_name) +
+                            ", DW viewing direction at the end: " + direction;
   draw::text(image, title, {kLeft, 34}, 0.75, draw::kBlack, 2);
   return image;
 }

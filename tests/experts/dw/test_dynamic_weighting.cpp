@@ -144,22 +144,41 @@ TEST(DynamicWeighting, BurningFireFallsThenRisesWhenItSpreads) {
   EXPECT_NEAR(previous, 1.0, 1e-12);
 }
 
-TEST(DynamicWeighting, SilentObjectKeepsItsWeightAndCurve) {
+TEST(DynamicWeighting, ASilentObjectThatWasNeverIncongruentKeepsItsWeightAndCurve) {
   DynamicWeighting dw;
-  const auto yelling = std::vector<Stimulus>{heard("victim", "person", "yelling")};
-  stepTimes(dw, 4, yelling);  // t = 3
-  const ObjectWeight before = *dw.find("victim");
+  const auto burning = std::vector<Stimulus>{heard("fire", "fire", "burning")};
+  stepTimes(dw, 4, burning);  // t = 3 on the falling curve of c = 0.5
+  const ObjectWeight before = *dw.find("fire");
   stepTimes(dw, 20, {});
-  const ObjectWeight* after = dw.find("victim");
+  const ObjectWeight* after = dw.find("fire");
   EXPECT_FALSE(after->sounding);
   EXPECT_DOUBLE_EQ(after->weight, before.weight);
   EXPECT_EQ(after->step, before.step);
-  dw.step(yelling);  // continues the same curve at t = 4
-  EXPECT_EQ(dw.find("victim")->step, 4);
-  EXPECT_NEAR(weightOf(dw, "victim"), 0.75 + std::log(4.0) / (2 * std::log(100.0)), 1e-12);
+  dw.step(burning);  // continues the same curve at t = 4
+  EXPECT_EQ(dw.find("fire")->step, 4);
+  EXPECT_NEAR(weightOf(dw, "fire"), 0.5 - std::log(4.0) / (2 * std::log(100.0)), 1e-12);
 }
 
-TEST(DynamicWeighting, CongruencyIsReevaluatedAfterTmaxUnchangedSteps) {
+// spec/model.md: "the incongruent stimulus stops (... or silence)": a falling
+// curve with c kept at 0.75 to the residual 0.5, and it stays there.
+TEST(DynamicWeighting, AYellingPersonWhoFallsSilentFallsToTheResidualAndStays) {
+  DynamicWeighting dw;
+  const auto yelling = std::vector<Stimulus>{heard("victim", "person", "yelling")};
+  stepTimes(dw, 11, yelling);  // new, then t = 1..10: 1.0
+  ASSERT_NEAR(weightOf(dw, "victim"), 1.0, 1e-12);
+  dw.step({});
+  EXPECT_DOUBLE_EQ(weightOf(dw, "victim"), 0.75);
+  EXPECT_FALSE(dw.find("victim")->rising);
+  for (int t = 2; t <= 10; ++t) {
+    dw.step({});
+    EXPECT_NEAR(weightOf(dw, "victim"), 0.75 - std::log(t) / (2 * std::log(100.0)), 1e-12) << "t = " << t;
+  }
+  EXPECT_NEAR(weightOf(dw, "victim"), 0.5, 1e-12);
+  stepTimes(dw, 50, {});
+  EXPECT_NEAR(weightOf(dw, "victim"), 0.5, 1e-12);
+}
+
+TEST(DynamicWeighting, OnceIncongruentAnObjectNeverFallsBelowTheResidual) {
   DynamicWeighting dw;
   const auto yelling = std::vector<Stimulus>{heard("walker", "person", "yelling")};
   const auto walking = std::vector<Stimulus>{heard("walker", "person", "walking")};
@@ -168,14 +187,43 @@ TEST(DynamicWeighting, CongruencyIsReevaluatedAfterTmaxUnchangedSteps) {
   ASSERT_NEAR(weightOf(dw, "walker"), 0.5, 1e-12);
   // Unchanged at 0.5 for T_max more steps: c is still the kept 0.75.
   stepTimes(dw, 10, walking);
-  EXPECT_NEAR(weightOf(dw, "walker"), 0.5, 1e-12);
   EXPECT_DOUBLE_EQ(dw.find("walker")->congruency, 0.75);
   EXPECT_EQ(dw.find("walker")->unchanged_steps, 10);
-  // More than T_max unchanged: re-evaluated to walking's c = 0.25, a new falling curve.
+  // More than T_max unchanged: re-evaluated to walking's c = 0.25, a new
+  // falling curve, held at the floor.
   dw.step(walking);
   EXPECT_DOUBLE_EQ(dw.find("walker")->congruency, 0.25);
   EXPECT_EQ(dw.find("walker")->step, 1);
-  EXPECT_DOUBLE_EQ(weightOf(dw, "walker"), 0.25);
+  EXPECT_DOUBLE_EQ(weightOf(dw, "walker"), 0.5);
+  stepTimes(dw, 40, walking);
+  EXPECT_DOUBLE_EQ(weightOf(dw, "walker"), 0.5);
+  // Yelling again jumps to 0.75 and fires the reflex again.
+  const auto triggers = dw.step(yelling);
+  EXPECT_DOUBLE_EQ(weightOf(dw, "walker"), 0.75);
+  ASSERT_EQ(triggers.size(), 1u);
+  EXPECT_DOUBLE_EQ(triggers[0].weight_before, 0.5);
+}
+
+TEST(DynamicWeighting, ANovelCongruentSoundNeverJumpsUp) {
+  DynamicWeighting dw;
+  const auto idle = std::vector<Stimulus>{heard("car", "car", "idle")};           // c = 0.25
+  const auto ringing = std::vector<Stimulus>{heard("car", "siren", "ringing")};   // c = 0.5
+  stepTimes(dw, 3, idle);  // 0.5, then 0.25, then falling
+  const double before = weightOf(dw, "car");
+  ASSERT_LT(before, 0.25);
+  const auto triggers = stepTimes(dw, 1, ringing);
+  EXPECT_TRUE(triggers.empty());
+  EXPECT_DOUBLE_EQ(dw.find("car")->congruency, 0.5);
+  EXPECT_FALSE(dw.find("car")->rising);
+  EXPECT_DOUBLE_EQ(weightOf(dw, "car"), before) << "a falling curve from 0.5 may not lift the weight";
+  // The new curve (0.5 down to 0.25) stays above the weight: it never lifts it.
+  stepTimes(dw, 20, ringing);
+  EXPECT_DOUBLE_EQ(weightOf(dw, "car"), before);
+  // A novel pair whose curve lies lower takes the weight down at once.
+  stepTimes(dw, 1, {heard("car", "person", "walking")});  // c = 0.25: its curve starts at 0.25
+  EXPECT_DOUBLE_EQ(weightOf(dw, "car"), before);
+  stepTimes(dw, 9, {heard("car", "person", "walking")});
+  EXPECT_NEAR(weightOf(dw, "car"), 0.0, 1e-12);
 }
 
 TEST(DynamicWeighting, ReevaluationKeepsASaturatedCurveWhoseCongruencyIsUnchanged) {
@@ -217,6 +265,45 @@ TEST(DynamicWeighting, TriggersComeInFirstHeardOrder) {
   EXPECT_EQ(triggers[1].object_id, "b");
   ASSERT_EQ(dw.objects().size(), 2u);
   EXPECT_EQ(dw.objects()[0].object_id, "a");
+}
+
+Stimulus at(const std::string& id, const std::string& label, const std::string& activity, double x, double y) {
+  Stimulus s = heard(id, label, activity);
+  s.x = x;
+  s.y = y;
+  return s;
+}
+
+TEST(DynamicWeighting, APersonNearASpreadingFireIsEndangered) {
+  DynamicWeighting dw;
+  // A walking person 5 m from a burning fire: congruent, falling.
+  stepTimes(dw, 3, {at("walker", "person", "walking", 0, 0), at("fire", "fire", "burning", 5, 0)});
+  ASSERT_LT(weightOf(dw, "walker"), 0.25);
+  // The fire spreads: a hazard, but 5 m is beyond the 3 m radius.
+  auto triggers = dw.step({at("walker", "person", "walking", 0, 0), at("fire", "fire", "spreading", 5, 0)});
+  EXPECT_FALSE(dw.find("walker")->endangered);
+  ASSERT_EQ(triggers.size(), 1u);
+  EXPECT_EQ(triggers[0].object_id, "fire");
+  // The walker comes within 3 m: endangered, c = 0.75 whatever it does.
+  triggers = dw.step({at("walker", "person", "walking", 2.5, 0), at("fire", "fire", "spreading", 5, 0)});
+  EXPECT_TRUE(dw.find("walker")->endangered);
+  EXPECT_DOUBLE_EQ(weightOf(dw, "walker"), 0.75);
+  EXPECT_TRUE(dw.find("walker")->rising);
+  ASSERT_EQ(triggers.size(), 1u);
+  EXPECT_EQ(triggers[0].object_id, "walker");
+  // Away again: the danger is over, it falls with c kept to the residual.
+  dw.step({at("walker", "person", "walking", -2, 0), at("fire", "fire", "spreading", 5, 0)});
+  EXPECT_FALSE(dw.find("walker")->endangered);
+  EXPECT_FALSE(dw.find("walker")->rising);
+  stepTimes(dw, 30, {at("walker", "person", "walking", -2, 0), at("fire", "fire", "spreading", 5, 0)});
+  EXPECT_DOUBLE_EQ(weightOf(dw, "walker"), 0.5);
+  // A burning (harmless) fire endangers nobody; radius 0 turns danger off.
+  DwParameters off;
+  off.danger_radius = 0;
+  DynamicWeighting no_danger(off);
+  stepTimes(no_danger, 3, {at("w", "person", "walking", 0, 0), at("f", "fire", "spreading", 1, 0)});
+  EXPECT_FALSE(no_danger.find("w")->endangered);
+  EXPECT_LT(weightOf(no_danger, "w"), 0.25);
 }
 
 TEST(DynamicWeighting, StepIndexIsAFloorOfSimulatedTime) {

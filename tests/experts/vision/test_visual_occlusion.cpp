@@ -105,3 +105,48 @@ TEST(VisualOcclusion, PersonHalfBehindABoxInARenderedFrame) {
       camera::expectedPixelsPerObject(alone_solids, camera::cameraOfFrame(messages.instance)));
   EXPECT_DOUBLE_EQ(find(clear, "victim")->occlusion, 0.0);
 }
+
+// spec/model.md: the part of an object outside the field of view counts as
+// occluded. A person whose axis lies on the image's left border (45 degrees
+// off the axis of a 90 degree camera) is half out of view.
+TEST(VisualOcclusion, AnObjectAcrossTheImageBorderIsPartlyOccluded) {
+  const auto s = test::scene({test::cylinderObject("edge", "person", 10, 15, 0.5, 1.8),
+                              test::cylinderObject("inside", "person", 10, 5, 0.5, 1.8),
+                              test::cylinderObject("outside", "person", 5, 15, 0.5, 1.8)});
+  const auto solids = camera::SceneGeometry::fromMessage(s);
+  camera::Camera cam;
+  cam.pose = {0, 5, 1.6, 0, 0};
+  camera::CameraMessages messages;
+  camera::encodeCameraMessages(camera::renderFrame(solids, cam), 0, 0, {"edge", "inside", "outside"}, messages);
+  const auto out = vision::estimateVisualOcclusion(
+      s, vision::countVisiblePixels(messages.instance, s),
+      camera::expectedPixelsPerObject(solids, camera::withoutViewLimits(camera::cameraOfFrame(messages.instance))));
+  const auto* edge = find(out, "edge");
+  ASSERT_NE(edge, nullptr);
+  EXPECT_GT(edge->visible_pixels, 0);
+  EXPECT_NEAR(edge->occlusion, 50.0, 8.0) << edge->visible_pixels << " of " << edge->expected_pixels;
+  EXPECT_DOUBLE_EQ(find(out, "inside")->occlusion, 0.0);
+  // Wholly out of view: counted in the wider view, seen nowhere.
+  EXPECT_GT(find(out, "outside")->expected_pixels, 0);
+  EXPECT_DOUBLE_EQ(find(out, "outside")->occlusion, 100.0);
+  // Counted within the image only (as before), the edge person would pass as unoccluded.
+  const auto clipped = vision::estimateVisualOcclusion(
+      s, vision::countVisiblePixels(messages.instance, s),
+      camera::expectedPixelsPerObject(solids, camera::cameraOfFrame(messages.instance)));
+  EXPECT_LT(find(clipped, "edge")->occlusion, 1.0);
+}
+
+TEST(VisualOcclusion, TheWiderViewKeepsEveryPixelRayOfTheImage) {
+  camera::Camera cam;
+  cam.pose = {1, 2, 1.6, 30, -5};
+  const camera::Camera wide = camera::withoutViewLimits(cam);
+  EXPECT_EQ(wide.intrinsics.width, 3 * cam.intrinsics.width);
+  EXPECT_EQ(wide.intrinsics.height, 3 * cam.intrinsics.height);
+  // Pixel (u, v) of the image is pixel (u + w, v + h) of the wider one: the same ray.
+  for (const auto& [u, v] : {std::pair{0, 0}, {17, 93}, {159, 119}}) {
+    const Eigen::Vector3d a = camera::pixelRay(cam, u, v);
+    const Eigen::Vector3d b = camera::pixelRay(wide, u + cam.intrinsics.width, v + cam.intrinsics.height);
+    EXPECT_LT((a.normalized() - b.normalized()).norm(), 1e-12) << u << ", " << v;
+  }
+}
+

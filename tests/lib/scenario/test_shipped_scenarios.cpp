@@ -328,16 +328,29 @@ TEST(ShippedScenarios, Fig4WalkerYellsThenCalmsDownAndTheFireSpreads) {
   EXPECT_LT(s.congruencyOf("fire", "burning"), s.congruencyOf("fire", "spreading"));
 
   // Everything stays in view from the start: both objects, and every waypoint
-  // of the walker's path.
+  // of the walker's and the creeping fire's paths.
   EXPECT_TRUE(visibleFromStart(s, fire));
-  ASSERT_EQ(s.paths.size(), 1u);
+  ASSERT_EQ(s.paths.size(), 2u);
   EXPECT_EQ(s.paths[0].object, "walker");
-  for (const Waypoint& waypoint : s.paths[0].waypoints) {
-    Object at = walker;
-    at.x = waypoint.x;
-    at.y = waypoint.y;
-    EXPECT_TRUE(visibleFromStart(s, at)) << "waypoint (" << waypoint.x << ", " << waypoint.y << ")";
+  EXPECT_EQ(s.paths[1].object, "fire1");
+  for (const auto& path : s.paths) {
+    for (const Waypoint& waypoint : path.waypoints) {
+      Object at = path.object == "walker" ? walker : fire;
+      at.x = waypoint.x;
+      at.y = waypoint.y;
+      EXPECT_TRUE(visibleFromStart(s, at)) << path.object << " waypoint (" << waypoint.x << ", " << waypoint.y << ")";
+    }
   }
+  // Where the fire stops, at 30 s when it spreads, the whole of the walker's
+  // path is within the 3 m danger radius: the walker is endangered from then on.
+  const Waypoint& fire_end = s.paths[1].waypoints.back();
+  for (const Waypoint& waypoint : s.paths[0].waypoints)
+    EXPECT_LE(std::hypot(waypoint.x - fire_end.x, waypoint.y - fire_end.y), 3.0);
+  double fire_path_m = 0;
+  for (size_t i = 1; i < s.paths[1].waypoints.size(); ++i)
+    fire_path_m += std::hypot(s.paths[1].waypoints[i].x - s.paths[1].waypoints[i - 1].x,
+                              s.paths[1].waypoints[i].y - s.paths[1].waypoints[i - 1].y);
+  EXPECT_LE(fire_path_m / s.paths[1].speed, 30.0) << "the fire is in place when it spreads";
 }
 
 TEST(ShippedScenarios, PeekNeedsADetourToSeeTheOnlyVictim) {
