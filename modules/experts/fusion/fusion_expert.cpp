@@ -11,7 +11,7 @@ std::string FusionExpert::description() const {
   return "High-level fusion expert: one hypothesis per object perceived by vision or audition, "
          "kept for the rest of the run. Fused category confidences are the "
          "perceptibility-weighted average of the best visual and the best acoustic evidence so "
-         "far; position from vision when it has seen the object, else the acoustic estimate; "
+         "far (fusion_rule); position from vision when it has seen the object, else the acoustic estimate; "
          "seen (v_P >= seen_threshold), heard, seen_as / heard_as, verified (seen as what it was "
          "heard as) or falsified (seen as something else). Reads GT_OBJECTS, VISION, "
          "LABELS_VISUAL, AUDIO and LABELS_ACOUSTIC of the fired tick (a missing modality is "
@@ -22,7 +22,13 @@ std::string FusionExpert::description() const {
 
 void FusionExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("seen_threshold", config_.seen_threshold, 0, 1,
-                     "visual perceptibility v_P from which an object counts as seen");
+                     "visual perceptibility v_P from which an object counts as seen (this project's rule; "
+                     "g_d(10 m) = 0.5, so at 0.5 nothing beyond 10 m counts as seen)");
+  parameters.declareChoice("fusion_rule", config_.rule,
+                           {{"weighted_mean", FusionRule::WeightedMean}, {"mean", FusionRule::Mean},
+                            {"clearest", FusionRule::Clearest}},
+                           "how visual and acoustic label confidences combine (this project's rule): "
+                           "perceptibility-weighted mean, plain mean, or the clearer modality's");
 }
 
 void FusionExpert::onStartUp() { fusion_ = HypothesisFusion(config_); }

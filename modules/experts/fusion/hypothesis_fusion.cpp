@@ -153,7 +153,11 @@ hypothesis_t HypothesisFusion::toMessage(const Hypothesis& h, const std::vector<
   if (h.restored && ((h.seen && !h.visual) || (h.heard && !h.acoustic) || sources.empty()))
     sources.push_back(&*h.restored);
   double total = 0;
-  for (const Evidence* e : sources) total += e->perceptibility;
+  const Evidence* clearest = nullptr;
+  for (const Evidence* e : sources) {
+    total += e->perceptibility;
+    if (!clearest || e->perceptibility > clearest->perceptibility) clearest = e;
+  }
   out.categories = categories;
   for (const auto& category : categories) {
     double weighted = 0, plain = 0;
@@ -162,8 +166,11 @@ hypothesis_t HypothesisFusion::toMessage(const Hypothesis& h, const std::vector<
       weighted += e->perceptibility * confidence;
       plain += confidence;
     }
-    // Perceived only at zero perceptibility: the plain average.
-    const double fused = total > 0 ? weighted / total : sources.empty() ? 0.5 : plain / sources.size();
+    const double mean = sources.empty() ? 0.5 : plain / sources.size();
+    double fused = mean;
+    if (config_.rule == FusionRule::WeightedMean && total > 0) fused = weighted / total;  // else: the plain mean
+    if (config_.rule == FusionRule::Clearest && clearest)
+      fused = confidenceOf(clearest->categories, clearest->confidence, category);
     out.fused.push_back(fused);
   }
   out.num_categories = static_cast<int32_t>(out.categories.size());

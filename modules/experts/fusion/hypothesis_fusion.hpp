@@ -40,8 +40,20 @@
 
 namespace beft::fusion {
 
+// How the best visual and the best acoustic evidence combine into one
+// confidence per category. The paper leaves it open; these are this
+// project's rules (README: "Fusion: this project's rules").
+enum class FusionRule {
+  WeightedMean,  // sum(P_m * L_m) / sum(P_m): the clearer modality counts more (default)
+  Mean,          // the plain mean of the modalities' L_m
+  Clearest,      // the L_m of the modality with the highest perceptibility
+};
+
 struct FusionConfig {
-  double seen_threshold = 0.5;  // v_P from which an object counts as seen [0..1]
+  // v_P from which an object counts as seen [0..1]. With v_P = g_d * v_o,
+  // g_d(10 m) = 0.5: at the default nothing beyond 10 m counts as seen.
+  double seen_threshold = 0.5;
+  FusionRule rule = FusionRule::WeightedMean;
 };
 
 // One tick's inputs; any of the percept inputs may be missing (null) when

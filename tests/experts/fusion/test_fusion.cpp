@@ -193,6 +193,55 @@ TEST(Fusion, SeenThresholdIsAParameter) {
   EXPECT_FALSE(out.hypotheses[0].verified);
 }
 
+// The radio case: seen as a siren at v_P = 0.8, heard as a person at a_P = 0.6.
+hypothesis_t fusedRadio(fusion::FusionRule rule) {
+  const std::vector<scene_object_t> objects = {
+      test::sounding(test::cylinderObject("radio", "siren", 9, 9, 0.3, 1.0), "ringing")};
+  fusion::FusionConfig config;
+  config.rule = rule;
+  fusion::HypothesisFusion fusion(config);
+  fusion.update(Tick(objects, 0).seen("radio", "siren", 80, 0.8).heard("radio", "person", 0.6, 9, 9).evidence());
+  return fusion.hypotheses(0, 0).hypotheses.at(0);
+}
+
+TEST(Fusion, EachFusionRuleGivesItsNumbers) {
+  // L_j of eq. 3 for each modality, as the labellers compute them.
+  const double seen_siren = model::labelConfidences(kCategories, "siren", 0.8)[2];
+  const double seen_person = model::labelConfidences(kCategories, "siren", 0.8)[0];
+  const double heard_siren = model::labelConfidences(kCategories, "person", 0.6)[2];
+  const double heard_person = model::labelConfidences(kCategories, "person", 0.6)[0];
+  ASSERT_EQ(kCategories[0], "person");
+  ASSERT_EQ(kCategories[2], "siren");
+
+  const auto weighted = fusedRadio(fusion::FusionRule::WeightedMean);
+  EXPECT_NEAR(fusedOf(weighted, "siren"), (0.8 * seen_siren + 0.6 * heard_siren) / 1.4, 1e-12);
+  EXPECT_NEAR(fusedOf(weighted, "person"), (0.8 * seen_person + 0.6 * heard_person) / 1.4, 1e-12);
+  EXPECT_EQ(weighted.best_category, "siren");
+
+  const auto mean = fusedRadio(fusion::FusionRule::Mean);
+  EXPECT_NEAR(fusedOf(mean, "siren"), (seen_siren + heard_siren) / 2, 1e-12);
+  EXPECT_NEAR(fusedOf(mean, "person"), (seen_person + heard_person) / 2, 1e-12);
+
+  const auto clearest = fusedRadio(fusion::FusionRule::Clearest);
+  EXPECT_NEAR(fusedOf(clearest, "siren"), seen_siren, 1e-12);
+  EXPECT_NEAR(fusedOf(clearest, "person"), seen_person, 1e-12);
+  // The verdicts do not depend on the rule: seen as a siren, heard as a person.
+  for (const auto& h : {weighted, mean, clearest}) EXPECT_TRUE(h.falsified);
+}
+
+TEST(Fusion, SeenNeedsTheThresholdSoNothingBeyondTenMetresCountsAtTheDefault) {
+  EXPECT_DOUBLE_EQ(fusion::FusionConfig{}.seen_threshold, 0.5);
+  // v_P = g_d(d) * v_o: unoccluded at 10 m is exactly 0.5, a little further is less.
+  EXPECT_NEAR(model::distanceDegradation(10.0), 0.5, 1e-12);
+  const std::vector<scene_object_t> objects = {
+      test::sounding(test::cylinderObject("v", "person", 9, 9, 0.3, 1.8), "yelling")};
+  for (const auto& [v_p, seen] : {std::pair{0.5, true}, {model::distanceDegradation(10.2), false}, {0.49999, false}}) {
+    fusion::HypothesisFusion fusion;
+    fusion.update(Tick(objects, 0).seen("v", "person", 60, v_p).heard("v", "person", 0.5, 9, 9).evidence());
+    EXPECT_EQ(fusion.hypotheses(0, 0).hypotheses.at(0).seen, seen) << "v_P = " << v_p;
+  }
+}
+
 TEST(Fusion, FusesWhatArrivedWhenAModalityIsMissing) {
   const std::vector<scene_object_t> objects = {
       test::sounding(test::cylinderObject("v", "person", 9, 9, 0.3, 1.8), "yelling")};
