@@ -89,6 +89,11 @@ TEST(PnmlCorpus, EveryFileIsReadOrRefusedAndAgreesWithWhatWasPublished) {
     ++analysed;
     EXPECT_GE(analysis.markings, 1u);
     checkTraces(net, analysis);
+    if (expect.contains("markings")) {
+      ++with_published_property;
+      EXPECT_TRUE(analysis.complete);
+      EXPECT_EQ(analysis.markings, expect["markings"].get<size_t>());
+    }
     if (expect.contains("deadlock")) {
       ++with_published_property;
       EXPECT_EQ(analysis.deadlock, expect["deadlock"].get<bool>());
