@@ -11,11 +11,13 @@ std::unique_ptr<Planner> makePlanner(const std::string& name, const PlannerConfi
   std::unique_ptr<Planner> planner;
   if (name == "astar") {
     planner = std::make_unique<AStarPlanner>();
-  } else if (name == "pf" || name == "pf-geodesic") {
+  } else if (name == "pf" || name == "pf-paper" || name == "pf-geodesic") {
     PotentialFieldParams params;
     if (name == "pf-geodesic") params.target = TargetPotential::Geodesic;
     for (const auto& [key, value] : config.pf_params) params.set(key, value);
-    planner = std::make_unique<PotentialFieldPlanner>(params);
+    auto pf = std::make_unique<PotentialFieldPlanner>(params);
+    if (name == "pf-paper") pf->setName(name);
+    planner = std::move(pf);
   } else if (name.rfind("ompl:", 0) == 0) {
     planner = std::make_unique<OmplPlanner>(name.substr(5));
   } else {
@@ -24,11 +26,12 @@ std::unique_ptr<Planner> makePlanner(const std::string& name, const PlannerConfi
     throw std::invalid_argument("unknown planner '" + name + "' (known: " + known + ")");
   }
   planner->setSeed(config.seed);
+  planner->setTighten(config.tighten && name != "pf-paper");
   return planner;
 }
 
 std::vector<std::string> plannerNames() {
-  std::vector<std::string> names{"astar", "pf", "pf-geodesic"};
+  std::vector<std::string> names{"astar", "pf", "pf-paper", "pf-geodesic"};
   for (const auto& n : omplPlannerNames()) names.push_back("ompl:" + n);
   return names;
 }

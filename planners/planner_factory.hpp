@@ -20,8 +20,14 @@ struct PlannerConfig {
   uint64_t seed = 1;
   // Potential-field parameters as name=value overrides (PotentialFieldParams::set).
   std::vector<std::pair<std::string, std::string>> pf_params;
+  // The shortening every planner's path gets (tightenPath: sparse, taut
+  // waypoints). "pf-paper" always goes without: the robot traces the
+  // winning particle's path h_W itself, as in the paper.
+  bool tighten = true;
 };
 
+// Names: astar, pf (the paper's fields, its path tightened), pf-paper (the
+// paper's planner as printed: h_W itself), pf-geodesic, ompl:NAME.
 // Throws std::invalid_argument for an unknown name or a bad parameter.
 std::unique_ptr<Planner> makePlanner(const std::string& name, const PlannerConfig& config = {});
 

@@ -102,6 +102,10 @@ std::vector<std::string> PotentialFieldParams::names() {
   return names;
 }
 
+double noiseRms(const PotentialFieldParams& params, long step) {
+  return params.noise * std::exp(-static_cast<double>(step) * params.step / params.noise_decay);
+}
+
 double particleCost(const Path& trace, double straightness_weight) {
   return pathLength(trace) + straightness_weight * totalTurning(resample(trace, 2.0));
 }
@@ -109,6 +113,7 @@ double particleCost(const Path& trace, double straightness_weight) {
 PotentialFieldPlanner::PotentialFieldPlanner(PotentialFieldParams params) : params_(params) {}
 
 std::string PotentialFieldPlanner::name() const {
+  if (!name_.empty()) return name_;
   return params_.target == TargetPotential::Geodesic ? "pf-geodesic" : "pf";
 }
 
@@ -222,8 +227,6 @@ PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index,
   const double keep = std::exp(-1.0 / params_.noise_correlation);
   const double renew = std::sqrt(1.0 - keep * keep);
   Point2 random_drift{rng.unitVariance(), rng.unitVariance()};
-  double noise = params_.noise / std::sqrt(2.0);
-  const double noise_fade = std::exp(-params_.step / params_.noise_decay);  // per step
   const bool geodesic = params_.target == TargetPotential::Geodesic;
   const double force_scale = params_.sigma * std::sqrt(2 * kPi);
   const double max_travel = params_.max_travel * (map_->width() + map_->height());
@@ -244,8 +247,9 @@ PotentialFieldPlanner::ParticleRun PotentialFieldPlanner::runParticle(int index,
       return run;
     }
     random_drift = keep * random_drift + renew * Point2{rng.unitVariance(), rng.unitVariance()};
-    Point2 direction = fieldDirection(p, goal, force_scale, geodesic) + noise * random_drift;
-    noise *= noise_fade;
+    // random_drift has an RMS length of sqrt(2): scaled to noiseRms.
+    Point2 direction =
+        fieldDirection(p, goal, force_scale, geodesic) + (noiseRms(params_, step) / std::sqrt(2.0)) * random_drift;
     const double magnitude = norm(direction);
     if (magnitude > 1) direction = (1 / magnitude) * direction;
 

@@ -74,6 +74,8 @@ class PotentialFieldPlanner : public Planner {
   explicit PotentialFieldPlanner(PotentialFieldParams params = {});
 
   std::string name() const override;
+  // The name it answers under ("pf-paper": the factory's paper mode).
+  void setName(std::string name) { name_ = std::move(name); }
   void setSeed(uint64_t seed) override { seed_ = seed; }
   const PotentialFieldParams& params() const { return params_; }
   // Changes take effect at the next solve; sigma at the next setup.
@@ -107,6 +109,7 @@ class PotentialFieldPlanner : public Planner {
   bool canMove(Point2 from, Point2 to) const;
 
   PotentialFieldParams params_;
+  std::string name_;  // "" for pf / pf-geodesic by the target potential
   uint64_t seed_ = 1;
   cv::Mat potential_;        // M_P
   VectorField obstacle_force_;  // M_F
@@ -116,7 +119,13 @@ class PotentialFieldPlanner : public Planner {
 };
 
 // Winner cost of a particle path: length + weight * turning of the path
-// resampled every 2 cells.
+// resampled every 2 cells. The particle of lowest cost among those that
+// reach the goal wins (the first of equals).
 double particleCost(const Path& trace, double straightness_weight);
+
+// RMS length of the random component at a particle's step t (from 0):
+// noise * exp(-t step / noise_decay): with the defaults, 2.0 falling by 1/e
+// every 100 cells travelled.
+double noiseRms(const PotentialFieldParams& params, long step);
 
 }  // namespace beft::planners

@@ -9,8 +9,8 @@
 
 namespace beft::planners {
 
-cv::Mat renderPlan(const PlanningMap& map, const Path& path, const std::vector<Path>& particles, Point2 start,
-                   Point2 goal, const std::vector<double>& headings_rad, const RenderOptions& options) {
+cv::Mat renderPlans(const PlanningMap& map, const std::vector<DrawnPlan>& plans, const std::vector<Path>& particles,
+                    Point2 goal, const RenderOptions& options) {
   const int w = map.width();
   const int h = map.height();
   const int scale = options.scale > 0 ? options.scale : std::clamp(800 / std::max(w, h), 1, 16);
@@ -40,27 +40,38 @@ cv::Mat renderPlan(const PlanningMap& map, const Path& path, const std::vector<P
     }
     cv::addWeighted(overlay, 0.6, image, 0.4, 0, image);
   }
-  if (path.size() >= 2) {
+  const int dot = std::max(2, scale / 2 + 1);
+  const double arrow = std::max(8.0, 2.5 * scale);
+  for (const DrawnPlan& plan : plans) {
+    const Path& path = plan.path;
+    if (path.size() < 2) continue;
     std::vector<cv::Point> points;
     for (const Point2& p : path) points.push_back(pixel(p));
     cv::polylines(image, points, false, cv::Scalar(30, 30, 220), thickness + 1, cv::LINE_AA);
-    const int dot = std::max(2, scale / 2 + 1);
-    const double arrow = std::max(8.0, 2.5 * scale);
-    for (size_t i = 0; i < path.size(); ++i) {
+    for (size_t i = 0; i < path.size(); i += std::max<size_t>(1, plan.every)) {
+      // The paper's look: white dots, red-and-white arrows for the intended orientation.
       cv::circle(image, points[i], dot, cv::Scalar(255, 255, 255), cv::FILLED, cv::LINE_AA);
       cv::circle(image, points[i], dot, cv::Scalar(30, 30, 220), 1, cv::LINE_AA);
-      if (options.headings && i < headings_rad.size()) {
-        const double dy = options.y_up ? -std::sin(headings_rad[i]) : std::sin(headings_rad[i]);
-        const cv::Point tip(points[i].x + static_cast<int>(std::lround(arrow * std::cos(headings_rad[i]))),
+      if (options.headings && i < plan.headings_rad.size()) {
+        const double heading = plan.headings_rad[i];
+        const double dy = options.y_up ? -std::sin(heading) : std::sin(heading);
+        const cv::Point tip(points[i].x + static_cast<int>(std::lround(arrow * std::cos(heading))),
                             points[i].y + static_cast<int>(std::lround(arrow * dy)));
+        cv::arrowedLine(image, points[i], tip, cv::Scalar(255, 255, 255), 3, cv::LINE_AA, 0, 0.35);
         cv::arrowedLine(image, points[i], tip, cv::Scalar(30, 30, 220), 1, cv::LINE_AA, 0, 0.35);
       }
     }
   }
   const int marker = std::max(4, scale);
-  cv::circle(image, pixel(start), marker, cv::Scalar(40, 170, 40), cv::FILLED, cv::LINE_AA);
+  for (const DrawnPlan& plan : plans)
+    cv::circle(image, pixel(plan.start), marker, cv::Scalar(40, 170, 40), cv::FILLED, cv::LINE_AA);
   cv::circle(image, pixel(goal), marker, cv::Scalar(200, 90, 20), cv::FILLED, cv::LINE_AA);
   return image;
+}
+
+cv::Mat renderPlan(const PlanningMap& map, const Path& path, const std::vector<Path>& particles, Point2 start,
+                   Point2 goal, const std::vector<double>& headings_rad, const RenderOptions& options) {
+  return renderPlans(map, {DrawnPlan{path, headings_rad, start, 1}}, particles, goal, options);
 }
 
 void writePng(const std::string& file, const cv::Mat& image) {

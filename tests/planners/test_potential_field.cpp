@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <memory>
 
@@ -161,6 +163,67 @@ TEST(PotentialFieldParams, SetsByNameAndRefusesNonsense) {
   EXPECT_THROW(p.set("step", "3"), std::invalid_argument);
   EXPECT_THROW(p.set("nonsense", "1"), std::invalid_argument);
   EXPECT_THROW(p.set("target", "manhattan"), std::invalid_argument);
+}
+
+
+TEST(PotentialFieldParams, ThePapersOpenConstantsHaveTheirDefaults) {
+  const PotentialFieldParams p;
+  EXPECT_EQ(p.particles, 100);
+  EXPECT_DOUBLE_EQ(p.sigma, 3.0);
+  EXPECT_DOUBLE_EQ(p.noise, 2.0);
+  EXPECT_DOUBLE_EQ(p.noise_decay, 100.0);
+  EXPECT_DOUBLE_EQ(p.step, 1.0);
+  EXPECT_DOUBLE_EQ(p.target_weight, 1.0);
+  EXPECT_DOUBLE_EQ(p.obstacle_weight, 2.0);
+  EXPECT_DOUBLE_EQ(p.straightness_weight, 2.0);
+  // --help shows the same defaults.
+  const auto names = PotentialFieldParams::names();
+  for (const char* expected : {"sigma=3", "noise=2", "noise_decay=100", "straightness_weight=2", "particles=100"})
+    EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
+}
+
+TEST(PotentialFieldPlanner, TheRandomComponentDecaysByOneOverEEveryHundredCells) {
+  PotentialFieldParams p;
+  EXPECT_DOUBLE_EQ(noiseRms(p, 0), 2.0);
+  EXPECT_NEAR(noiseRms(p, 100), 2.0 / std::exp(1.0), 1e-12);
+  EXPECT_NEAR(noiseRms(p, 300), 2.0 * std::exp(-3.0), 1e-12);
+  p.step = 0.5;  // the decay is per cell travelled, not per step
+  EXPECT_NEAR(noiseRms(p, 200), 2.0 / std::exp(1.0), 1e-12);
+  // Without noise, every particle follows the same field: one trace for all
+  // (and, against the wall, all stuck in the same local minimum).
+  PotentialFieldParams quiet;
+  quiet.noise = 0;
+  quiet.particles = 5;
+  PotentialFieldPlanner planner(quiet);
+  EXPECT_FALSE(plan(planner, simpleWallCase(), 0).success);
+  ASSERT_EQ(planner.particleTraces().size(), 5u);
+  const Path& first = planner.particleTraces().front();
+  ASSERT_GT(first.size(), 2u);
+  for (const auto& trace : planner.particleTraces()) {
+    ASSERT_EQ(trace.size(), first.size());
+    for (size_t i = 0; i < trace.size(); ++i) EXPECT_EQ(distance(trace[i], first[i]), 0.0);
+  }
+}
+
+TEST(PotentialFieldPlanner, TheWinnerWeighsLengthAgainstStraightness) {
+  // Two hand-made particle paths from (0, 0) to (20, 0): a straight one of
+  // 20 cells, and one that weaves 0.2 cells either side of it.
+  const Path straight = {{0, 0}, {20, 0}};
+  Path weaving{{0, 0}};
+  for (int i = 1; i <= 10; ++i) weaving.push_back({2.0 * i - 1, i % 2 ? 0.2 : -0.2});
+  // (Weaving is longer; the weights decide how much its turning adds.)
+  weaving.push_back({20, 0});
+  const double length_straight = pathLength(straight), length_weaving = pathLength(weaving);
+  ASSERT_GT(length_weaving, length_straight);
+  // With the paper's straightness weight 2 the straight path wins by more than its length.
+  EXPECT_LT(particleCost(straight, 2.0), particleCost(weaving, 2.0));
+  EXPECT_NEAR(particleCost(straight, 2.0), 20.0, 1e-9);
+  EXPECT_GT(particleCost(weaving, 2.0) - particleCost(weaving, 0.0), 1.0);
+  // A detour that is straight but long loses to a slightly bent short one.
+  const Path detour = {{0, 0}, {0, 10}, {20, 10}, {20, 0}};
+  const Path bent = {{0, 0}, {10, 1}, {20, 0}};
+  EXPECT_LT(particleCost(bent, 2.0), particleCost(detour, 2.0));
+  EXPECT_NEAR(particleCost(bent, 0.0), pathLength(bent), 1e-12);
 }
 
 }  // namespace
