@@ -11,6 +11,7 @@
 
 #include <beft/dynamic_weights_t.hpp>
 #include <beft/hypotheses_t.hpp>
+#include <beft/plan_result_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 #include <beft/task_command_t.hpp>
@@ -58,6 +59,26 @@ const nlohmann::json* victimEntry(const nlohmann::json& report, const std::strin
 double seconds(int64_t utime) { return static_cast<double>(utime) * 1e-6; }
 
 }  // namespace
+
+TEST(MissionYard, ThePapersPlannerAsPrintedCompletesTheMission) {
+  // pf-paper: the robot traces the winning particle's own path h_W.
+  const auto& run = missionRun("yard", "--planner pf-paper");
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  EXPECT_TRUE(run.report["completed"].get<bool>()) << run.report.dump(2);
+  EXPECT_EQ(run.report["collisions"], 0);
+  EXPECT_NE(victimEntry(run.report, "victim_hidden"), nullptr) << run.report.dump(2);
+  EXPECT_NE(victimEntry(run.report, "victim_seen"), nullptr) << run.report.dump(2);
+  // Its answers are dense: a waypoint per particle step, not a few taut corners.
+  size_t waypoints = 0, answers = 0;
+  for (const auto& result : messagesOn<beft::plan_result_t>(run.log, "PLAN_RESULT")) {
+    if (!result.success) continue;
+    EXPECT_EQ(result.planner, "pf-paper");
+    waypoints += static_cast<size_t>(result.num_waypoints);
+    ++answers;
+  }
+  ASSERT_GT(answers, 0u);
+  EXPECT_GT(waypoints / answers, 20u);
+}
 
 TEST(MissionYard, EveryVictimFoundCloselyAndTheHiddenOneVerifiedWithoutCollision) {
   const auto& run = missionRun("yard");
