@@ -6,6 +6,7 @@
 #include <random>
 
 #include "coverability.hpp"
+#include "state_graph.hpp"
 #include "state_store.hpp"
 
 namespace beft::arbiter {
@@ -186,37 +187,17 @@ class Explorer {
     }
   }
 
-  // Backwards search from the initial marking over the reversed edges.
+  // Backwards from the initial marking: does every marking reach it?
   bool initialReachableFromAll() const {
-    const size_t n = store_.size();
-    std::vector<uint32_t> offsets(n + 1, 0);
-    for (const auto& [from, to] : edges_) ++offsets[to + 1];
-    for (size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
-    std::vector<uint32_t> sources(edges_.size());
-    std::vector<uint32_t> fill(offsets.begin(), offsets.end() - 1);
-    for (const auto& [from, to] : edges_) sources[fill[to]++] = from;
-    std::vector<bool> reaches(n, false);
-    std::vector<uint32_t> stack{0};
-    reaches[0] = true;
-    size_t count = 1;
-    while (!stack.empty()) {
-      const uint32_t at = stack.back();
-      stack.pop_back();
-      for (uint32_t k = offsets[at]; k < offsets[at + 1]; ++k) {
-        if (reaches[sources[k]]) continue;
-        reaches[sources[k]] = true;
-        ++count;
-        stack.push_back(sources[k]);
-      }
-    }
-    return count == n;
+    const std::vector<bool> reaches = reachesAnyOf(store_.size(), edges_, {0});
+    return std::all_of(reaches.begin(), reaches.end(), [](bool r) { return r; });
   }
 
   const Net& net_;
   const NetAnalysisOptions& options_;
   StateStore store_;
   std::vector<Parent> parents_;
-  std::vector<std::pair<uint32_t, uint32_t>> edges_;
+  std::vector<StateEdge> edges_;
   size_t stop_at_;  // markings after which the search stops
   NetAnalysis result_;
 };

@@ -1,10 +1,10 @@
 #include "reachability.hpp"
 
+#include "state_graph.hpp"
 #include "state_store.hpp"
 
 #include <algorithm>
 #include <cstdint>
-#include <deque>
 #include <functional>
 #include <set>
 #include <unordered_set>
@@ -19,9 +19,6 @@ constexpr uint32_t kNoParent = UINT32_MAX;
 
 enum class EdgeKind : uint8_t { Start, End, Silent };
 
-struct Edge {
-  uint32_t from = 0, to = 0;
-};
 
 struct Parent {
   uint32_t state = kNoParent;
@@ -119,7 +116,7 @@ class Explorer {
   void addEdge(size_t from, const std::vector<int32_t>& next, int transition, EdgeKind kind,
                ReachabilityReport& report) {
     const auto [index, inserted] = store_.insert(next);
-    edges_.push_back(Edge{static_cast<uint32_t>(from), index});
+    edges_.push_back(StateEdge{static_cast<uint32_t>(from), index});
     if (!inserted) return;
     parents_.push_back(Parent{static_cast<uint32_t>(from), transition, kind});
     checkSafe(index, report);
@@ -190,32 +187,13 @@ class Explorer {
   // Backwards from every state where the tick transition is enabled.
   void checkTickEnd(ReachabilityReport& report) {
     const size_t n = store_.size();
-    std::vector<uint32_t> offsets(n + 1, 0);
-    for (const auto& edge : edges_) ++offsets[edge.to + 1];
-    for (size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
-    std::vector<uint32_t> sources(edges_.size());
-    std::vector<uint32_t> fill(offsets.begin(), offsets.end() - 1);
-    for (const auto& edge : edges_) sources[fill[edge.to]++] = edge.from;
-
-    std::vector<bool> reaches(n, false);
-    std::deque<uint32_t> queue;
+    std::vector<uint32_t> tick_enabled;
     const Transition& tick = net_.transitions[net_.tick_transition];
     for (size_t i = 0; i < n; ++i) {
       const std::vector<int32_t> state(store_.at(i), store_.at(i) + places_);
-      if (enabled(tick, state)) {
-        reaches[i] = true;
-        queue.push_back(static_cast<uint32_t>(i));
-      }
+      if (enabled(tick, state)) tick_enabled.push_back(static_cast<uint32_t>(i));
     }
-    while (!queue.empty()) {
-      const uint32_t i = queue.front();
-      queue.pop_front();
-      for (uint32_t k = offsets[i]; k < offsets[i + 1]; ++k) {
-        if (reaches[sources[k]]) continue;
-        reaches[sources[k]] = true;
-        queue.push_back(sources[k]);
-      }
-    }
+    const std::vector<bool> reaches = reachesAnyOf(n, edges_, tick_enabled);
     // A partial graph cannot show that no path exists: judge complete ones only.
     if (!report.complete) return;
     for (size_t i = 0; i < n; ++i) {
@@ -229,7 +207,7 @@ class Explorer {
   size_t places_;
   StateStore store_;
   std::vector<Parent> parents_;
-  std::vector<Edge> edges_;
+  std::vector<StateEdge> edges_;
   std::vector<std::vector<int>> same_expert_;
 };
 
