@@ -8,6 +8,7 @@
 #include "potential_field_planner.hpp"
 #include "render.hpp"
 #include "scene_grid.hpp"
+#include "whole_file.hpp"
 
 namespace beft::figure {
 
@@ -41,7 +42,9 @@ Figure3Result drawFigure3(const Figure3Options& options) {
   }
   planners::RenderOptions render;
   render.y_up = true;
-  planners::writePng(options.out, planners::renderPlans(*map, plans, particles, goal, render));
+  const std::string partial = partialPathFor(options.out);
+  planners::writePng(partial, planners::renderPlans(*map, plans, particles, goal, render));
+  commitPartial(partial, options.out);
   return result;
 }
 

@@ -1,11 +1,15 @@
 #include "figure4.hpp"
 
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
+
+#include "whole_file.hpp"
 
 namespace beft::figure {
 
@@ -18,6 +22,8 @@ void drawFigure4(const std::string& run_program, const std::string& scenario_pat
   // The whole 45 s: exploration keeps watching once everything is settled.
   const pid_t pid = fork();
   if (pid == 0) {
+    // Killed, this program takes its run with it (beft-run stops its processes on SIGTERM).
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
     const std::string log = dir + "/run_output.txt";
     freopen(log.c_str(), "w", stdout);
     freopen(log.c_str(), "a", stderr);
@@ -30,7 +36,9 @@ void drawFigure4(const std::string& run_program, const std::string& scenario_pat
   const fs::path weights = fs::path(dir) / "weights.png";
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(weights))
     throw std::runtime_error("the fig4_dw run failed; its output is in " + dir + "/run_output.txt");
-  fs::copy_file(weights, out, fs::copy_options::overwrite_existing);
+  const std::string partial = partialPathFor(out);
+  fs::copy_file(weights, partial, fs::copy_options::overwrite_existing);
+  commitPartial(partial, out);
   fs::remove_all(dir);
 }
 

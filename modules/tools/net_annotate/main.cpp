@@ -11,6 +11,7 @@
 #include "command_line.hpp"
 #include "pnml_annotation.hpp"
 #include "pnml_reader.hpp"
+#include "whole_file.hpp"
 
 namespace {
 
@@ -83,10 +84,10 @@ int annotate(const Options& o) {
     std::fprintf(stderr, "%s\n", e.what());
     return 2;
   }
-  std::ofstream out(o.output, std::ios::binary);
-  out << result.text;
-  if (!out.flush()) {
-    std::fprintf(stderr, "beft-net-annotate: cannot write %s\n", o.output.c_str());
+  try {
+    writeWholeFile(o.output, result.text);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "beft-net-annotate: %s\n", e.what());
     return 2;
   }
   std::printf("wrote %s\n", o.output.c_str());

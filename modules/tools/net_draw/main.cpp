@@ -7,13 +7,13 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <fstream>
 #include <optional>
 
 #include "command_line.hpp"
 #include "net_dot.hpp"
 #include "pnml_reader.hpp"
 #include "run_marking.hpp"
+#include "whole_file.hpp"
 
 extern char** environ;
 
@@ -59,14 +59,23 @@ std::string runGraphviz(const std::string& graph, const std::string& format, con
     return "cannot write a scratch file";
   }
   const std::string type = "-T" + format;
-  const char* argv[] = {"dot", type.c_str(), "-o", out.c_str(), scratch, nullptr};
+  const std::string partial = partialPathFor(out);
+  const char* argv[] = {"dot", type.c_str(), "-o", partial.c_str(), scratch, nullptr};
   pid_t pid = 0;
   const int spawned = posix_spawnp(&pid, "dot", nullptr, nullptr, const_cast<char* const*>(argv), environ);
   int status = 0;
   if (spawned == 0) waitpid(pid, &status, 0);
   unlink(scratch);
   if (spawned != 0) return "Graphviz's dot is not installed (./beft setup installs it: apt-get install graphviz)";
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return "dot failed (see above)";
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    unlink(partial.c_str());
+    return "dot failed (see above)";
+  }
+  try {
+    commitPartial(partial, out);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
   return "";
 }
 
@@ -105,10 +114,10 @@ int draw(const Options& o) {
   }
   const std::string graph = net_draw::netToDot(net, marking);
   if (format == "dot") {
-    std::ofstream file(o.out);
-    file << graph;
-    if (!file.flush()) {
-      std::fprintf(stderr, "beft-net-draw: cannot write %s\n", o.out.c_str());
+    try {
+      writeWholeFile(o.out, graph);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "beft-net-draw: %s\n", e.what());
       return 2;
     }
   } else if (const std::string error = runGraphviz(graph, format, o.out); !error.empty()) {
