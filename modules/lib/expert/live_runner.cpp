@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <map>
@@ -59,6 +60,16 @@ class LcmOutput : public Output {
   lcm::LCM& lcm_;
   std::unordered_map<std::string, std::string> run_names_;
 };
+
+// Tells whether the blackboard's copy of a channel is the message already
+// heard: FNV-1a over the size and the first 64 bytes, which hold the type's
+// fingerprint, utime and tick (cheap for camera frames).
+uint64_t bytesHash(const void* data, std::size_t size) {
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  uint64_t hash = (1469598103934665603ULL ^ size) * 1099511628211ULL;
+  for (std::size_t i = 0; i < std::min<std::size_t>(size, 64); ++i) hash = (hash ^ bytes[i]) * 1099511628211ULL;
+  return hash;
+}
 
 // Holds what the LCM handlers received; the main loop decides what to do.
 class Runner {
@@ -121,6 +132,7 @@ class Runner {
     } else if (read_channels_.count(channel)) {
       if (heardWhileResuming(channel, message.data, message.size)) return;
       live_channels_.insert(channel);
+      last_live_bytes_[channel] = bytesHash(message.data, message.size);
       deliver(channel, message.data, size);
     }
   }
@@ -212,10 +224,25 @@ class Runner {
     }
     const double waited_s =
         std::chrono::duration<double>(Clock::now() - pending_since_).count();
-    if (!ready && waited_s < options_.ready_timeout_s) return;
-    if (!ready)
-      log::warn("firing ", pending_->firing_id, " (tick ", pending_->tick,
-                "): inputs incomplete after ", options_.ready_timeout_s, " s; firing anyway");
+    if (!ready) {
+      // A datagram may have been lost: the blackboard keeps the latest of each channel.
+      if (waited_s >= options_.refill_after_s && refilled_firing_ != pending_->firing_id && !snapshot_channel_.empty()) {
+        refilled_firing_ = pending_->firing_id;
+        log::warn("firing ", pending_->firing_id, " (tick ", pending_->tick, "): inputs incomplete after ",
+                  options_.refill_after_s, " s; asking the blackboard for them again");
+        requestSnapshot(/*refill=*/true);
+      }
+      if (waited_s >= next_wait_report_s_) {
+        next_wait_report_s_ += options_.wait_report_s;
+        log::warn("firing ", pending_->firing_id, " (tick ", pending_->tick, "): still waiting for its inputs after ",
+                  static_cast<int>(waited_s), " s");
+      }
+      const bool give_up = options_.ready_timeout_s > 0 && waited_s >= options_.ready_timeout_s;
+      if (!give_up) return;
+      log::warn("firing ", pending_->firing_id, " (tick ", pending_->tick, "): inputs incomplete after ",
+                options_.ready_timeout_s, " s; firing anyway (--ready-timeout)");
+    }
+    next_wait_report_s_ = options_.wait_report_s;
     fireNow();
   }
 
@@ -281,11 +308,14 @@ class Runner {
 
   // Late joiners: ask the blackboard for the latest message of each channel
   // read; the answer only fills channels nothing has arrived on yet.
-  void requestSnapshot() {
+  // Again while a firing waits for inputs (refill): the answer then fills
+  // every channel whose latest message differs from what arrived live.
+  void requestSnapshot(bool refill = false) {
     beft::bb_query_t query{};
     query.utime = wallMicros();
     query.requester = snapshot_channel_.substr(std::string(channels::kBlackboardSnapshotPrefix).size());
-    query.query_id = 1;
+    query.query_id = ++snapshot_queries_;
+    if (refill) refill_pending_ = true;
     for (const auto& channel : read_channels_) query.channels.push_back(channel);
     query.num_channels = static_cast<int32_t>(query.channels.size());
     lcm_.publish(wire::runChannel(channels::kBlackboardQuery), &query);
@@ -293,6 +323,21 @@ class Runner {
 
   void onSnapshot(const beft::bb_snapshot_t& snapshot) {
     const beft::bb_snapshot_t* snap = &snapshot;
+    if (refill_pending_) {
+      refill_pending_ = false;
+      int refilled = 0;
+      for (const auto& entry : snap->entries) {
+        if (!read_channels_.count(entry.channel)) continue;
+        const auto live = last_live_bytes_.find(entry.channel);
+        const uint64_t hash = bytesHash(entry.data.data(), entry.data.size());
+        if (live != last_live_bytes_.end() && live->second == hash) continue;  // nothing was lost there
+        last_live_bytes_[entry.channel] = hash;
+        deliver(entry.channel, entry.data.data(), entry.data_size);
+        ++refilled;
+      }
+      log::info("refilled ", refilled, " channel(s) from the blackboard");
+      return;
+    }
     if (snapshot_received_) return;
     snapshot_received_ = true;
     int used = 0;
@@ -322,6 +367,11 @@ class Runner {
   std::string run_end_reason_;
   std::string snapshot_channel_;
   bool snapshot_received_ = false;
+  bool refill_pending_ = false;
+  int64_t snapshot_queries_ = 0;
+  int64_t refilled_firing_ = -1;          // the firing whose inputs were last asked again
+  double next_wait_report_s_ = 5.0;
+  std::map<std::string, uint64_t> last_live_bytes_;  // hash of the latest message heard per channel
   std::multiset<uint64_t> logged_recently_;  // inputs the resume replayed that may also arrive live
   const std::string done_channel_ = wire::runChannel(channels::kDone);
 };

@@ -11,7 +11,12 @@ struct LiveOptions {
   std::string lcm_url;
   std::string process_name;
   double heartbeat_period_s = 0.5;
-  double ready_timeout_s = 2.0;  // longest wait for a firing's inputs
+  // Longest wait for a firing's inputs before firing without them; 0 (the
+  // default): never, so a lockstep run's messages do not depend on the
+  // machine's load. A lost input is asked again of the blackboard meanwhile.
+  double ready_timeout_s = 0.0;
+  double refill_after_s = 1.0;   // waiting this long for inputs asks the blackboard for them again
+  double wait_report_s = 5.0;    // how often a long wait for inputs is reported
   bool catch_up = true;          // ask the blackboard for the current state at start
   std::string resume_log;        // restarted after a crash: rebuild the state from this run's log first
 };

@@ -61,7 +61,8 @@ int runExpertMain(int argc, char** argv, Expert& expert, const std::function<voi
   app.add_option("--heartbeat-period", options.heartbeat_period_s, "seconds between heartbeats")
       ->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--ready-timeout", options.ready_timeout_s,
-                 "longest wait for a firing's inputs before firing anyway [s]")
+                 "longest wait for a firing's inputs before firing without them [s]; 0: never (lockstep runs stay "
+                 "deterministic; a lost input is asked again of the blackboard after 1 s)")
       ->capture_default_str()->check(CLI::NonNegativeNumber);
   app.add_flag("--no-catch-up", [&](int64_t) { options.catch_up = false; },
                "do not ask the blackboard for the current state at start");

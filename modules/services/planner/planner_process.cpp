@@ -62,6 +62,9 @@ void PlannerProcess::addOptions(CLI::App& app) {
   app.add_option("--default-budget", config_.default_budget, "time budget of requests without one [s]")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  app.add_flag("--wall-clock-deadline", config_.wall_clock_deadline,
+               "the time budget also cuts the grid planners (pf*, astar); off: they run to their own bounds, so a "
+               "lockstep run's plans do not depend on the machine's load (OMPL's planners always stop on the budget)");
   app.add_option("--goal-snap", config_.goal_snap, "how far a blocked goal may move to a free cell [m]")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();

@@ -217,7 +217,9 @@ beft::plan_result_t PlannerService::plan(const beft::plan_request_t& request) {
     cached.map_version = map_version_;
   }
   planner->setSeed(config_.seed + static_cast<uint64_t>(request.request_id));
-  const bp::PlanResult planned = planner->solve(cells.start, cells.goal, bp::Deadline::after(budget));
+  const bool stops_on_time = config_.wall_clock_deadline || result.planner.rfind("ompl:", 0) == 0;
+  const bp::PlanResult planned =
+      planner->solve(cells.start, cells.goal, stops_on_time ? bp::Deadline::after(budget) : bp::Deadline::never());
   result.planning_time = planned.planning_time_s;
   if (!planned.success) return fail(planned.message);
   toWaypoints(request, planned.path, cells, result);

@@ -41,6 +41,10 @@ struct ServiceConfig {
   double max_budget = 30.0;            // longest deadline granted [s]
   double goal_snap = 0.5;              // how far a blocked goal may move [m]
   uint64_t seed = 1;                   // randomised planners use seed + request_id
+  // The time budget cuts the grid planners (pf*, astar) too; off by default:
+  // they then run to their own bounds, so a plan does not depend on the
+  // machine's load (OMPL's planners always stop on the budget).
+  bool wall_clock_deadline = false;
   std::vector<std::pair<std::string, std::string>> pf_params;  // potential-field overrides
 };
 
