@@ -187,7 +187,7 @@ TEST(Pipeline, EveryProcessReceivesOnlyWhatItReads) {
               std::string::npos)
         << process << ":\n" << control;
   }
-  EXPECT_NE(lineAfter("[vision] [vision] info: inputs: ").find("CAMERA_DEPTH, CAMERA_INSTANCE, GT_OBJECTS"),
+  EXPECT_NE(lineAfter("[vision] [vision] info: inputs: ").find("CAMERA_DEPTH, CAMERA_INSTANCE, CONTACT, GT_OBJECTS"),
             std::string::npos);
   EXPECT_NE(lineAfter("[arbiter] [arbiter] info: receiving: own receive socket")
                 .find("kernel filter: receiving only DONE, HEARTBEAT, STOP_REQUEST"),

@@ -323,6 +323,16 @@ Executor::Finish Executor::watchPath(const Task& task, Run& run, int64_t utime, 
     if (stalled(run, remaining, 0.05, utime))
       why = "no progress for " + fmt(parameters_.stall_s, 1) + " s";
   }
+  if (collided) {
+    const int at_this_place = 1 + static_cast<int>(std::count_if(
+        run.contacts.begin(), run.contacts.end(), [&](const std::pair<double, double>& contact) {
+          return std::hypot(contact.first - r.x, contact.second - r.y) <= parameters_.contact_place_m;
+        }));
+    run.contacts.emplace_back(r.x, r.y);
+    if (at_this_place >= parameters_.max_contacts_at_place)
+      return std::make_pair(Status::Failed, "blocked: " + std::to_string(at_this_place) + " contacts at (" +
+                                                fmt(r.x) + ", " + fmt(r.y) + ")");
+  }
   if (!why.empty()) {
     ++run.replans;
     if (run.replans > parameters_.max_replans)
@@ -360,11 +370,53 @@ void Executor::followPath(const Task& task, Run& run, int64_t utime, TickOutput&
     out.command = gotoCommand(waypoint.x, waypoint.y, waypoint.yaw, utime);
   run.setpoint_x = out.command.goal_x;
   run.setpoint_y = out.command.goal_y;
-  if (parameters_.goto_centres_head) {
-    out.command.set_head = true;
-    out.command.head_yaw = 0;
-    out.command.head_pitch = 0;
+  rememberTrail(run);
+  if (parameters_.goto_looks_ahead) lookAlongPath(run, out);
+}
+
+// The head turns to where the robot is about to drive, as a person looks
+// where they walk: the way it drives now, leaning towards the point
+// look_ahead_m along the path (by up to half of look_before_moving_deg, to see
+// round a corner). Until the camera looks within look_before_moving_deg of the
+// way it drives now, the platform only turns on the spot: it never drives into
+// ground it has not seen.
+void Executor::lookAlongPath(const Run& run, TickOutput& out) const {
+  const auto& r = *robot_;
+  const double to_setpoint = std::hypot(out.command.goal_x - r.x, out.command.goal_y - r.y);
+  if (to_setpoint < 0.05) return;  // arriving: nothing ahead to see
+  double ax = r.x, ay = r.y, left = parameters_.look_ahead_m;
+  double look_x = ax, look_y = ay;
+  for (std::size_t i = run.next_waypoint; i < run.path.size() && left > 0; ++i) {
+    const double bx = run.path[i].x, by = run.path[i].y;
+    const double length = std::hypot(bx - ax, by - ay);
+    const double f = length > left ? left / length : 1.0;
+    look_x = ax + f * (bx - ax);
+    look_y = ay + f * (by - ay);
+    left -= length;
+    ax = bx;
+    ay = by;
   }
+  const double way_now = bearingDeg(r.x, r.y, out.command.goal_x, out.command.goal_y);
+  const double lean = parameters_.look_before_moving_deg / 2;
+  const double way_ahead = bearingDeg(r.x, r.y, look_x, look_y);
+  const double gaze = way_now + std::clamp(wrap(way_ahead - way_now), -lean, lean);
+  out.command.set_head = true;
+  out.command.head_yaw =
+      std::clamp(wrap(gaze - r.yaw), -parameters_.head_yaw_limit_deg, parameters_.head_yaw_limit_deg);
+  out.command.head_pitch = 0;
+  if (std::abs(wrap(way_now - (r.yaw + r.head_yaw))) > parameters_.look_before_moving_deg) {
+    out.command.goal_x = r.x;
+    out.command.goal_y = r.y;
+    out.command.goal_yaw = way_now;
+  }
+}
+
+// Ground the platform stood on lately: a way back that is known to be free.
+void Executor::rememberTrail(Run& run) const {
+  const auto& r = *robot_;
+  if (!run.trail.empty() && std::hypot(run.trail.back().first - r.x, run.trail.back().second - r.y) < 0.1) return;
+  run.trail.emplace_back(r.x, r.y);
+  if (run.trail.size() > 64) run.trail.erase(run.trail.begin());
 }
 
 Executor::Finish Executor::runGoto(const Task& task, Run& run, int64_t utime, TickOutput& out) {
@@ -395,7 +447,17 @@ Executor::Finish Executor::runGoto(const Task& task, Run& run, int64_t utime, Ti
 
 void Executor::startBackoff(Run& run, int64_t utime) const {
   const auto& r = *robot_;
-  // Away from where it was driving; straight back when it was not driving.
+  // Back along its own trail (ground it stood on) when it has one that far.
+  for (auto it = run.trail.rbegin(); it != run.trail.rend(); ++it) {
+    if (std::hypot(it->first - r.x, it->second - r.y) >= parameters_.backoff_m) {
+      run.backoff_x = it->first;
+      run.backoff_y = it->second;
+      run.backing_off = true;
+      run.backoff_utime = utime;
+      return;
+    }
+  }
+  // Else away from where it was driving; straight back when it was not driving.
   double dx = r.x - run.setpoint_x, dy = r.y - run.setpoint_y;
   double length = std::hypot(dx, dy);
   if (length < 1e-6) {

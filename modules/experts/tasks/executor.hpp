@@ -44,7 +44,11 @@ struct ExecutorParameters {
   double plan_time_budget_s = 1.0;    // sent with each plan request
   std::string planner;                // planner name sent with each request, empty = default
   int64_t first_request_id = 1000000001;  // request ids count up from here
-  bool goto_centres_head = true;      // goto looks ahead (head yaw 0) so the camera maps the way
+  bool goto_looks_ahead = true;       // goto turns the head to where the path goes, so the camera maps the way
+  double look_ahead_m = 2.0;          // ... this far ahead along the path [m]
+  double look_before_moving_deg = 30; // drives only while the camera looks within this of the way ahead [deg]
+  int max_contacts_at_place = 2;      // goto fails after this many contacts at one place
+  double contact_place_m = 0.6;       // contacts within this of each other are at one place [m]
 };
 
 class Executor {
@@ -91,6 +95,8 @@ class Executor {
     double setpoint_x = 0, setpoint_y = 0;  // where it was last sent
     bool backing_off = false;
     double backoff_x = 0, backoff_y = 0;
+    std::vector<std::pair<double, double>> contacts;  // where the robot stood at each contact
+    std::vector<std::pair<double, double>> trail;     // where it drove lately (free ground), newest last
     int64_t backoff_utime = 0;
     std::string last_plan_error;
     // progress watch (goto, turns)
@@ -112,6 +118,8 @@ class Executor {
   bool keepBackingOff(Run& run, int64_t utime, TickOutput& out);
   Finish watchPath(const Task& task, Run& run, int64_t utime, TickOutput& out, bool& backing_off);
   void followPath(const Task& task, Run& run, int64_t utime, TickOutput& out);
+  void lookAlongPath(const Run& run, TickOutput& out) const;
+  void rememberTrail(Run& run) const;
   Finish runTurnHead(const Task& task, Run& run, int64_t utime, TickOutput& out);
   Finish runTurn(const Task& task, Run& run, int64_t utime, TickOutput& out);
   Finish runLookAt(const Task& task, Run& run, int64_t utime, TickOutput& out);

@@ -46,7 +46,14 @@ void TasksExpert::declareParameters(DeclaredParameters& parameters) {
   positive("owned_idle_s", e.owned_idle_s, "an owned task on top with no sub-task for this long fails [s]");
   positive("plan_time_budget_s", e.plan_time_budget_s, "time budget sent with each plan request [s]");
   parameters.declare("planner", e.planner, "planner name sent with each plan request (empty: the service's default)");
-  parameters.declare("goto_centres_head", e.goto_centres_head, "goto turns the head to the front so the camera maps the way");
+  parameters.declare("goto_looks_ahead", e.goto_looks_ahead,
+                     "goto turns the head to where the path goes (look_ahead_m ahead) so the camera maps the way");
+  positive("look_ahead_m", e.look_ahead_m, "goto looks at the path this far ahead [m]");
+  parameters.declare("look_before_moving_deg", e.look_before_moving_deg, 1, 180,
+                     "goto drives only while the camera looks within this of the way ahead, else turns on the spot [deg]");
+  parameters.declare("max_contacts_at_place", e.max_contacts_at_place, 1, 1000,
+                     "goto fails (blocked) after this many contacts at one place");
+  positive("contact_place_m", e.contact_place_m, "contacts within this of each other count as one place [m]");
   parameters.declare("child_failure_fails_parent", stack_options_.child_failure_fails_parent,
                      "a failed sub-task fails its parent (0: the parent resumes)");
   parameters.declare("max_tasks", stack_options_.max_tasks, 1, 1000000, "pushes beyond this many tasks are rejected");

@@ -294,6 +294,27 @@ void ObstacleMapper::clearBelowThreshold(const Eigen::Vector3d& origin, const De
   });
 }
 
+void ObstacleMapper::markContact(double x, double y, double radius) {
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(radius)) return;
+  const double r = std::max(radius, 0.5 * config_.resolution);
+  const auto cellRange = [&](double low, double high, int cells) {
+    const double first = std::max(0.0, std::floor(low / config_.resolution));
+    const double last = std::min(cells - 1.0, std::floor(high / config_.resolution));
+    return std::make_pair(static_cast<int>(first), static_cast<int>(last));
+  };
+  const auto [c0, c1] = cellRange(x - r, x + r, width_);
+  const auto [r0, r1] = cellRange(y - r, y + r, height_);
+  for (int row = r0; row <= r1; ++row) {
+    for (int column = c0; column <= c1; ++column) {
+      const double cx = (column + 0.5) * config_.resolution, cy = (row + 0.5) * config_.resolution;
+      if (std::hypot(cx - x, cy - y) > r) continue;
+      const std::size_t index = static_cast<std::size_t>(row) * width_ + column;
+      felt_.insert(index);
+      set(index, kOccupied);
+    }
+  }
+}
+
 void ObstacleMapper::restoreCells(const std::vector<uint8_t>& cells) {
   if (cells.size() != cells_.size())
     throw std::invalid_argument("cannot restore " + std::to_string(cells.size()) + " cells into a map of " +

@@ -21,6 +21,8 @@
 //    it. Cells hit in the same frame are never cleared by that frame.
 #pragma once
 
+#include <unordered_set>
+
 #include <cstdint>
 #include <vector>
 
@@ -78,6 +80,12 @@ class ObstacleMapper {
   // unchanged map.
   uint64_t version() const { return version_; }
 
+  // A contact felt by the platform (a bumper) at world point (x, y): the
+  // cells within radius become OCCUPIED and no view clears them again (what
+  // was touched may be too low or too thin for the camera to map).
+  void markContact(double x, double y, double radius);
+  std::size_t feltCells() const { return felt_.size(); }
+
   // Replaces every cell, e.g. with the map a previous run of the expert
   // published. Throws std::invalid_argument on a wrong count or value.
   void restoreCells(const std::vector<uint8_t>& cells);
@@ -98,6 +106,7 @@ class ObstacleMapper {
   void traverse(const Eigen::Vector3d& o, const Eigen::Vector3d& d, double t_begin, double t_end,
                 Visit&& visit) const;
   void set(std::size_t index, uint8_t value) {
+    if (value != obstacle_map_t::CELL_OCCUPIED && !felt_.empty() && felt_.count(index) != 0) return;
     if (cells_[index] != value) {
       cells_[index] = value;
       ++version_;
@@ -120,6 +129,7 @@ class ObstacleMapper {
   // From ray parameter t_from on (earlier cells were covered by a lower ray).
   void clearBelowThreshold(const Eigen::Vector3d& origin, const DepthRay& ray, double t_from);
 
+  std::unordered_set<std::size_t> felt_;  // cells marked by contacts: never cleared
   ObstacleMapConfig config_;
   int width_ = 0;
   int height_ = 0;

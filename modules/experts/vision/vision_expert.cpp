@@ -22,9 +22,11 @@ std::string VisionExpert::description() const {
          "occupied cell is cleared only when a ray crosses it below obstacle_min_height (so a "
          "person who walked away stops blocking the map). The map covers the world of "
          "GT_OBJECTS at --param resolution and accumulates over the run. Reads GT_OBJECTS, "
-         "CAMERA_DEPTH and CAMERA_INSTANCE of the fired tick, writes VISION and OBSTACLE_MAP "
+         "CAMERA_DEPTH, CAMERA_INSTANCE and CONTACT of the fired tick, writes VISION and OBSTACLE_MAP "
          "(RLE). When (re)started during a run it resumes from the last OBSTACLE_MAP on the "
-         "blackboard. To run it alone: start beft-world and feed FIRE tokens for 'vision' (or run "
+         "blackboard. A contact of the platform (CONTACT touching, at x/y) marks the "
+         "cells within contact_radius OCCUPIED for good, like a bumper: what the camera could not map is "
+         "not driven into twice. To run it alone: start beft-world and feed FIRE tokens for 'vision' (or run "
          "the arbiter), and watch VISION with lcm-spy.";
 }
 
@@ -32,10 +34,13 @@ void VisionExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("resolution", map_config_.resolution, 0, DeclaredParameters::kNoLimit, "obstacle map cell edge [m]", true);
   parameters.declare("obstacle_min_height", map_config_.obstacle_min_height, 0, DeclaredParameters::kNoLimit,
                      "depth returns above this height are obstacles [m]");
+  parameters.declare("contact_radius", contact_radius_, 0, 2,
+                     "a contact of the platform marks the map's cells within this of the touching point [m]");
 }
 
 bool VisionExpert::inputsReady(const expert::Firing& firing) const {
-  return scene_.has(firing.tick) && depth_.has(firing.tick) && instance_.has(firing.tick);
+  return scene_.has(firing.tick) && depth_.has(firing.tick) && instance_.has(firing.tick) &&
+         (contact_.empty() || contact_.has(firing.tick));
 }
 
 bool VisionExpert::samePose(const camera_frame_t& a, const camera_frame_t& b) {
@@ -80,6 +85,7 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
   const auto* scene = scene_.ofTick(firing.tick);
   const auto* depth = depth_.ofTick(firing.tick);
   const auto* instance = instance_.ofTick(firing.tick);
+  const auto* contact = contact_.ofTick(firing.tick);
   if (scene == nullptr || depth == nullptr || instance == nullptr)
     return expert::Outcome::failure(
         std::string("no ") + (scene == nullptr ? "GT_OBJECTS" : depth == nullptr ? "CAMERA_DEPTH" : "CAMERA_INSTANCE") +
@@ -104,7 +110,7 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
       percepts = estimateVisualOcclusion(*scene, visible, expected_);
     });
     expert::WaitOnExit perceived(percepting_);  // also when the map throws
-    updateMap(*scene, *depth, firing.tick);
+    updateMap(*scene, *depth, contact, firing.tick);
     // Re-encoded only when a cell changed (a robot standing still sees no change).
     if (map_message_version_ == 0 || mapper_->version() != map_message_version_) {
       map_message_ = mapper_->toMessage(scene->utime, firing.tick);
@@ -146,7 +152,8 @@ void VisionExpert::resumeMap(int64_t first_tick) {
   }
 }
 
-void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t& depth, int64_t tick) {
+void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t& depth, const contact_t* contact,
+                             int64_t tick) {
   if (!mapper_ || scene.world_width != mapped_world_width_ || scene.world_height != mapped_world_height_) {
     if (mapper_) log::warn("world size changed: obstacle map restarted");
     mapper_ = std::make_unique<ObstacleMapper>(scene.world_width, scene.world_height, map_config_);
@@ -159,6 +166,8 @@ void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t&
   }
   if (tick == last_mapped_tick_) return;  // a re-sent FIRE: this frame is in the map already
   last_mapped_tick_ = tick;
+  if (contact != nullptr && contact->touching && contact_radius_ > 0)
+    mapper_->markContact(contact->x, contact->y, contact_radius_);
   // The same image from the same pose adds nothing (integrating is
   // idempotent): a robot standing in a still scene costs no mapping.
   if (sameView(depth, last_depth_)) return;

@@ -11,6 +11,7 @@
 
 #include <beft/camera_frame_t.hpp>
 #include <beft/obstacle_map_t.hpp>
+#include <beft/contact_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
 #include "expert.hpp"
@@ -31,7 +32,7 @@ class VisionExpert : public expert::Expert {
   void declareParameters(DeclaredParameters& parameters) override;
 
  private:
-  void updateMap(const scene_objects_t& scene, const camera_frame_t& depth, int64_t tick);
+  void updateMap(const scene_objects_t& scene, const camera_frame_t& depth, const contact_t* contact, int64_t tick);
   void resumeMap(int64_t first_tick);
   // Same camera pose and intrinsics (the pixels aside).
   static bool samePose(const camera_frame_t& a, const camera_frame_t& b);
@@ -42,6 +43,7 @@ class VisionExpert : public expert::Expert {
   static bool sameSolids(const scene_objects_t& a, const scene_objects_t& b);
 
   ObstacleMapConfig map_config_;
+  double contact_radius_ = 0.15;  // a contact marks the cells this close to where the platform touched [m]
   std::unique_ptr<ObstacleMapper> mapper_;
   double mapped_world_width_ = 0, mapped_world_height_ = 0;
   int64_t last_mapped_tick_ = -1;
@@ -56,6 +58,9 @@ class VisionExpert : public expert::Expert {
   expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
   expert::TickInput<camera_frame_t> depth_{*this, channels::kCameraDepth, 4};
   expert::TickInput<camera_frame_t> instance_{*this, channels::kCameraInstance, 4};
+  // The bumper. A world that publishes CONTACT does so every tick: once one
+  // was heard, each firing waits for its tick's (logs from before have none).
+  expert::TickInput<contact_t> contact_{*this, channels::kContact};
   expert::HelperTask percepting_;  // last: its thread ends before the state it works on goes
   // To resume after a restart; its own map heard back is not decoded.
   expert::HandledInput<obstacle_map_t> previous_map_{

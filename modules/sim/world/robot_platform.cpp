@@ -266,6 +266,11 @@ StepOutcome RobotPlatform::step(double dt, const camera::SceneGeometry& scene) {
   yaw_rate_ = turn / dt;
   path_length_ += outcome.distance;
   collided_ = outcome.collided;
+  if (outcome.collided) {
+    const double step = std::hypot(dx, dy);
+    contact_x_ = x_ + robot_.radius * dx / step;
+    contact_y_ = y_ + robot_.radius * dy / step;
+  }
   if (outcome.collided) ++collisions_;
   return outcome;
 }

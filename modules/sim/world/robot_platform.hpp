@@ -90,6 +90,9 @@ class RobotPlatform {
   double pathLength() const { return path_length_; }
   int collisions() const { return collisions_; }
   bool collided() const { return collided_; }
+  // The point of the footprint that touched, when collided(): its edge in the direction of motion.
+  double contactX() const { return contact_x_; }
+  double contactY() const { return contact_y_; }
   const scenario::Robot& description() const { return robot_; }
 
  private:
@@ -105,6 +108,7 @@ class RobotPlatform {
   double path_length_ = 0;
   int collisions_ = 0;
   bool collided_ = false;
+  double contact_x_ = 0, contact_y_ = 0;
 };
 
 // Angle in (-180, 180] [deg].

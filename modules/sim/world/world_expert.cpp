@@ -68,6 +68,7 @@ void WorldExpert::publishState(beft::expert::Output& out) {
   simulation_->cameraMessages(camera_messages_);
   ground_truth_out_.publish(out, simulation_->groundTruth());
   robot_state_out_.publish(out, simulation_->robotState());
+  contact_out_.publish(out, simulation_->contact());
   color_out_.publish(out, camera_messages_.color);
   depth_out_.publish(out, camera_messages_.depth);
   instance_out_.publish(out, camera_messages_.instance);

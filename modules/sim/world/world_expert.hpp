@@ -52,6 +52,7 @@ class WorldExpert : public beft::expert::Expert {
       *this, channels::kRobotCommand, [this](robot_command_t&& command) { onCommand(std::move(command)); }};
   beft::expert::OutputPort<scene_objects_t> ground_truth_out_{*this, channels::kGroundTruth};
   beft::expert::OutputPort<robot_state_t> robot_state_out_{*this, channels::kRobotState};
+  beft::expert::OutputPort<contact_t> contact_out_{*this, channels::kContact};
   beft::expert::OutputPort<camera_frame_t> color_out_{*this, channels::kCameraColor};
   beft::expert::OutputPort<camera_frame_t> depth_out_{*this, channels::kCameraDepth};
   beft::expert::OutputPort<camera_frame_t> instance_out_{*this, channels::kCameraInstance};

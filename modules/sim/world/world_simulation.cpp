@@ -144,6 +144,16 @@ beft::robot_state_t WorldSimulation::robotState() const {
   return state;
 }
 
+beft::contact_t WorldSimulation::contact() const {
+  beft::contact_t contact{};
+  contact.utime = utime();
+  contact.tick = tick();
+  contact.touching = robot_.collided();
+  contact.x = robot_.collided() ? robot_.contactX() : 0.0;
+  contact.y = robot_.collided() ? robot_.contactY() : 0.0;
+  return contact;
+}
+
 camera::Camera WorldSimulation::camera() const {
   const scenario::Camera& c = scenario_.robot.camera;
   return camera::cameraOnRobot(robot_.x(), robot_.y(), robot_.yaw(), robot_.headYaw(), robot_.headPitch(),

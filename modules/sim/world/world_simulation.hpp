@@ -16,6 +16,7 @@
 #include <vector>
 
 #include <beft/robot_command_t.hpp>
+#include <beft/contact_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
@@ -66,6 +67,8 @@ class WorldSimulation {
   const std::vector<std::string>& notes() const { return notes_; }
 
   beft::scene_objects_t groundTruth() const;
+  // The bumper: whether the last motion stopped at contact, and where.
+  beft::contact_t contact() const;
   beft::robot_state_t robotState() const;
   camera::Camera camera() const;
   // Renders the current camera frame (with depth noise if configured).

@@ -212,6 +212,7 @@ TEST(Executor, GotoWithoutBackoffReplansWhereItStopped) {
 TEST(Executor, GotoGivesUpAfterRepeatedCollisions) {
   ExecutorParameters p;
   p.max_replans = 2;
+  p.max_contacts_at_place = 100;  // the replan count decides here, not the place
   Harness h(p);
   h.robot.obstacles.push_back({3, 0, 0.5});
   h.planner = [](const beft::plan_request_t& r) { return answer(r, {{r.start_x, r.start_y, 0}, {6, 0, 0}}); };
@@ -221,6 +222,54 @@ TEST(Executor, GotoGivesUpAfterRepeatedCollisions) {
   EXPECT_EQ(h.lastEventOf(id)->kind, TaskEvent::Kind::Failed);
   EXPECT_NE(h.lastEventOf(id)->reason.find("collided"), std::string::npos) << h.lastEventOf(id)->reason;
   EXPECT_EQ(h.robot.state.collisions, 3);
+}
+
+// A planner that keeps sending the robot into the same obstacle: the second
+// contact at that place ends the goto as blocked (the explorer then picks
+// another target), and the robot backed off along ground it had driven.
+TEST(Executor, GotoFailsAsBlockedAtTheSecondContactAtOnePlace) {
+  Harness h;
+  h.robot.obstacles.push_back({3, 0, 0.5});
+  h.planner = [](const beft::plan_request_t& r) { return answer(r, {{r.start_x, r.start_y, 0}, {6, 0, 0}}); };
+  const int64_t id = h.stack.push(gotoTask(6, 0, 0));
+  h.run(300);
+  ASSERT_TRUE(h.stack.empty());
+  EXPECT_EQ(h.lastEventOf(id)->kind, TaskEvent::Kind::Failed);
+  EXPECT_NE(h.lastEventOf(id)->reason.find("blocked: 2 contacts"), std::string::npos) << h.lastEventOf(id)->reason;
+  EXPECT_EQ(h.robot.state.collisions, 2);
+  // Every position the robot held lies on its straight way in (y = 0), behind the contact.
+  EXPECT_LT(h.robot.state.x, 2.3);
+  EXPECT_NEAR(h.robot.state.y, 0.0, 1e-9);
+}
+
+// goto turns the head to where the robot drives and drives only while the
+// camera looks within look_before_moving_deg of that way: it never moves into
+// ground it could not see.
+TEST(Executor, GotoLooksAlongThePathAndDrivesOnlyWhileItSeesTheWay) {
+  ExecutorParameters p;
+  Harness h(p);
+  h.planner = [](const beft::plan_request_t& r) {
+    return answer(r, {{r.start_x, r.start_y, 90}, {0, 3, 90}, {-3, 3, 180}});
+  };
+  const int64_t id = h.stack.push(gotoTask(-3, 3, 180));
+  int moves = 0, looks_ahead = 0;
+  for (int i = 0; i < 200 && !h.stack.empty(); ++i) {
+    const beft::robot_state_t before = h.robot.state;
+    h.step();
+    const beft::robot_command_t& command = h.commands.back();
+    const bool moved = std::hypot(h.robot.state.x - before.x, h.robot.state.y - before.y) > 1e-9;
+    if (!moved) continue;
+    ++moves;
+    const double way = std::atan2(h.robot.state.y - before.y, h.robot.state.x - before.x) * 180 / kPi;
+    const double camera = before.yaw + before.head_yaw;
+    EXPECT_LE(std::abs(model::wrapDegrees(way - camera)), p.look_before_moving_deg + 1e-6)
+        << "moved towards " << way << " deg while the camera looked at " << camera << " deg (tick " << i << ")";
+    if (command.set_head) ++looks_ahead;
+  }
+  ASSERT_TRUE(h.stack.empty());
+  EXPECT_EQ(h.lastEventOf(id)->kind, TaskEvent::Kind::Done);
+  EXPECT_GT(moves, 40);
+  EXPECT_GT(looks_ahead, moves / 2);
 }
 
 TEST(Executor, GotoReplansWhenANewlyMappedObstacleBlocksThePath) {

@@ -2,11 +2,16 @@
 // resumes the obstacle map a previous run left on the blackboard.
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include <beft/obstacle_map_t.hpp>
+#include <beft/contact_t.hpp>
 #include <beft/visual_percepts_t.hpp>
 
 #include "camera_messages.hpp"
 #include "channels.hpp"
+#include "depth_rays.hpp"
+#include "obstacle_mapper.hpp"
 #include "obstacle_map_codec.hpp"
 #include "ray_caster.hpp"
 #include "scene_builders.hpp"
@@ -38,8 +43,9 @@ bool feed(expert::Expert& e, const std::string& channel, const Message& m) {
   return e.onMessage(channel, bytes.data(), static_cast<int>(bytes.size()));
 }
 
-// One tick of the world: a person 4 m in front of the camera at (2, 5).
-void feedTick(expert::Expert& e, int64_t tick) {
+// One tick of the world: a person 4 m in front of the camera at (2, 5); the
+// platform touched something at `contact` when one is given.
+void feedTick(expert::Expert& e, int64_t tick, std::optional<std::pair<double, double>> contact = std::nullopt) {
   const auto s = test::scene({test::cylinderObject("victim", "person", 6, 5, 0.3, 1.8)}, tick, 20, 10);
   camera::Camera cam;
   cam.pose = {2, 5, 1.6, 0, 0};
@@ -49,6 +55,13 @@ void feedTick(expert::Expert& e, int64_t tick) {
   ASSERT_TRUE(feed(e, channels::kGroundTruth, s));
   ASSERT_TRUE(feed(e, channels::kCameraDepth, frames.depth));
   ASSERT_TRUE(feed(e, channels::kCameraInstance, frames.instance));
+  contact_t bumper{};
+  bumper.utime = s.utime;
+  bumper.tick = tick;
+  bumper.touching = contact.has_value();
+  bumper.x = contact ? contact->first : 0;
+  bumper.y = contact ? contact->second : 0;
+  ASSERT_TRUE(feed(e, channels::kContact, bumper));
 }
 
 expert::Firing firingFor(int64_t tick, int64_t id) {
@@ -169,4 +182,46 @@ TEST(VisionExpert, ABadDepthFrameFailsTheFiringAndTheNextTickWorks) {
   ASSERT_TRUE(vision.fire(firingFor(1, 2), out).ok);
   EXPECT_EQ(out.get<visual_percepts_t>(channels::kVision).num_percepts, 1);
   EXPECT_EQ(planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap)).width, 200);
+}
+
+// A contact of the platform enters the map like a bumper: the touched cells
+// are OCCUPIED at once, and stay so when the camera later sees the floor
+// there (what was touched may be too low or thin to map), while an occupied
+// cell that was only seen is cleared by the same view.
+TEST(VisionExpert, AContactEntersTheMapAndNoViewClearsIt) {
+  vision::VisionExpert vision;
+  vision.startUp();
+  feedTick(vision, 0, std::make_pair(4.0, 5.0));
+  Collected out;
+  ASSERT_TRUE(vision.fire(firingFor(0, 1), out).ok);
+  auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  EXPECT_EQ(map.at(40, 50), obstacle_map_t::CELL_OCCUPIED);  // (4.05, 5.05): touched
+  // Ticks later, no contact, the same floor in view: still occupied.
+  for (int64_t tick = 1; tick <= 3; ++tick) {
+    feedTick(vision, tick);
+    ASSERT_TRUE(vision.fire(firingFor(tick, tick + 1), out).ok);
+  }
+  map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  EXPECT_EQ(map.at(40, 50), obstacle_map_t::CELL_OCCUPIED);
+  EXPECT_EQ(map.at(39, 49), obstacle_map_t::CELL_OCCUPIED);  // (3.95, 4.95): within 0.15 m too
+  EXPECT_NE(map.at(43, 50), obstacle_map_t::CELL_OCCUPIED);  // beyond the contact's 0.15 m
+}
+
+TEST(VisionExpert, AnOccupiedCellOnlySeenIsClearedByTheSameView) {
+  vision::ObstacleMapper mapper(20, 10, vision::ObstacleMapConfig{});
+  std::vector<uint8_t> cells(mapper.cells().size(), obstacle_map_t::CELL_UNKNOWN);
+  cells[50 * 200 + 40] = obstacle_map_t::CELL_OCCUPIED;
+  mapper.restoreCells(cells);
+  const auto s = test::scene({test::cylinderObject("victim", "person", 6, 5, 0.3, 1.8)}, 0, 20, 10);
+  camera::Camera cam;
+  cam.pose = {2, 5, 1.6, 0, 0};
+  camera::CameraMessages frames;
+  camera::encodeCameraMessages(camera::renderFrame(camera::SceneGeometry::fromMessage(s), cam), s.utime, 0,
+                               {"victim"}, frames);
+  mapper.integrate(vision::DepthFrameRays(frames.depth));
+  EXPECT_EQ(mapper.cell(40, 50), obstacle_map_t::CELL_FREE);
+  mapper.markContact(4.05, 5.05, 0.15);
+  EXPECT_EQ(mapper.cell(40, 50), obstacle_map_t::CELL_OCCUPIED);
+  mapper.integrate(vision::DepthFrameRays(frames.depth));
+  EXPECT_EQ(mapper.cell(40, 50), obstacle_map_t::CELL_OCCUPIED);
 }
