@@ -294,20 +294,27 @@ void ObstacleMapper::clearBelowThreshold(const Eigen::Vector3d& origin, const De
   });
 }
 
-void ObstacleMapper::markContact(double x, double y, double radius) {
-  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(radius)) return;
+void ObstacleMapper::markContact(double x, double y, double heading_deg, double width, double radius) {
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(heading_deg) || !std::isfinite(width) ||
+      !std::isfinite(radius))
+    return;
   const double r = std::max(radius, 0.5 * config_.resolution);
+  const double half = std::max(0.0, width) / 2;
+  // The segment runs across the heading.
+  const double ux = -std::sin(heading_deg * M_PI / 180.0), uy = std::cos(heading_deg * M_PI / 180.0);
+  const double reach = half + r;
   const auto cellRange = [&](double low, double high, int cells) {
     const double first = std::max(0.0, std::floor(low / config_.resolution));
     const double last = std::min(cells - 1.0, std::floor(high / config_.resolution));
     return std::make_pair(static_cast<int>(first), static_cast<int>(last));
   };
-  const auto [c0, c1] = cellRange(x - r, x + r, width_);
-  const auto [r0, r1] = cellRange(y - r, y + r, height_);
+  const auto [c0, c1] = cellRange(x - reach, x + reach, width_);
+  const auto [r0, r1] = cellRange(y - reach, y + reach, height_);
   for (int row = r0; row <= r1; ++row) {
     for (int column = c0; column <= c1; ++column) {
-      const double cx = (column + 0.5) * config_.resolution, cy = (row + 0.5) * config_.resolution;
-      if (std::hypot(cx - x, cy - y) > r) continue;
+      const double dx = (column + 0.5) * config_.resolution - x, dy = (row + 0.5) * config_.resolution - y;
+      const double along = std::clamp(dx * ux + dy * uy, -half, half);
+      if (std::hypot(dx - along * ux, dy - along * uy) > r) continue;
       const std::size_t index = static_cast<std::size_t>(row) * width_ + column;
       felt_.insert(index);
       set(index, kOccupied);

@@ -80,10 +80,12 @@ class ObstacleMapper {
   // unchanged map.
   uint64_t version() const { return version_; }
 
-  // A contact felt by the platform (a bumper) at world point (x, y): the
-  // cells within radius become OCCUPIED and no view clears them again (what
-  // was touched may be too low or too thin for the camera to map).
-  void markContact(double x, double y, double radius);
+  // A contact felt by the platform (a bumper) at world point (x, y) while
+  // moving towards heading [deg]: the cells within radius of the segment of
+  // `width` across the heading, centred on the point, become OCCUPIED and no
+  // view clears them again (what was touched may be too low or too thin for
+  // the camera to map).
+  void markContact(double x, double y, double heading_deg, double width, double radius);
   std::size_t feltCells() const { return felt_.size(); }
 
   // Replaces every cell, e.g. with the map a previous run of the expert

@@ -25,7 +25,7 @@ std::string VisionExpert::description() const {
          "CAMERA_DEPTH, CAMERA_INSTANCE and CONTACT of the fired tick, writes VISION and OBSTACLE_MAP "
          "(RLE). When (re)started during a run it resumes from the last OBSTACLE_MAP on the "
          "blackboard. A contact of the platform (CONTACT touching, at x/y) marks the "
-         "cells within contact_radius OCCUPIED for good, like a bumper: what the camera could not map is "
+         "cells within contact_radius of a contact_width segment across the motion OCCUPIED for good, like a bumper: what the camera could not map is "
          "not driven into twice. To run it alone: start beft-world and feed FIRE tokens for 'vision' (or run "
          "the arbiter), and watch VISION with lcm-spy.";
 }
@@ -35,7 +35,9 @@ void VisionExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("obstacle_min_height", map_config_.obstacle_min_height, 0, DeclaredParameters::kNoLimit,
                      "depth returns above this height are obstacles [m]");
   parameters.declare("contact_radius", contact_radius_, 0, 2,
-                     "a contact of the platform marks the map's cells within this of the touching point [m]");
+                     "a contact of the platform marks the map's cells within this of the touching segment [m]");
+  parameters.declare("contact_width", contact_width_, 0, 5,
+                     "width of the touching segment, across the stopped motion, centred where the platform touched [m]");
 }
 
 bool VisionExpert::inputsReady(const expert::Firing& firing) const {
@@ -167,7 +169,7 @@ void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t&
   if (tick == last_mapped_tick_) return;  // a re-sent FIRE: this frame is in the map already
   last_mapped_tick_ = tick;
   if (contact != nullptr && contact->touching && contact_radius_ > 0)
-    mapper_->markContact(contact->x, contact->y, contact_radius_);
+    mapper_->markContact(contact->x, contact->y, contact->heading, contact_width_, contact_radius_);
   // The same image from the same pose adds nothing (integrating is
   // idempotent): a robot standing in a still scene costs no mapping.
   if (sameView(depth, last_depth_)) return;

@@ -43,7 +43,8 @@ class VisionExpert : public expert::Expert {
   static bool sameSolids(const scene_objects_t& a, const scene_objects_t& b);
 
   ObstacleMapConfig map_config_;
-  double contact_radius_ = 0.15;  // a contact marks the cells this close to where the platform touched [m]
+  double contact_radius_ = 0.15;  // a contact marks the cells this close to ... [m]
+  double contact_width_ = 0.5;    // ... a segment this wide across the motion, where the platform touched [m]
   std::unique_ptr<ObstacleMapper> mapper_;
   double mapped_world_width_ = 0, mapped_world_height_ = 0;
   int64_t last_mapped_tick_ = -1;

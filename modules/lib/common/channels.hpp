@@ -15,6 +15,7 @@
 #include <beft/bb_query_t.hpp>
 #include <beft/bb_snapshot_t.hpp>
 #include <beft/camera_frame_t.hpp>
+#include <beft/contact_t.hpp>
 #include <beft/done_t.hpp>
 #include <beft/dynamic_weights_t.hpp>
 #include <beft/fire_t.hpp>
@@ -70,6 +71,7 @@ std::ostream& operator<<(std::ostream& out, Channel<Message> channel) { return o
   /* Sensor side (world process). */                                                         \
   X(kGroundTruth, "GT_OBJECTS", scene_objects_t)                                              \
   X(kRobotState, "ROBOT_STATE", robot_state_t)                                                \
+  X(kContact, "CONTACT", contact_t)                                                           \
   X(kCameraColor, "CAMERA_COLOR", camera_frame_t)                                             \
   X(kCameraDepth, "CAMERA_DEPTH", camera_frame_t)                                             \
   X(kCameraInstance, "CAMERA_INSTANCE", camera_frame_t)                                       \
@@ -129,7 +131,7 @@ inline const std::vector<ChannelEntry>& allChannels() {
 // left out). Runs are compared by these (tests, beft bench faults).
 inline bool isDataPlaneChannel(const std::string& channel) {
   static const std::set<std::string> names = {
-      kGroundTruth.name, kRobotState.name,  kCameraColor.name,    kCameraDepth.name,    kCameraInstance.name,
+      kGroundTruth.name, kRobotState.name,  kContact.name,        kCameraColor.name,    kCameraDepth.name,    kCameraInstance.name,
       kGeometry.name,    kVision.name,      kObstacleMap.name,    kAudio.name,          kLabelsVisual.name,
       kLabelsAcoustic.name, kHypotheses.name, kDynamicWeights.name, kTaskStack.name,   kTaskCommand.name,
       kRobotCommand.name,   kPlanRequest.name};

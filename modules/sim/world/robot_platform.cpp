@@ -270,6 +270,7 @@ StepOutcome RobotPlatform::step(double dt, const camera::SceneGeometry& scene) {
     const double step = std::hypot(dx, dy);
     contact_x_ = x_ + robot_.radius * dx / step;
     contact_y_ = y_ + robot_.radius * dy / step;
+    contact_heading_ = std::atan2(dy, dx) * 180.0 / M_PI;
   }
   if (outcome.collided) ++collisions_;
   return outcome;

@@ -93,6 +93,7 @@ class RobotPlatform {
   // The point of the footprint that touched, when collided(): its edge in the direction of motion.
   double contactX() const { return contact_x_; }
   double contactY() const { return contact_y_; }
+  double contactHeading() const { return contact_heading_; }  // of the stopped motion [deg]
   const scenario::Robot& description() const { return robot_; }
 
  private:
@@ -108,7 +109,7 @@ class RobotPlatform {
   double path_length_ = 0;
   int collisions_ = 0;
   bool collided_ = false;
-  double contact_x_ = 0, contact_y_ = 0;
+  double contact_x_ = 0, contact_y_ = 0, contact_heading_ = 0;
 };
 
 // Angle in (-180, 180] [deg].

@@ -151,6 +151,7 @@ beft::contact_t WorldSimulation::contact() const {
   contact.touching = robot_.collided();
   contact.x = robot_.collided() ? robot_.contactX() : 0.0;
   contact.y = robot_.collided() ? robot_.contactY() : 0.0;
+  contact.heading = robot_.collided() ? robot_.contactHeading() : 0.0;
   return contact;
 }
 

@@ -61,6 +61,7 @@ void feedTick(expert::Expert& e, int64_t tick, std::optional<std::pair<double, d
   bumper.touching = contact.has_value();
   bumper.x = contact ? contact->first : 0;
   bumper.y = contact ? contact->second : 0;
+  bumper.heading = 0;  // moving along +x
   ASSERT_TRUE(feed(e, channels::kContact, bumper));
 }
 
@@ -204,7 +205,9 @@ TEST(VisionExpert, AContactEntersTheMapAndNoViewClearsIt) {
   map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
   EXPECT_EQ(map.at(40, 50), obstacle_map_t::CELL_OCCUPIED);
   EXPECT_EQ(map.at(39, 49), obstacle_map_t::CELL_OCCUPIED);  // (3.95, 4.95): within 0.15 m too
-  EXPECT_NE(map.at(43, 50), obstacle_map_t::CELL_OCCUPIED);  // beyond the contact's 0.15 m
+  EXPECT_EQ(map.at(40, 52), obstacle_map_t::CELL_OCCUPIED);  // (4.05, 5.25): across the motion, within 0.25 m
+  EXPECT_NE(map.at(43, 50), obstacle_map_t::CELL_OCCUPIED);  // ahead, beyond the contact's 0.15 m
+  EXPECT_NE(map.at(40, 55), obstacle_map_t::CELL_OCCUPIED);  // across, beyond 0.25 + 0.15 m
 }
 
 TEST(VisionExpert, AnOccupiedCellOnlySeenIsClearedByTheSameView) {
@@ -220,7 +223,7 @@ TEST(VisionExpert, AnOccupiedCellOnlySeenIsClearedByTheSameView) {
                                {"victim"}, frames);
   mapper.integrate(vision::DepthFrameRays(frames.depth));
   EXPECT_EQ(mapper.cell(40, 50), obstacle_map_t::CELL_FREE);
-  mapper.markContact(4.05, 5.05, 0.15);
+  mapper.markContact(4.05, 5.05, 0.0, 0.0, 0.15);
   EXPECT_EQ(mapper.cell(40, 50), obstacle_map_t::CELL_OCCUPIED);
   mapper.integrate(vision::DepthFrameRays(frames.depth));
   EXPECT_EQ(mapper.cell(40, 50), obstacle_map_t::CELL_OCCUPIED);
