@@ -16,20 +16,47 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 }  // namespace
 
 KnownMap::KnownMap(planners::ObstacleCells cells, double radius) : cells_(std::move(cells)) {
+  radius_cells_ = std::max(0.0, radius / cells_.resolution);
+  // The world's border is a wall: the robot's disc stays inside.
+  border_ = static_cast<int>(std::ceil(radius_cells_ - 0.5));
+  // The offsets planners::inflate's kernel holds (squares closer than the radius).
+  if (radius_cells_ > 0) {
+    const int reach = static_cast<int>(std::ceil(radius_cells_)) + 1;
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx)
+        if (std::hypot(std::max(std::abs(dx) - 1, 0), std::max(std::abs(dy) - 1, 0)) < radius_cells_)
+          reach_offsets_.emplace_back(dx, dy);
+  } else {
+    reach_offsets_.emplace_back(0, 0);
+  }
+}
+
+const planners::GridMap& KnownMap::standing() const {
+  if (standing_) return *standing_;
   planners::GridMap occupied(cells_.width, cells_.height);
   for (int y = 0; y < cells_.height; ++y)
     for (int x = 0; x < cells_.width; ++x)
       if (cells_.at(x, y) == obstacle_map_t::CELL_OCCUPIED) occupied.setBlocked(x, y);
-  const double radius_cells = std::max(0.0, radius / cells_.resolution);
-  standing_ = planners::inflate(occupied, radius_cells);
-  // The world's border is a wall: the robot's disc stays inside.
-  const int border = static_cast<int>(std::ceil(radius_cells - 0.5));
-  if (border > 0) {
-    standing_.fillRect(0, 0, cells_.width - 1, border - 1);
-    standing_.fillRect(0, cells_.height - border, cells_.width - 1, cells_.height - 1);
-    standing_.fillRect(0, 0, border - 1, cells_.height - 1);
-    standing_.fillRect(cells_.width - border, 0, cells_.width - 1, cells_.height - 1);
+  planners::GridMap standing = planners::inflate(occupied, radius_cells_);
+  if (border_ > 0) {
+    standing.fillRect(0, 0, cells_.width - 1, border_ - 1);
+    standing.fillRect(0, cells_.height - border_, cells_.width - 1, cells_.height - 1);
+    standing.fillRect(0, 0, border_ - 1, cells_.height - 1);
+    standing.fillRect(cells_.width - border_, 0, cells_.width - 1, cells_.height - 1);
   }
+  standing_ = std::move(standing);
+  return *standing_;
+}
+
+bool KnownMap::standable(int x, int y) const {
+  if (!inside(x, y)) return false;
+  if (standing_) return !standing_->blocked(x, y);
+  if (x < border_ || y < border_ || x >= cells_.width - border_ || y >= cells_.height - border_) return false;
+  for (const auto& [dx, dy] : reach_offsets_) {
+    const int ox = x + dx, oy = y + dy;
+    if (inside(ox, oy) && cells_.at(ox, oy) == obstacle_map_t::CELL_OCCUPIED) return false;
+  }
+  return true;
 }
 
 uint8_t KnownMap::at(int x, int y) const {

@@ -39,9 +39,13 @@ class KnownMap {
   double centreX(int x) const { return cells_.origin_x + (x + 0.5) * cells_.resolution; }
   double centreY(int y) const { return cells_.origin_y + (y + 0.5) * cells_.resolution; }
 
-  // The robot may stand with its centre in this cell.
-  bool standable(int x, int y) const { return inside(x, y) && !standing_.blocked(x, y); }
-  const planners::GridMap& standing() const { return standing_; }
+  // The robot may stand with its centre in this cell. Answered from the
+  // whole inflated grid once standing() made it, else from the cell's own
+  // neighbourhood (the same answer): a map re-checked often and searched
+  // rarely is not inflated whole each time it changes.
+  bool standable(int x, int y) const;
+  // Every cell's answer at once (made on first use: the whole map is inflated).
+  const planners::GridMap& standing() const;
 
   // Straight line from (ax, ay) to (bx, by); occupied cells closer than
   // ignore_near_b to b (the target's own footprint) do not block it.
@@ -49,7 +53,10 @@ class KnownMap {
 
  private:
   planners::ObstacleCells cells_;
-  planners::GridMap standing_;  // 1 = the robot's centre may not be here
+  double radius_cells_ = 0;
+  int border_ = 0;                                   // cells along the world's edge that are never standable
+  std::vector<std::pair<int, int>> reach_offsets_;   // offsets of occupied cells that forbid standing
+  mutable std::optional<planners::GridMap> standing_;  // 1 = the robot's centre may not be here
 };
 
 // Travel distances [m] from the robot to every cell over standable cells

@@ -104,7 +104,16 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
         const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
         // Counted without the image's borders and range: what falls outside
         // them counts as occluded (spec/model.md, O_v).
-        expected_ = ray_caster_.expectedPixelsPerObject(solids, camera::withoutViewLimits(camera::cameraOfFrame(*instance)));
+        // Objects the real image cannot show at all (outside it on the
+        // wider plane) are out of view: 0 expected, O_v = 100, not counted.
+        const camera::Camera real = camera::cameraOfFrame(*instance);
+        const camera::Camera wide = camera::withoutViewLimits(real);
+        camera::RayCaster::PixelRect image;
+        image.u0 = (wide.intrinsics.width - real.intrinsics.width) / 2;
+        image.v0 = (wide.intrinsics.height - real.intrinsics.height) / 2;
+        image.u1 = image.u0 + real.intrinsics.width - 1;
+        image.v1 = image.v0 + real.intrinsics.height - 1;
+        expected_ = ray_caster_.expectedPixelsPerObject(solids, wide, &image);
         expected_pose_ = poseOf(*instance);
         expected_scene_ = *scene;
       }

@@ -410,7 +410,8 @@ void RayCaster::setThreads(int threads) {
 
 int RayCaster::threads() const { return workers_ ? workers_->threads() : 1; }
 
-std::vector<int> RayCaster::expectedPixelsPerObject(const SceneGeometry& scene, const Camera& camera) {
+std::vector<int> RayCaster::expectedPixelsPerObject(const SceneGeometry& scene, const Camera& camera,
+                                                    const PixelRect* only_touching) {
   // Rays only inside each solid's footprint, by the same formula (and order
   // of operations) as prepareRayRows, so the counts are those of full rays.
   prepareCamera(camera);
@@ -425,6 +426,10 @@ std::vector<int> RayCaster::expectedPixelsPerObject(const SceneGeometry& scene, 
     if (solid.object_index < 0 || solid.object_index >= static_cast<int>(counts.size())) continue;
     SolidFootprint footprint;
     if (!projectSolid(solid, footprint)) continue;
+    if (only_touching != nullptr &&
+        (footprint.u1 < only_touching->u0 || footprint.u0 > only_touching->u1 || footprint.v1 < only_touching->v0 ||
+         footprint.v0 > only_touching->v1))
+      continue;
     int count = 0;
     for (int v = footprint.v0; v <= footprint.v1; ++v) {
       const double b = row_b_[v];

@@ -67,8 +67,15 @@ class RayCaster {
   int threads() const;
   // For each object index, the number of pixels whose ray meets that object
   // within range if every other object were absent (the denominator of the
-  // visual occlusion O_v). Objects without a solid get 0.
-  std::vector<int> expectedPixelsPerObject(const SceneGeometry& scene, const Camera& camera);
+  // visual occlusion O_v). Objects without a solid get 0. With `only_touching`
+  // (pixel columns u0..u1, rows v0..v1 of this camera), only the solids whose
+  // projection reaches into that rectangle are counted, the others get 0:
+  // for a widened camera, the objects the real image cannot show at all.
+  struct PixelRect {
+    int u0 = 0, v0 = 0, u1 = -1, v1 = -1;
+  };
+  std::vector<int> expectedPixelsPerObject(const SceneGeometry& scene, const Camera& camera,
+                                           const PixelRect* only_touching = nullptr);
 
  private:
   struct SolidFootprint;  // a solid's covered pixel rectangle and nearest depth

@@ -70,6 +70,32 @@ TEST(KnownMap, StandableCellsKeepTheRobotClearOfObstaclesAndTheBorder) {
   EXPECT_EQ(map.at(-1, 0), kOccupied);
 }
 
+// A cell asked alone (its neighbourhood) and the whole inflated grid give
+// the same answer for every cell of a cluttered map, radii of several sizes.
+TEST(KnownMap, StandableAskedCellByCellIsTheInflatedGridsAnswer) {
+  auto cells = makeCells(12, 9, kFree);
+  uint64_t state = 12345;
+  for (auto& cell : cells.cells) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const int roll = static_cast<int>((state >> 33) % 100);
+    cell = roll < 3 ? kOccupied : roll < 20 ? kUnknown : kFree;
+  }
+  for (double radius : {0.0, 0.05, 0.3, 0.45, 0.72}) {
+    const KnownMap cell_by_cell(cells, radius);
+    const KnownMap whole(cells, radius);
+    const planners::GridMap& grid = whole.standing();
+    int standable = 0;
+    for (int y = -1; y <= cells.height; ++y)
+      for (int x = -1; x <= cells.width; ++x) {
+        const bool expected = whole.inside(x, y) && !grid.blocked(x, y);
+        ASSERT_EQ(cell_by_cell.standable(x, y), expected) << "radius " << radius << " cell " << x << ", " << y;
+        ASSERT_EQ(whole.standable(x, y), expected);
+        standable += expected;
+      }
+    EXPECT_GT(standable, 0) << radius;
+  }
+}
+
 TEST(KnownMap, SightIsBlockedByOccupiedCellsButNotByTheTargetItself) {
   auto cells = wallWorld();
   fillRect(cells, 11.8, 9.8, 12.2, 10.2, kOccupied);  // the target's own footprint

@@ -118,6 +118,31 @@ TEST(Camera, ObjectOutsideTheFieldOfViewIsAbsent) {
   EXPECT_EQ(turned.object[60 * 160 + 80], 0);
 }
 
+// On the widened camera, restricted to the real image's pixels: an object
+// the real image cannot show (50 deg left, behind) gets 0; one in view, or
+// across the image's edge, keeps the whole count of the widened plane.
+TEST(Camera, TheWidenedCountSkipsOnlyWhatTheRealImageCannotShow) {
+  SceneGeometry scene;
+  scene.addCylinder(0, 5.0, 5.0 * std::tan(50 * M_PI / 180), 0.0, 0.3, 1.8);  // 50 deg left, fov 90
+  scene.addCylinder(1, -5.0, 0.0, 0.0, 0.3, 1.8);                             // behind
+  scene.addCylinder(2, 5.0, 5.0 * std::tan(30 * M_PI / 180), 0.0, 0.3, 1.8);  // 30 deg left: in view
+  scene.addCylinder(3, 5.0, 5.0 * std::tan(45 * M_PI / 180), 0.0, 0.3, 1.8);  // across the left edge
+  scene.buildIndex();
+  const Camera real = levelCamera(0, 0, 1.5, 0);
+  const Camera wide = withoutViewLimits(real);
+  RayCaster caster;
+  const std::vector<int> all = caster.expectedPixelsPerObject(scene, wide);
+  RayCaster::PixelRect image{160, 120, 319, 239};
+  const std::vector<int> touching = caster.expectedPixelsPerObject(scene, wide, &image);
+  EXPECT_GT(all[0], 0);
+  EXPECT_EQ(touching[0], 0);
+  EXPECT_EQ(touching[1], 0);
+  EXPECT_GT(all[2], 0);
+  EXPECT_EQ(touching[2], all[2]);
+  EXPECT_GT(all[3], 0);
+  EXPECT_EQ(touching[3], all[3]);
+}
+
 TEST(Camera, GroundGivesDepthButNoObjectAndSkyGivesNothing) {
   SceneGeometry scene;
   scene.buildIndex();
