@@ -23,6 +23,7 @@
 #include "log_reader.hpp"
 #include "drawing.hpp"
 #include "map_picture.hpp"
+#include "run_identity.hpp"
 #include "run_record.hpp"
 #include "run_scoring.hpp"
 
@@ -37,12 +38,14 @@ struct TickImages {
   std::map<int64_t, beft::obstacle_map_t> maps;
 };
 
-// Damaged records are skipped (the run record reports them).
+// Damaged records are skipped (the run record reports them). The run's
+// channels carry its id: those of the log's run are read.
 TickImages readTickImages(const std::string& path) {
+  const int64_t run = wire::runId() != 0 ? wire::runId() : wire::runOfLog(path);
   wire::LogReader log(path);
   TickImages images;
   wire::LogEvent event;
-  while (log.next(event)) {
+  while (log.nextOfRun(event, run)) {
     if (event.channel == channels::kCameraColor) {
       beft::camera_frame_t frame{};
       if (wire::guardedDecode(event.data.data(), event.data.size(), frame).ok() &&
