@@ -40,6 +40,7 @@ class VisionExpert : public expert::Expert {
   // The same pose and the same pixels.
   static bool sameView(const camera_frame_t& a, const camera_frame_t& b);
   static bool sameSolids(const scene_objects_t& a, const scene_objects_t& b);
+  static bool unpackFrame(camera_frame_t& frame, std::string* why);
 
   ObstacleMapConfig map_config_;
   std::unique_ptr<ObstacleMapper> mapper_;
@@ -54,8 +55,9 @@ class VisionExpert : public expert::Expert {
   camera_frame_t expected_pose_{};     // header only: the pixels do not matter to it
   scene_objects_t expected_scene_{};
   expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
-  expert::TickInput<camera_frame_t> depth_{*this, channels::kCameraDepth, 4};
-  expert::TickInput<camera_frame_t> instance_{*this, channels::kCameraInstance, 4};
+  // Frames arrive compressed: unpacked (or refused, and counted) as they are kept.
+  expert::TickInput<camera_frame_t> depth_{*this, channels::kCameraDepth, 4, unpackFrame};
+  expert::TickInput<camera_frame_t> instance_{*this, channels::kCameraInstance, 4, unpackFrame};
   expert::HelperTask percepting_;  // last: its thread ends before the state it works on goes
   // To resume after a restart; its own map heard back is not decoded.
   expert::HandledInput<obstacle_map_t> previous_map_{

@@ -52,15 +52,24 @@ class InputPortBase {
 
 // Messages kept by the tick they belong to (every type an expert reads this
 // way carries `utime` and `tick`), looked up by the tick a firing is for.
+// admit, when given, checks each decoded message before it is kept and may
+// unpack it in place (a camera frame's pixels); a message it refuses is
+// counted under the channel like the guard's refusals, with its reason.
 template <typename Message>
 class TickInput : public InputPortBase {
  public:
-  TickInput(Expert& owner, channels::Channel<Message> channel, std::size_t capacity = 16)
-      : InputPortBase(owner, channel.name, channel.typeName()), history_(capacity) {}
+  using Admit = std::function<bool(Message& message, std::string* why)>;
+  TickInput(Expert& owner, channels::Channel<Message> channel, std::size_t capacity = 16, Admit admit = {})
+      : InputPortBase(owner, channel.name, channel.typeName()), history_(capacity), admit_(std::move(admit)) {}
 
   bool receive(const void* data, int size) override {
     Message message{};
     if (!decodeMessage(channel(), data, size, message)) return false;
+    std::string why;
+    if (admit_ && !admit_(message, &why)) {
+      wire::processRejects().count(channel(), {wire::Fault::kBadPayload, ""}, why);
+      return false;
+    }
     const int64_t utime = message.utime;
     history_.store(std::move(message), utime);  // moved: a camera frame's pixels are not copied again
     return true;
@@ -84,6 +93,7 @@ class TickInput : public InputPortBase {
 
  private:
   blackboard::ChannelHistory<Message> history_;
+  Admit admit_;
 };
 
 // Each message handed, decoded, to a handler of the expert's (a queue of
