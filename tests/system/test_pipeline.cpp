@@ -467,3 +467,58 @@ TEST(Render, WritesOneFramePerRenderedTickFromALog) {
   const auto bad = runCommand(binDir() + "/beft-replay " + log_path + " --to " + dir + "/x.mp4 --module fusion", 30);
   EXPECT_NE(bad.exit_code, 0);  // --to and --module exclude each other
 }
+
+// --record-camera every:5 keeps the frames of ticks 0, 5, 10, ... and every
+// other message; a replay of the vision expert says the log lacks the rest.
+TEST(RecordCamera, EveryFifthTickKeepsExactlyThoseFramesAndAVisionReplaySaysWhatIsMissing) {
+  const auto& full = shortYardRun();
+  ASSERT_EQ(full.result.exit_code, 0) << full.result.output;
+  std::string dir;
+  std::vector<LoggedMessage> log;
+  std::map<std::string, std::vector<int64_t>> frame_ticks;
+  std::vector<int64_t> expected_ticks;
+  for (int64_t tick = 0; tick < kShortTicks; tick += 5) expected_ticks.push_back(tick);
+  // The recorder hears the run over UDP: a run whose log lost a frame is recorded again.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    dir = makeTempDir("record_camera");
+    const auto result = runCommand(binDir() + "/beft-run " + sourceDir() + "/scenarios/yard.xml --max-ticks " +
+                                       std::to_string(kShortTicks) + " --record-camera every:5 --no-report --out " + dir,
+                                   300);
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("camera frames recorded: every:5"), std::string::npos) << result.output;
+    log = readLog(dir + "/run.lcmlog");
+    frame_ticks.clear();
+    for (const char* channel : {"CAMERA_COLOR", "CAMERA_DEPTH", "CAMERA_INSTANCE"})
+      for (const auto& frame : messagesOn<beft::camera_frame_t>(log, channel))
+        frame_ticks[channel].push_back(frame.tick);
+    bool whole = true;
+    for (const auto& [channel, ticks] : frame_ticks) whole = whole && ticks.size() == expected_ticks.size();
+    if (whole) break;
+  }
+  ASSERT_EQ(frame_ticks.size(), 3u);
+  for (const auto& [channel, ticks] : frame_ticks) EXPECT_EQ(ticks, expected_ticks) << channel;
+  // Every other data message is that of the run that kept every frame.
+  std::vector<LoggedMessage> full_without_frames;
+  for (const auto& event : full.log)
+    if (event.channel.rfind("CAMERA_", 0) != 0) full_without_frames.push_back(event);
+  const DataComparison comparison = compareDataMessages(full_without_frames, log);
+  EXPECT_GT(comparison.expected, 200u);
+  EXPECT_GE(comparison.compared, comparison.expected * 99 / 100);
+  EXPECT_EQ(comparison.differing, 0u) << comparison.first_difference;
+  const DataComparison frames = compareDataMessages(full.log, log);
+  EXPECT_EQ(frames.differing, 0u) << "a kept frame differs: " << frames.first_difference;
+
+  const auto vision = runCommand(binDir() + "/beft-replay " + dir + "/run.lcmlog --module vision", 120);
+  EXPECT_EQ(vision.exit_code, 4) << vision.output;
+  EXPECT_NE(vision.output.find("INCOMPLETE LOG"), std::string::npos) << vision.output;
+  EXPECT_NE(vision.output.find("the log lacks inputs of " + std::to_string(kShortTicks - expected_ticks.size()) +
+                               " of the " + std::to_string(kShortTicks) + " firings"),
+            std::string::npos)
+      << vision.output;
+  EXPECT_NE(vision.output.find("CAMERA_DEPTH ("), std::string::npos) << vision.output;
+  EXPECT_NE(vision.output.find("--record-camera"), std::string::npos) << vision.output;
+  // An expert that reads no frame replays as from a full log.
+  const auto fusion = runCommand(binDir() + "/beft-replay " + dir + "/run.lcmlog --module fusion", 120);
+  EXPECT_EQ(fusion.exit_code, 0) << fusion.output;
+  EXPECT_NE(fusion.output.find("EXACT MATCH"), std::string::npos) << fusion.output;
+}

@@ -44,6 +44,12 @@ class InputPortBase {
   const std::string& type() const { return type_; }
   // Decodes and keeps one received message; false if the bytes are not one.
   virtual bool receive(const void* data, int size) = 0;
+  // Whether the port keeps inputs by tick and has none of this one (what a
+  // firing of that tick lacks; replay reports it).
+  virtual bool lacksTick(int64_t tick) const {
+    (void)tick;
+    return false;
+  }
 
  private:
   const char* channel_;
@@ -90,6 +96,7 @@ class TickInput : public InputPortBase {
   }
   bool has(int64_t tick) const { return ofTick(tick) != nullptr; }
   bool empty() const { return history_.empty(); }
+  bool lacksTick(int64_t tick) const override { return !has(tick); }
 
  private:
   blackboard::ChannelHistory<Message> history_;

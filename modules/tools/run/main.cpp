@@ -107,7 +107,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--record-camera", o.record_camera,
                  "camera frames kept in run.lcmlog: all, none, or every:N (those of ticks 0, N, 2N, ...); the "
                  "live processes get every frame. A log without all of them cannot replay the vision expert "
-                 "exactly, and a vision expert restarted mid-run resumes without the frames left out")
+                 "(beft-replay says so), and a vision expert restarted mid-run resumes without the frames left out")
       ->capture_default_str()
       ->check([](const std::string& text) {
         try {

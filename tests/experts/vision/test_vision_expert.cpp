@@ -224,6 +224,8 @@ TEST(VisionExpert, ADamagedCompressedFrameIsRefusedAndCountedAndTheTickWaits) {
   EXPECT_EQ(count(after, channels::kCameraDepth), count(before, channels::kCameraDepth) + 1);
   EXPECT_EQ(count(after, channels::kCameraInstance), count(before, channels::kCameraInstance) + 1);
   EXPECT_FALSE(vision.inputsReady(firingFor(3, 1)));
+  EXPECT_EQ(vision.inputsLacking(firingFor(3, 1)),
+            (std::vector<std::string>{channels::kCameraDepth, channels::kCameraInstance}));
   // The intact frames, arriving after, are taken.
   ASSERT_TRUE(feed(vision, channels::kCameraDepth, packed.depth));
   ASSERT_TRUE(feed(vision, channels::kCameraInstance, packed.instance));
