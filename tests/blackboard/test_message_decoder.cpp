@@ -182,6 +182,7 @@ TEST(MessageDecoder, ByteArraysAreSummarisedAndLongArraysCut) {
   beft::camera_frame_t frame{};
   frame.utime = 5;
   frame.encoding = beft::camera_frame_t::ENCODING_DEPTH_MM16;
+  frame.compression = beft::camera_frame_t::COMPRESSION_ZSTD;
   frame.width = 4;
   frame.height = 2;
   frame.data.assign(16, 7);
@@ -189,6 +190,7 @@ TEST(MessageDecoder, ByteArraysAreSummarisedAndLongArraysCut) {
   const std::string frame_text = describe("CAMERA_DEPTH", encode(frame));
   EXPECT_TRUE(hasLine(frame_text, "data: <16 bytes>")) << frame_text;
   EXPECT_TRUE(hasLine(frame_text, "encoding: 1 (ENCODING_DEPTH_MM16)")) << frame_text;
+  EXPECT_TRUE(hasLine(frame_text, "compression: 1 (COMPRESSION_ZSTD)")) << frame_text;
   EXPECT_TRUE(hasLine(frame_text, "instance_ids: []")) << frame_text;
 
   beft::object_labels_t labels{};

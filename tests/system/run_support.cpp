@@ -13,7 +13,11 @@
 #include <stdexcept>
 #include <thread>
 
+#include <beft/camera_frame_t.hpp>
+
 #include "channels.hpp"
+#include "frame_decoding.hpp"
+#include "guarded_decode.hpp"
 #include "log_reader.hpp"
 #include "message_check.hpp"
 #include "run_identity.hpp"
@@ -121,12 +125,29 @@ DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected_lo
   return result;
 }
 
+namespace {
+
+// A camera frame as its pixels: what the digest pins is the image, not how
+// zstd (whose version may change its bytes) packed it.
+std::vector<uint8_t> unpackedFrame(const std::vector<uint8_t>& data) {
+  beft::camera_frame_t frame{};
+  if (!wire::guardedDecode(data.data(), data.size(), frame).ok() || !camera::decodeCameraFrame(frame)) return data;
+  std::vector<uint8_t> bytes(frame.getEncodedSize());
+  frame.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  return bytes;
+}
+
+}  // namespace
+
 std::map<std::string, ChannelDigest> dataDigests(const std::vector<LoggedMessage>& log) {
   std::map<std::string, ChannelDigest> digests;
   for (const auto& [key, data] : dataMessages(log)) {
-    ChannelDigest& digest = digests[std::get<0>(key)];
+    const std::string& channel = std::get<0>(key);
+    ChannelDigest& digest = digests[channel];
     ++digest.count;
-    for (const uint8_t byte : data) digest.hash = (digest.hash ^ byte) * 1099511628211ull;  // FNV-1a prime
+    const bool camera = channels::typeOfChannel(channel) == lcmTypeName<beft::camera_frame_t>();
+    for (const uint8_t byte : camera ? unpackedFrame(data) : data)
+      digest.hash = (digest.hash ^ byte) * 1099511628211ull;  // FNV-1a prime
   }
   return digests;
 }

@@ -63,9 +63,10 @@ struct DataComparison {
 DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected, const std::vector<LoggedMessage>& actual);
 
 // A compact fingerprint of a run's data messages, per channel: how many and
-// a 64-bit FNV-1a hash over their bytes in DataKey order. Pinned in
+// a 64-bit FNV-1a hash over their bytes in DataKey order (a camera frame's
+// bytes once unpacked: its pixels, whatever zstd made of them). Pinned in
 // tests/system/data/ so a change that should alter no message can be checked
-// against the build before it without keeping its 85 MB logs.
+// against the build before it without keeping its logs.
 struct ChannelDigest {
   std::size_t count = 0;
   uint64_t hash = 1469598103934665603ull;  // FNV-1a offset basis

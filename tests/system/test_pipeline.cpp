@@ -19,9 +19,11 @@
 #include <beft/labels_t.hpp>
 #include <beft/plan_request_t.hpp>
 #include <beft/acoustic_percepts_t.hpp>
+#include <beft/camera_frame_t.hpp>
 #include <beft/scene_objects_t.hpp>
 #include <beft/visual_percepts_t.hpp>
 
+#include "frame_decoding.hpp"
 #include "model.hpp"
 #include "run_identity.hpp"
 #include "run_support.hpp"
@@ -266,6 +268,20 @@ TEST(Replay, FusionAndVisualLabelsMatchTheRecordedRunExactly) {
   }
 }
 
+TEST(Replay, VisionMatchesTheRecordedRunExactlyFromItsCompressedFrames) {
+  const auto& run = shortYardRun();
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  int compressed = 0;
+  for (const char* channel : {"CAMERA_DEPTH", "CAMERA_INSTANCE"})
+    for (const auto& frame : messagesOn<beft::camera_frame_t>(run.log, channel))
+      compressed += frame.compression != beft::camera_frame_t::COMPRESSION_NONE;
+  EXPECT_GE(compressed, 2 * (kShortTicks - 1)) << "the frames the replay reads were not compressed";
+  const auto replay = runCommand(binDir() + "/beft-replay " + run.dir + "/run.lcmlog --module vision", 120);
+  EXPECT_EQ(replay.exit_code, 0) << replay.output;
+  EXPECT_NE(replay.output.find("EXACT MATCH"), std::string::npos) << replay.output;
+  EXPECT_NE(replay.output.find(std::to_string(kShortTicks) + " firings"), std::string::npos) << replay.output;
+}
+
 TEST(Replay, AChangedParameterShowsTheDifference) {
   const auto& run = shortYardRun();
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
@@ -397,8 +413,9 @@ TEST(Launch, APlannerStartedLateChangesNothing) {
 }
 
 // A short run of peek.xml recorded when the message types were first fixed:
-// old logs must stay readable (types change by adding new ones, never by
-// editing old ones) and replay exactly.
+// old logs must stay readable (types change by adding new ones; the one
+// edited since, camera_frame_t, is read from its earlier layout by the log
+// reader) and replay exactly.
 TEST(OldLogs, ACommittedLogStillDecodesAndReplaysExactly) {
   const std::string log_path = sourceDir() + "/tests/system/data/peek_6_ticks.lcmlog";
   const auto log = readLog(log_path);
@@ -420,6 +437,15 @@ TEST(OldLogs, ACommittedLogStillDecodesAndReplaysExactly) {
   check(beft::acoustic_percepts_t{}, "AUDIO");
   check(beft::labels_t{}, "LABELS_VISUAL");
   check(beft::labels_t{}, "LABELS_ACOUSTIC");
+  // Recorded before camera_frame_t gained `compression`: read in today's layout, raw.
+  for (const char* channel : {"CAMERA_COLOR", "CAMERA_DEPTH", "CAMERA_INSTANCE"}) {
+    check(beft::camera_frame_t{}, channel);
+    for (auto frame : messagesOn<beft::camera_frame_t>(log, channel)) {
+      std::string why;
+      EXPECT_EQ(frame.compression, beft::camera_frame_t::COMPRESSION_NONE);
+      EXPECT_TRUE(beft::camera::decodeCameraFrame(frame, &why)) << channel << ": " << why;
+    }
+  }
   for (const auto& [channel, count] : decoded) EXPECT_GT(count, 0) << channel;
   for (const char* module : {"fusion", "visual_labels", "acoustic_labels", "geometry"}) {
     const auto replay = runCommand(binDir() + "/beft-replay " + log_path + " --module " + module, 120);
@@ -440,4 +466,59 @@ TEST(Render, WritesOneFramePerRenderedTickFromALog) {
   EXPECT_NE(header.find("P   N   G"), std::string::npos) << header;
   const auto bad = runCommand(binDir() + "/beft-replay " + log_path + " --to " + dir + "/x.mp4 --module fusion", 30);
   EXPECT_NE(bad.exit_code, 0);  // --to and --module exclude each other
+}
+
+// --record-camera every:5 keeps the frames of ticks 0, 5, 10, ... and every
+// other message; a replay of the vision expert says the log lacks the rest.
+TEST(RecordCamera, EveryFifthTickKeepsExactlyThoseFramesAndAVisionReplaySaysWhatIsMissing) {
+  const auto& full = shortYardRun();
+  ASSERT_EQ(full.result.exit_code, 0) << full.result.output;
+  std::string dir;
+  std::vector<LoggedMessage> log;
+  std::map<std::string, std::vector<int64_t>> frame_ticks;
+  std::vector<int64_t> expected_ticks;
+  for (int64_t tick = 0; tick < kShortTicks; tick += 5) expected_ticks.push_back(tick);
+  // The recorder hears the run over UDP: a run whose log lost a frame is recorded again.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    dir = makeTempDir("record_camera");
+    const auto result = runCommand(binDir() + "/beft-run " + sourceDir() + "/scenarios/yard.xml --max-ticks " +
+                                       std::to_string(kShortTicks) + " --record-camera every:5 --no-report --out " + dir,
+                                   300);
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("camera frames recorded: every:5"), std::string::npos) << result.output;
+    log = readLog(dir + "/run.lcmlog");
+    frame_ticks.clear();
+    for (const char* channel : {"CAMERA_COLOR", "CAMERA_DEPTH", "CAMERA_INSTANCE"})
+      for (const auto& frame : messagesOn<beft::camera_frame_t>(log, channel))
+        frame_ticks[channel].push_back(frame.tick);
+    bool whole = true;
+    for (const auto& [channel, ticks] : frame_ticks) whole = whole && ticks.size() == expected_ticks.size();
+    if (whole) break;
+  }
+  ASSERT_EQ(frame_ticks.size(), 3u);
+  for (const auto& [channel, ticks] : frame_ticks) EXPECT_EQ(ticks, expected_ticks) << channel;
+  // Every other data message is that of the run that kept every frame.
+  std::vector<LoggedMessage> full_without_frames;
+  for (const auto& event : full.log)
+    if (event.channel.rfind("CAMERA_", 0) != 0) full_without_frames.push_back(event);
+  const DataComparison comparison = compareDataMessages(full_without_frames, log);
+  EXPECT_GT(comparison.expected, 200u);
+  EXPECT_GE(comparison.compared, comparison.expected * 99 / 100);
+  EXPECT_EQ(comparison.differing, 0u) << comparison.first_difference;
+  const DataComparison frames = compareDataMessages(full.log, log);
+  EXPECT_EQ(frames.differing, 0u) << "a kept frame differs: " << frames.first_difference;
+
+  const auto vision = runCommand(binDir() + "/beft-replay " + dir + "/run.lcmlog --module vision", 120);
+  EXPECT_EQ(vision.exit_code, 4) << vision.output;
+  EXPECT_NE(vision.output.find("INCOMPLETE LOG"), std::string::npos) << vision.output;
+  EXPECT_NE(vision.output.find("the log lacks inputs of " + std::to_string(kShortTicks - expected_ticks.size()) +
+                               " of the " + std::to_string(kShortTicks) + " firings"),
+            std::string::npos)
+      << vision.output;
+  EXPECT_NE(vision.output.find("CAMERA_DEPTH ("), std::string::npos) << vision.output;
+  EXPECT_NE(vision.output.find("--record-camera"), std::string::npos) << vision.output;
+  // An expert that reads no frame replays as from a full log.
+  const auto fusion = runCommand(binDir() + "/beft-replay " + dir + "/run.lcmlog --module fusion", 120);
+  EXPECT_EQ(fusion.exit_code, 0) << fusion.output;
+  EXPECT_NE(fusion.output.find("EXACT MATCH"), std::string::npos) << fusion.output;
 }

@@ -13,6 +13,8 @@ const camera_frame_t& checkedDepthFrame(const camera_frame_t& depth) {
   if (depth.encoding != camera_frame_t::ENCODING_DEPTH_MM16)
     throw std::invalid_argument("depth frame has encoding " + std::to_string(depth.encoding) +
                                 ", expected DEPTH_MM16");
+  if (depth.compression != camera_frame_t::COMPRESSION_NONE)
+    throw std::invalid_argument("depth frame still compressed (camera::decodeCameraFrame unpacks it)");
   if (depth.width <= 0 || depth.height <= 0) throw std::invalid_argument("depth frame has no pixels");
   const std::size_t pixels = static_cast<std::size_t>(depth.width) * static_cast<std::size_t>(depth.height);
   if (depth.data.size() != 2 * pixels)

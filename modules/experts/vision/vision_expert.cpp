@@ -6,6 +6,7 @@
 #include "camera_model.hpp"
 #include "channels.hpp"
 #include "depth_rays.hpp"
+#include "frame_decoding.hpp"
 #include "log.hpp"
 #include "obstacle_map_codec.hpp"
 #include "scene_geometry.hpp"
@@ -68,6 +69,10 @@ camera_frame_t VisionExpert::poseOf(const camera_frame_t& frame) {
 
 bool VisionExpert::sameView(const camera_frame_t& a, const camera_frame_t& b) {
   return samePose(a, b) && a.data == b.data;
+}
+
+bool VisionExpert::unpackFrame(camera_frame_t& frame, std::string* why) {
+  return camera::decodeCameraFrame(frame, why);
 }
 
 // Two scenes hold the same solids: same objects with the same shapes and poses.

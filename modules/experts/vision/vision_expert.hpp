@@ -41,6 +41,7 @@ class VisionExpert : public expert::Expert {
   // The same pose and the same pixels.
   static bool sameView(const camera_frame_t& a, const camera_frame_t& b);
   static bool sameSolids(const scene_objects_t& a, const scene_objects_t& b);
+  static bool unpackFrame(camera_frame_t& frame, std::string* why);
 
   ObstacleMapConfig map_config_;
   double contact_radius_ = 0.15;  // a contact marks the cells this close to ... [m]
@@ -57,11 +58,12 @@ class VisionExpert : public expert::Expert {
   camera_frame_t expected_pose_{};     // header only: the pixels do not matter to it
   scene_objects_t expected_scene_{};
   expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
-  expert::TickInput<camera_frame_t> depth_{*this, channels::kCameraDepth, 4};
-  expert::TickInput<camera_frame_t> instance_{*this, channels::kCameraInstance, 4};
+  // Frames arrive compressed: unpacked (or refused, and counted) as they are kept.
+  expert::TickInput<camera_frame_t> depth_{*this, channels::kCameraDepth, 4, unpackFrame};
+  expert::TickInput<camera_frame_t> instance_{*this, channels::kCameraInstance, 4, unpackFrame};
   // The bumper. A world that publishes CONTACT does so every tick: once one
   // was heard, each firing waits for its tick's (logs from before have none).
-  expert::TickInput<contact_t> contact_{*this, channels::kContact};
+  expert::TickInput<contact_t> contact_{*this, channels::kContact, 16, {}, /*optional_until_heard=*/true};
   expert::HelperTask percepting_;  // last: its thread ends before the state it works on goes
   // To resume after a restart; its own map heard back is not decoded.
   expert::HandledInput<obstacle_map_t> previous_map_{

@@ -11,6 +11,8 @@ std::vector<int> countVisiblePixels(const camera_frame_t& instance, const scene_
   if (instance.encoding != camera_frame_t::ENCODING_INSTANCE16)
     throw std::invalid_argument("instance frame has encoding " + std::to_string(instance.encoding) +
                                 ", expected INSTANCE16");
+  if (instance.compression != camera_frame_t::COMPRESSION_NONE)
+    throw std::invalid_argument("instance frame still compressed (camera::decodeCameraFrame unpacks it)");
   if (instance.width < 0 || instance.height < 0) throw std::invalid_argument("instance frame has a negative size");
   const std::size_t pixels = static_cast<std::size_t>(instance.width) * static_cast<std::size_t>(instance.height);
   if (instance.data.size() != 2 * pixels)

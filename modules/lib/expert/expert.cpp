@@ -44,6 +44,13 @@ void Expert::startUp(const Parameters& given) {
   onStartUp();
 }
 
+std::vector<std::string> Expert::inputsLacking(const Firing& firing) const {
+  std::vector<std::string> lacking;
+  for (const auto* port : inputs_)
+    if (port->lacksTick(firing.tick)) lacking.push_back(port->channel());
+  return lacking;
+}
+
 bool Expert::onMessage(const std::string& channel, const void* data, int size) {
   for (auto* port : inputs_)
     if (channel == port->channel()) return port->receive(data, size);

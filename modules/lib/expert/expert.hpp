@@ -107,6 +107,8 @@ class Expert {
   // True when what this firing needs has arrived (e.g. the inputs of its tick).
   // The runner waits a bounded time for it, then fires anyway with a warning.
   virtual bool inputsReady(const Firing& firing) const { (void)firing; return true; }
+  // The channels read by tick that hold nothing of the firing's tick.
+  std::vector<std::string> inputsLacking(const Firing& firing) const;
   // Compute from what was stored, publish through out, say how it went.
   virtual Outcome fire(const Firing& firing, Output& out) = 0;
 

@@ -157,6 +157,11 @@ class Runner {
       heartbeat_->setState(false, last_fired_id_);
     }
     logged_recently_ = std::move(state.logged_recently);
+    if (state.firings_lacking_inputs > 0)
+      log::warn("the run's log lacks inputs of ", state.firings_lacking_inputs, " of the ", state.firings,
+                " firings replayed (", describeLackingInputs(state.lacking_inputs),
+                "): the state rebuilt misses what they held, and this process's outputs may differ from those of "
+                "a run in which it never died");
     log::info("resumed from ", options_.resume_log, ": ", state.firings, " firings and ", state.inputs,
               " inputs replayed", state.in_flight ? "; firing " + std::to_string(state.in_flight->firing_id) +
                                                         " was in flight and is awaited from the arbiter"

@@ -100,6 +100,10 @@ class LogFeeder {
 
   void firePending() {
     if (!pending_) return;
+    if (!expert_.inputsReady(*pending_)) {
+      ++firings_lacking_inputs_;
+      for (const std::string& channel : expert_.inputsLacking(*pending_)) ++lacking_inputs_[channel];
+    }
     before_fire_(*pending_);
     try {
       expert_.fire(*pending_, output_);
@@ -113,6 +117,8 @@ class LogFeeder {
 
   int64_t lastFiringId() const { return last_firing_id_; }
   int64_t firings() const { return firings_; }
+  int64_t firingsLackingInputs() const { return firings_lacking_inputs_; }
+  const std::map<std::string, int64_t>& lackingInputs() const { return lacking_inputs_; }
   const std::optional<Firing>& lastFired() const { return last_fired_; }
   const std::optional<Firing>& inFlight() const { return in_flight_; }
   void onBeforeFire(std::function<void(const Firing&)> callback) { before_fire_ = std::move(callback); }
@@ -127,6 +133,8 @@ class LogFeeder {
   std::optional<Firing> pending_, last_fired_, in_flight_;
   int64_t last_firing_id_ = -1;
   int64_t firings_ = 0;
+  int64_t firings_lacking_inputs_ = 0;
+  std::map<std::string, int64_t> lacking_inputs_;
 };
 
 class DiscardingOutput : public Output {
@@ -198,6 +206,8 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
   }
   feeder.firePending();
   result.firings = feeder.firings();
+  result.firings_lacking_inputs = feeder.firingsLackingInputs();
+  result.lacking_inputs = feeder.lackingInputs();
   result.log_damage = log.damage().summary();
 
   compareFirings(recorded, output.captured, result);
@@ -225,6 +235,8 @@ ResumeState resumeFromLog(Expert& expert, const std::string& process_name, const
   }
   feeder.firePending();
   state.firings = feeder.firings();
+  state.firings_lacking_inputs = feeder.firingsLackingInputs();
+  state.lacking_inputs = feeder.lackingInputs();
   state.last_fired = feeder.lastFired();
   if (state.last_fired) {
     auto done = dones.find(state.last_fired->firing_id);
@@ -237,6 +249,15 @@ ResumeState resumeFromLog(Expert& expert, const std::string& process_name, const
   return state;
 }
 
+std::string describeLackingInputs(const std::map<std::string, int64_t>& lacking_inputs) {
+  std::string text;
+  for (const auto& [channel, firings] : lacking_inputs) {
+    if (!text.empty()) text += ", ";
+    text += channel + " (" + std::to_string(firings) + (firings == 1 ? " firing)" : " firings)");
+  }
+  return text;
+}
+
 void printReplayResult(const ReplayResult& result, const std::string& process_name,
                        const std::function<std::string(const std::string&, const std::vector<uint8_t>&)>& describe) {
   std::printf("replay of %s: %lld firings, %lld/%lld outputs match", process_name.c_str(),
@@ -247,8 +268,21 @@ void printReplayResult(const ReplayResult& result, const std::string& process_na
     std::printf(", %lld produced but not in the log (lost by the logger, or new output)",
                 static_cast<long long>(result.replayed_only));
   if (!result.log_damage.empty()) std::printf("\nlog: %s", result.log_damage.c_str());
-  std::printf("\n%s\n", result.exactMatch() ? "EXACT MATCH" : "DIFFERENCES FOUND");
+  if (result.firings_lacking_inputs > 0) {
+    bool camera = false;
+    for (const auto& [channel, _] : result.lacking_inputs) camera = camera || channel.rfind("CAMERA_", 0) == 0;
+    std::printf("\nthe log lacks inputs of %lld of the %lld firings: nothing of their tick on %s%s",
+                static_cast<long long>(result.firings_lacking_inputs), static_cast<long long>(result.firings),
+                describeLackingInputs(result.lacking_inputs).c_str(),
+                camera ? " (a run recorded with --record-camera every:N or none keeps the camera frames of some "
+                         "ticks only, or none; record with --record-camera all to replay this expert)"
+                       : "");
+  }
+  std::printf("\n%s\n", result.exactMatch()       ? "EXACT MATCH"
+                          : result.logLacksInputs() ? "INCOMPLETE LOG: the outputs cannot be compared"
+                                                    : "DIFFERENCES FOUND");
   if (result.firings == 0) std::printf("(no FIRE for '%s' in the log)\n", process_name.c_str());
+  if (result.logLacksInputs()) return;  // differences of firings without their inputs tell nothing
   for (const auto& mismatch : result.first_mismatches) {
     std::printf("\nfirst difference on %s, firing %lld:\n", mismatch.channel.c_str(),
                 static_cast<long long>(mismatch.index));

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -29,12 +30,20 @@ struct ReplayResult {
   int64_t replayed_only = 0;     // replayed outputs absent from the log (a lost datagram, or new output)
   std::vector<ReplayMismatch> first_mismatches;  // up to a few
   std::string log_damage;                        // what the log reader skipped, "" if nothing
+  // Firings the log held not every input of (their tick's camera frames in a
+  // log recorded with --record-camera every:N or none, ...): fired anyway,
+  // as live after the wait, so their outputs differ from the run's.
+  int64_t firings_lacking_inputs = 0;
+  std::map<std::string, int64_t> lacking_inputs;  // per channel: firings it held nothing of the tick for
   // Every output the log recorded was produced again, identical, in the same
   // firing. Outputs missing from the log are reported, not counted against it:
   // the logger hears the run over UDP and may lose a datagram.
   bool exactMatch() const {
     return firings > 0 && outputs_compared > 0 && outputs_compared == outputs_matching && recorded_only == 0;
   }
+  // Not exact, and the log lacks inputs the expert needs: the log, not the
+  // expert, is why (exit code 4 of a replay rather than 3).
+  bool logLacksInputs() const { return !exactMatch() && firings_lacking_inputs > 0; }
 };
 
 // Feeds the logged messages on expert.reads() to onMessage in log order,
@@ -56,7 +65,12 @@ struct ResumeState {
   // messageFingerprint of the inputs logged in the last second before the
   // live sockets opened: their live copies are dropped once each.
   std::multiset<uint64_t> logged_recently;
+  int64_t firings_lacking_inputs = 0;  // replayed without all their inputs: the state rebuilt misses them
+  std::map<std::string, int64_t> lacking_inputs;
 };
+
+// "CAMERA_DEPTH (446 firings), CAMERA_INSTANCE (446 firings)".
+std::string describeLackingInputs(const std::map<std::string, int64_t>& lacking_inputs);
 
 // live_since_us: when the process's live sockets opened [us since the epoch].
 ResumeState resumeFromLog(Expert& expert, const std::string& process_name, const std::string& log_path,

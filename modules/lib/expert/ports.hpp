@@ -44,6 +44,12 @@ class InputPortBase {
   const std::string& type() const { return type_; }
   // Decodes and keeps one received message; false if the bytes are not one.
   virtual bool receive(const void* data, int size) = 0;
+  // Whether the port keeps inputs by tick and has none of this one (what a
+  // firing of that tick lacks; replay reports it).
+  virtual bool lacksTick(int64_t tick) const {
+    (void)tick;
+    return false;
+  }
 
  private:
   const char* channel_;
@@ -52,15 +58,29 @@ class InputPortBase {
 
 // Messages kept by the tick they belong to (every type an expert reads this
 // way carries `utime` and `tick`), looked up by the tick a firing is for.
+// admit, when given, checks each decoded message before it is kept and may
+// unpack it in place (a camera frame's pixels); a message it refuses is
+// counted under the channel like the guard's refusals, with its reason.
 template <typename Message>
 class TickInput : public InputPortBase {
  public:
-  TickInput(Expert& owner, channels::Channel<Message> channel, std::size_t capacity = 16)
-      : InputPortBase(owner, channel.name, channel.typeName()), history_(capacity) {}
+  using Admit = std::function<bool(Message& message, std::string* why)>;
+  // optional_until_heard: an input older logs lack; nothing is missing until one was heard.
+  TickInput(Expert& owner, channels::Channel<Message> channel, std::size_t capacity = 16, Admit admit = {},
+            bool optional_until_heard = false)
+      : InputPortBase(owner, channel.name, channel.typeName()),
+        history_(capacity),
+        admit_(std::move(admit)),
+        optional_until_heard_(optional_until_heard) {}
 
   bool receive(const void* data, int size) override {
     Message message{};
     if (!decodeMessage(channel(), data, size, message)) return false;
+    std::string why;
+    if (admit_ && !admit_(message, &why)) {
+      wire::processRejects().count(channel(), {wire::Fault::kBadPayload, ""}, why);
+      return false;
+    }
     const int64_t utime = message.utime;
     history_.store(std::move(message), utime);  // moved: a camera frame's pixels are not copied again
     return true;
@@ -81,9 +101,12 @@ class TickInput : public InputPortBase {
   }
   bool has(int64_t tick) const { return ofTick(tick) != nullptr; }
   bool empty() const { return history_.empty(); }
+  bool lacksTick(int64_t tick) const override { return !(optional_until_heard_ && empty()) && !has(tick); }
 
  private:
   blackboard::ChannelHistory<Message> history_;
+  Admit admit_;
+  bool optional_until_heard_ = false;
 };
 
 // Each message handed, decoded, to a handler of the expert's (a queue of

@@ -108,7 +108,7 @@ int runExpertMain(int argc, char** argv, Expert& expert, const std::function<voi
                           return blackboard::describeMessage(channel, bytes.data(),
                                                              static_cast<int>(bytes.size()), 80);
                         });
-      return result.exactMatch() ? 0 : 3;
+      return result.exactMatch() ? 0 : result.logLacksInputs() ? 4 : 3;
     } catch (const std::exception& e) {
       log::error(e.what());
       return 1;

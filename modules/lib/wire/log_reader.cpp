@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "earlier_layouts.hpp"
 #include "run_identity.hpp"
 
 namespace beft::wire {
@@ -129,6 +130,7 @@ bool LogReader::next(LogEvent& event) {
         end_of_last_event_ = offset_;
         event.event_number = event_number;
         event.timestamp = timestamp;
+        upgradeEarlierLayout(event.data);  // a log older than a type's change reads as today's
         return true;
       }
     }

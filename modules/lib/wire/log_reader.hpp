@@ -5,8 +5,9 @@
 // whatever length a record claims. This one checks every header against
 // the bytes the file holds, skips a damaged stretch to the next sync word,
 // counts what it skipped, and tells a log cut mid-event from a whole one.
-// The payloads it returns are still untrusted: decode them with
-// guarded_decode.hpp.
+// Messages of an earlier layout of a type come out in today's
+// (earlier_layouts.hpp). The payloads it returns are still untrusted: decode
+// them with guarded_decode.hpp.
 #pragma once
 
 #include <cstdint>

@@ -332,6 +332,7 @@ const char* faultName(Fault fault) {
     case Fault::kBadEnum: return "value not among the declared constants";
     case Fault::kBelowBound: return "value below the declared bound";
     case Fault::kUndecodable: return "refused by the generated decoder";
+    case Fault::kBadPayload: return "payload refused by its reader";
     case Fault::kOtherRun: return "of another run on this URL";
   }
   return "unknown fault";

@@ -35,6 +35,7 @@ enum class Fault : uint8_t {
   kBadEnum,            // not one of the declared constants
   kBelowBound,         // below the declared lower bound
   kUndecodable,        // the generated decoder refused what the guard passed
+  kBadPayload,         // the payload's own reader refused it (a camera frame's compressed pixels)
   kOtherRun,           // on another run's channel (run_identity.hpp): dropped, not malformed
 };
 

@@ -4,15 +4,16 @@
 
 namespace beft::wire {
 
-void RejectCounter::count(const std::string& channel, const Verdict& verdict, Clock::time_point now) {
+void RejectCounter::count(const std::string& channel, const Verdict& verdict, const std::string& reason,
+                          Clock::time_point now) {
   std::lock_guard<std::mutex> lock(mutex_);
   ChannelCount& counts = channels_[channel];
   ++counts.total;
   ++counts.since_logged;
   if (counts.logged && now - counts.last_logged < std::chrono::seconds(1)) return;
   log::warn("rejected ", counts.since_logged, counts.since_logged == 1 ? " message" : " messages", " on ", channel,
-            counts.logged ? " in the last second" : "", " (latest: ", verdict.text(), "); ", counts.total,
-            " on this channel in all");
+            counts.logged ? " in the last second" : "", " (latest: ", verdict.text(), reason.empty() ? "" : ": ",
+            reason, "); ", counts.total, " on this channel in all");
   counts.logged = true;
   counts.last_logged = now;
   counts.since_logged = 0;

@@ -18,7 +18,12 @@ class RejectCounter {
 
   // Counts one refused message; logs a warning for the channel when none was
   // logged in the last second (with what was refused since).
-  void count(const std::string& channel, const Verdict& verdict, Clock::time_point now = Clock::now());
+  void count(const std::string& channel, const Verdict& verdict, Clock::time_point now = Clock::now()) {
+    count(channel, verdict, std::string(), now);
+  }
+  // The same with the refusal's reason in words, for the log line.
+  void count(const std::string& channel, const Verdict& verdict, const std::string& reason,
+             Clock::time_point now = Clock::now());
 
   std::map<std::string, uint64_t> totals() const;  // per channel, since start
   uint64_t total() const;

@@ -24,6 +24,10 @@ std::vector<service::Port> RecordProcess::reads() const {
 void RecordProcess::addOptions(CLI::App& app) {
   app.add_option("file", options_.path, "the log file to write (required)");
   app.add_option("--exclude", options_.exclude_regex, "channels not recorded (POSIX extended regex, whole name)");
+  app.add_option("--camera", camera_,
+                 "camera frames recorded: all, none, or every:N (those of the ticks that are multiples of N); "
+                 "the live processes get every frame")
+      ->capture_default_str();
   app.add_flag("-f,--force", options_.overwrite, "replace FILE if it exists");
   app.add_flag("-q,--quiet", quiet_, "no summary at the end");
   app.add_option("--batch-ms", batch_ms_,
@@ -52,7 +56,11 @@ void RecordProcess::recordUntilStopped(Recorder& recorder, const service::StopSi
 
 void RecordProcess::reportEnd(const Recorder& recorder) const {
   if (!quiet_)
-    log::info("recorded ", recorder.events(), " messages (", recorder.bytes() / 1024, " KiB) to ", options_.path);
+    log::info("recorded ", recorder.events(), " messages (", recorder.bytes() / 1024, " KiB) to ", options_.path,
+              recorder.cameraFramesLeftOut() > 0
+                  ? "; " + std::to_string(recorder.cameraFramesLeftOut()) + " camera frames left out (--camera " +
+                        options_.camera.text() + ")"
+                  : std::string());
   if (recorder.kernelDropped() > 0)
     log::error(recorder.kernelDropped(), " datagram(s) lost before they were recorded: the receive "
                "buffer was full (raise recv_buf_size in the LCM URL, or net.core.rmem_max)");
@@ -60,6 +68,7 @@ void RecordProcess::reportEnd(const Recorder& recorder) const {
 
 void RecordProcess::onStartUp() {
   if (options_.path.empty()) throw std::invalid_argument("FILE is required: the log file to write");
+  options_.camera = CameraSampling::parse(camera_);  // std::invalid_argument with the reason
 }
 
 int RecordProcess::serve(service::Context& context) {
@@ -67,7 +76,8 @@ int RecordProcess::serve(service::Context& context) {
     Recorder recorder(context.lcm, context.lcm_url, options_);
     log::info("receiving: ", recorder.description());
     if (batch_ms_ > 0 && !transport::roomToGather(recorder.receiveBufferBytes())) batch_ms_ = 0;
-    log::info("recording ", context.lcm_url, " into ", options_.path);
+    log::info("recording ", context.lcm_url, " into ", options_.path,
+              options_.camera.keepsAll() ? "" : " (camera frames: " + options_.camera.text() + ")");
     recordUntilStopped(recorder, context.stop);
     recorder.drain(100, 3000);
     recorder.flush();

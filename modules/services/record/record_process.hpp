@@ -27,6 +27,7 @@ class RecordProcess : public service::Service {
   void reportEnd(const Recorder& recorder) const;
 
   RecordOptions options_;
+  std::string camera_ = "all";  // --camera, parsed into options_ at start-up
   bool quiet_ = false;
   int batch_ms_ = 5;
 };

@@ -31,6 +31,10 @@ Recorder::Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options)
   source_ = transport::openReceiver(lcm, url, everything, 64, options_.queue_capacity);
   take_ = [this](const transport::Message& message) {
     if (has_exclude_ && std::regex_match(message.channel.begin(), message.channel.end(), exclude_)) return;
+    if (!options_.camera.keeps(message.channel, message.data, message.size)) {
+      ++camera_frames_left_out_;
+      return;
+    }
     order_.add({std::string(message.channel), std::vector<uint8_t>(message.data, message.data + message.size),
                 message.recv_utime});
   };

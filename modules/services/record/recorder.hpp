@@ -16,10 +16,12 @@
 #include <cstdint>
 #include <memory>
 
-#include "transport.hpp"
-#include "timestamp_order.hpp"
 #include <regex>
 #include <string>
+
+#include "camera_sampling.hpp"
+#include "timestamp_order.hpp"
+#include "transport.hpp"
 
 namespace lcm {
 class LCM;
@@ -32,6 +34,7 @@ struct RecordOptions {
   std::string path;           // the log file to write
   bool overwrite = false;     // replace an existing file
   std::string exclude_regex;  // channels not recorded (empty: record all)
+  CameraSampling camera;      // camera frames recorded (default: all)
   int queue_capacity = 100000;  // LCM's queue, when LCM's own receive thread is used
 };
 
@@ -55,6 +58,7 @@ class Recorder {
   void flush();
 
   int64_t events() const { return events_; }
+  int64_t cameraFramesLeftOut() const { return camera_frames_left_out_; }
   int64_t bytes() const { return bytes_; }
   uint64_t kernelDropped() const { return source_->kernelDropped(); }
   std::string description() const { return source_->description(); }
@@ -73,6 +77,7 @@ class Recorder {
   std::regex exclude_;
   bool has_exclude_ = false;
   int64_t events_ = 0, bytes_ = 0;
+  int64_t camera_frames_left_out_ = 0;
 };
 
 }  // namespace beft::record

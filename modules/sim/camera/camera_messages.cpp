@@ -12,6 +12,7 @@ void fillHeader(const Camera& camera, int64_t utime, int64_t tick, int8_t encodi
   message.utime = utime;
   message.tick = tick;
   message.encoding = encoding;
+  message.compression = beft::camera_frame_t::COMPRESSION_NONE;
   message.width = std::max(camera.intrinsics.width, 0);
   message.height = std::max(camera.intrinsics.height, 0);
   message.fov = camera.intrinsics.fov_deg;
@@ -104,34 +105,53 @@ void renderCameraMessages(RayCaster& caster, const SceneGeometry& scene, const C
   caster.render(scene, camera, writer);
 }
 
-bool validCameraFrame(const beft::camera_frame_t& frame, std::string* why) {
-  const auto fail = [&](const std::string& reason) {
-    if (why) *why = reason;
-    return false;
-  };
-  int bytes_per_pixel = 0;
-  switch (frame.encoding) {
+int bytesPerPixel(int8_t encoding) {
+  switch (encoding) {
     case beft::camera_frame_t::ENCODING_RGB8:
-      bytes_per_pixel = 3;
-      break;
+      return 3;
     case beft::camera_frame_t::ENCODING_DEPTH_MM16:
     case beft::camera_frame_t::ENCODING_INSTANCE16:
-      bytes_per_pixel = 2;
-      break;
+      return 2;
     default:
-      return fail("unknown encoding " + std::to_string(frame.encoding));
+      return 0;
   }
+}
+
+int64_t pixelBytesOf(const beft::camera_frame_t& frame, std::string* why) {
+  const auto fail = [&](const std::string& reason) {
+    if (why) *why = reason;
+    return int64_t{-1};
+  };
+  const int bytes_per_pixel = bytesPerPixel(frame.encoding);
+  if (bytes_per_pixel == 0) return fail("unknown encoding " + std::to_string(frame.encoding));
   if (frame.width <= 0 || frame.height <= 0) {
     return fail("image size " + std::to_string(frame.width) + "x" + std::to_string(frame.height));
   }
-  const int64_t expected = static_cast<int64_t>(frame.width) * frame.height * bytes_per_pixel;
-  if (frame.data_size != expected || static_cast<int64_t>(frame.data.size()) != expected) {
-    return fail("data_size " + std::to_string(frame.data_size) + " but " + std::to_string(expected) +
-                " expected");
+  const int64_t pixels = static_cast<int64_t>(frame.width) * frame.height;
+  if (pixels > kMaxFramePixels) {
+    return fail("image size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + " above the " +
+                std::to_string(kMaxFramePixels) + " pixels accepted");
   }
   if (frame.encoding == beft::camera_frame_t::ENCODING_INSTANCE16 &&
       frame.num_ids != static_cast<int32_t>(frame.instance_ids.size())) {
     return fail("num_ids does not match instance_ids");
+  }
+  return pixels * bytes_per_pixel;
+}
+
+bool validCameraFrame(const beft::camera_frame_t& frame, std::string* why) {
+  const int64_t expected = pixelBytesOf(frame, why);
+  if (expected < 0) return false;
+  const auto fail = [&](const std::string& reason) {
+    if (why) *why = reason;
+    return false;
+  };
+  if (frame.compression != beft::camera_frame_t::COMPRESSION_NONE) {
+    return fail("compressed (compression " + std::to_string(frame.compression) + "): decode it first");
+  }
+  if (frame.data_size != expected || static_cast<int64_t>(frame.data.size()) != expected) {
+    return fail("data_size " + std::to_string(frame.data_size) + " but " + std::to_string(expected) +
+                " expected");
   }
   return true;
 }

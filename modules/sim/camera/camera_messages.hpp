@@ -1,5 +1,7 @@
 // Camera frames as LCM messages (camera_frame_t on CAMERA_COLOR, CAMERA_DEPTH,
-// CAMERA_INSTANCE) and the helpers that read them back.
+// CAMERA_INSTANCE) holding their pixels, and the helpers that read them back.
+// On the wire they travel compressed: frame_compressor.hpp packs them,
+// frame_decoding.hpp turns a received one back into this form.
 //
 // RGB8: 3 bytes per pixel. DEPTH_MM16: z-depth in millimetres as little-endian
 // uint16, 0 = no return (nothing within range, or deeper than 65.535 m).
@@ -31,8 +33,22 @@ void encodeCameraMessages(const RenderedFrame& frame, int64_t utime, int64_t tic
 void renderCameraMessages(RayCaster& caster, const SceneGeometry& scene, const Camera& camera, int64_t utime,
                           int64_t tick, const std::vector<std::string>& object_ids, CameraMessages& out);
 
-// Whether a received frame is self-consistent (known encoding, positive size,
-// data_size matching width * height * bytes per pixel). why says what is not.
+// Frames of more pixels than this are refused by every reader: a received
+// header must not make it allocate whatever it claims (3840 x 2160 fits).
+constexpr int64_t kMaxFramePixels = int64_t{8} << 20;
+
+// Bytes per pixel of an ENCODING_*, 0 for an unknown one.
+int bytesPerPixel(int8_t encoding);
+
+// The bytes of the frame's pixels (width * height * bytes per pixel) if its
+// header is self-consistent (known encoding, positive size of at most
+// kMaxFramePixels, num_ids matching instance_ids), else -1 and why says what
+// is not. Whatever data holds.
+int64_t pixelBytesOf(const beft::camera_frame_t& frame, std::string* why = nullptr);
+
+// Whether a frame holds its pixels and is self-consistent (header as above,
+// COMPRESSION_NONE, data_size matching the pixel bytes). why says what is not.
+// A received frame becomes one through decodeCameraFrame (frame_decoding.hpp).
 bool validCameraFrame(const beft::camera_frame_t& frame, std::string* why = nullptr);
 
 // Readers for valid frames; (u, v) must be inside the image.

@@ -14,7 +14,8 @@ namespace beft::world {
 std::string WorldExpert::description() const {
   return "The simulated world: loads a scenario, owns simulated time (tick k at t = k * dt) and, each time it "
          "is fired, applies the latest robot command, moves objects along their paths, applies due events, "
-         "then publishes ground truth, robot state and the RGBD camera frame of that tick.";
+         "then publishes ground truth, robot state and the RGBD camera frame of that tick (its colour, depth "
+         "and instance images losslessly compressed).";
 }
 
 void WorldExpert::declareParameters(DeclaredParameters& parameters) {
@@ -35,9 +36,10 @@ void WorldExpert::onStartUp() {
   options.seed = seed.value_or(scenario_->seed);
   const scenario::Camera& camera = scenario_->robot.camera;
   simulation_ = std::make_unique<WorldSimulation>(*scenario_, options);
-  if (static_cast<int64_t>(camera.width) * camera.height * 3 > 60000) {
-    log::warn("camera ", camera.width, "x", camera.height,
-              ": colour frames exceed 64 KB and travel fragmented on LCM (a lost fragment loses the frame)");
+  if (static_cast<int64_t>(camera.width) * camera.height > camera::kMaxFramePixels) {
+    throw std::invalid_argument("camera " + std::to_string(camera.width) + "x" + std::to_string(camera.height) +
+                                ": more than the " + std::to_string(camera::kMaxFramePixels) +
+                                " pixels a reader accepts in a frame");
   }
   log::info("scenario '", scenario_->name, "' (", scenario_->objects.size(), " objects, dt ", scenario_->dt,
             " s, seed ", options.seed, ")");
@@ -62,16 +64,32 @@ void WorldExpert::logNotes() {
   for (const std::string& note : simulation_->notes()) log::info(note);
 }
 
+// Compressed frames of the shipped cameras take a few kB; a big camera's may
+// not fit one datagram, and a lost fragment loses the frame.
+void WorldExpert::warnIfFragmented(const beft::camera_frame_t& frame) {
+  if (warned_fragmented_ || frame.data.size() <= 60000) return;
+  log::warn("camera frames of ", frame.data.size(), " bytes after compression (", frame.width, "x", frame.height,
+            ") travel fragmented on LCM (a lost fragment loses the frame)");
+  warned_fragmented_ = true;
+}
+
 void WorldExpert::publishState(beft::expert::Output& out) {
   // Render first: each publish wakes every process that reads the channel,
   // and they would take the cores from the rendering threads.
   simulation_->cameraMessages(camera_messages_);
+  colour_packing_.start([this] { colour_compressor_.compress(camera_messages_.color, packed_camera_.color); });
+  beft::expert::WaitOnExit colour_packed(colour_packing_);  // also when a publish throws
+  frame_compressor_.compress(camera_messages_.depth, packed_camera_.depth);
+  frame_compressor_.compress(camera_messages_.instance, packed_camera_.instance);
   ground_truth_out_.publish(out, simulation_->groundTruth());
   robot_state_out_.publish(out, simulation_->robotState());
   contact_out_.publish(out, simulation_->contact());
-  color_out_.publish(out, camera_messages_.color);
-  depth_out_.publish(out, camera_messages_.depth);
-  instance_out_.publish(out, camera_messages_.instance);
+  depth_out_.publish(out, packed_camera_.depth);
+  instance_out_.publish(out, packed_camera_.instance);
+  colour_packing_.wait();
+  color_out_.publish(out, packed_camera_.color);
+  for (const beft::camera_frame_t* frame : {&packed_camera_.color, &packed_camera_.depth, &packed_camera_.instance})
+    warnIfFragmented(*frame);
   published_any_ = true;
 }
 

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "expert.hpp"
+#include "frame_compressor.hpp"
+#include "helper_task.hpp"
 #include "world_simulation.hpp"
 
 namespace beft::world {
@@ -37,15 +39,23 @@ class WorldExpert : public beft::expert::Expert {
 
  private:
   void logNotes();
+  void warnIfFragmented(const beft::camera_frame_t& frame);
   void onCommand(robot_command_t&& command);
 
   std::unique_ptr<scenario::Scenario> scenario_;
   std::unique_ptr<WorldSimulation> simulation_;
-  camera::CameraMessages camera_messages_;
+  camera::CameraMessages camera_messages_;  // as rendered
+  camera::CameraMessages packed_camera_;    // as published: compressed
+  camera::FrameCompressor frame_compressor_;
+  // The colour frame, the longest to pack and read by no expert, is packed
+  // on a helper while the others are packed and published.
+  camera::FrameCompressor colour_compressor_;
+  beft::expert::HelperTask colour_packing_;
   bool published_any_ = false;
   std::string last_adjustment_logged_;
   int64_t refused_commands_ = 0;
   bool warned_time_mismatch_ = false;
+  bool warned_fragmented_ = false;
   WorldOptions options_;
 
   beft::expert::HandledInput<robot_command_t> commands_{

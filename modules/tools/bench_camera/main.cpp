@@ -12,8 +12,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "command_line.hpp"
 #include "camera_messages.hpp"
+#include "command_line.hpp"
+#include "frame_compressor.hpp"
+#include "packing_table.hpp"
 #include "ray_caster.hpp"
 #include "scene_geometry.hpp"
 
@@ -76,7 +78,8 @@ double framesPerSecond(const BenchScene& scene, RenderMethod method, double seco
                        bool encode, int fixed_frames) {
   RayCaster caster;
   RenderedFrame frame;
-  CameraMessages messages;
+  CameraMessages messages, packed;
+  FrameCompressor compressor;
   std::vector<std::string> ids(scene.geometry.objectCount(), "object");
   caster.render(scene.geometry, scene.cameras[0], frame, method);  // warm up buffers
   const double start = threadSeconds();
@@ -84,7 +87,10 @@ double framesPerSecond(const BenchScene& scene, RenderMethod method, double seco
   double elapsed = 0;
   while (fixed_frames > 0 ? frames < fixed_frames : (frames < min_frames || elapsed < seconds)) {
     caster.render(scene.geometry, scene.cameras[frames % scene.cameras.size()], frame, method);
-    if (encode) encodeCameraMessages(frame, 0, frames, ids, messages);
+    if (encode) {
+      encodeCameraMessages(frame, 0, frames, ids, messages);
+      compressor.compress(messages, packed);
+    }
     ++frames;
     elapsed = threadSeconds() - start;
   }
@@ -115,6 +121,8 @@ struct Options {
   uint64_t seed = 1;
   bool skip_brute_force = false;
   int fixed_frames = 0;  // > 0: exactly this many frames per measurement
+  std::string packing_scenario = std::string(BEFT_SOURCE_DIR) + "/scenarios/yard.xml";
+  int packing_ticks = 300;
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
@@ -122,8 +130,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       "Benchmarks the RGBD camera's ray caster: frames per second of CPU time on one core for 160x120 and 640x480 images "
       "over random scenes (walls, crates, persons in a yard), for each render method: projection (used by the "
       "world), grid traversal, and brute force (every object for every ray) as the baseline; the last column "
-      "is projection over brute force. A last table times a whole world frame: render plus the three "
-      "CAMERA_* messages.",
+      "is projection over brute force. Another table times a whole world frame: render, the three "
+      "CAMERA_* messages and their compression. The last compares the ways to compress a frame on a "
+      "scenario's own frames.",
       "beft-bench-camera");
   app.add_option("--objects", o.object_counts, "object counts to test")->capture_default_str()->delimiter(',');
   app.add_option("--seconds", o.seconds, "CPU time per measurement [s]")->capture_default_str()->check(
@@ -132,6 +141,12 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       CLI::PositiveNumber);
   app.add_option("--seed", o.seed, "random scene seed")->capture_default_str();
   app.add_flag("--no-brute-force", o.skip_brute_force, "skip the slow baseline");
+  app.add_option("--packing-scenario", o.packing_scenario, "scenario whose frames the compression table uses")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
+  app.add_option("--packing-ticks", o.packing_ticks, "ticks of it the compression table uses")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--frames", o.fixed_frames, "render exactly this many frames per measurement instead (for profilers)")
       ->check(CLI::PositiveNumber);
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
@@ -173,7 +188,8 @@ void compareMethods(const Options& o) {
 
 // A whole camera frame as the world publishes it.
 void timeWorldFrames(const Options& o) {
-  std::printf("\nWhole camera frame as the world publishes it (projection render + 3 messages), 160x120:\n");
+  std::printf(
+      "\nWhole camera frame as the world publishes it (projection render + 3 messages, compressed), 160x120:\n");
   for (int count : o.object_counts) {
     const BenchScene scene = randomScene(count, o.width, o.height, 160, 120, o.seed);
     std::printf("%8d objects: %10.1f frames/s\n", count,
@@ -204,5 +220,6 @@ int main(int argc, char** argv) {
   compareMethods(options);
   timeWorldFrames(options);
   compareThreads(options);
+  beft::bench::printPackingTable(options.packing_scenario, options.packing_ticks);
   return 0;
 }

@@ -14,6 +14,7 @@
 #include "command_line.hpp"
 #include "channels.hpp"
 #include "expert_chain.hpp"
+#include "frame_compressor.hpp"
 #include "load_scenario.hpp"
 #include "world_simulation.hpp"
 
@@ -80,7 +81,8 @@ struct Timings {
 // The world steps (turning and driving), then the experts fire once per tick.
 Timings timeTicks(const Options& o, beft::world::WorldSimulation& world, beft::bench::ExpertChain& chain) {
   Timings t;
-  beft::camera::CameraMessages frames;
+  beft::camera::CameraMessages frames, packed;
+  beft::camera::FrameCompressor compressor;
   for (int k = 0; k < o.ticks; ++k) {
     const double world_start = beft::bench::threadCpuSeconds();
     if (k > 0) {
@@ -97,9 +99,10 @@ Timings timeTicks(const Options& o, beft::world::WorldSimulation& world, beft::b
     const auto scene = world.groundTruth();
     const auto robot = world.robotState();
     world.cameraMessages(frames);
+    compressor.compress(frames, packed);  // as the world publishes them
     const double chain_start = beft::bench::threadCpuSeconds();
     t.world_seconds.push_back(chain_start - world_start);
-    const auto problems = chain.runTick(scene, robot, frames.depth, frames.instance);
+    const auto problems = chain.runTick(scene, robot, packed.depth, packed.instance);
     t.chain_seconds.push_back(beft::bench::threadCpuSeconds() - chain_start);
     for (const auto& p : problems)
       if (t.failures++ < 5) std::fprintf(stderr, "tick %d: %s\n", k, p.c_str());

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "camera_sampling.hpp"
 #include "command_line.hpp"
 #include "free_port.hpp"
 #include "launch_file.hpp"
@@ -19,6 +20,7 @@ namespace {
 
 struct Options {
   std::string file, lcm_url, record, run_id;
+  std::string record_camera = "all";
   std::vector<std::string> sets, except;
   std::string host = "local";
   bool new_port = false;
@@ -38,7 +40,19 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--host", o.host, "host label of this machine: only its processes start")->capture_default_str();
   app.add_option("--lcm-url", o.lcm_url, "LCM URL for every process (default: BEFT_LCM_URL or host-local)");
   app.add_flag("--new-port", o.new_port, "use a free UDP port of its own instead of the default URL");
-  app.add_option("--record", o.record, "record the run's LCM traffic to this log file");
+  auto* record = app.add_option("--record", o.record, "record the run's LCM traffic to this log file");
+  app.add_option("--record-camera", o.record_camera,
+                 "camera frames kept in the log: all, none, or every:N (those of ticks 0, N, 2N, ...)")
+      ->capture_default_str()
+      ->needs(record)
+      ->check([](const std::string& text) {
+        try {
+          beft::record::CameraSampling::parse(text);
+          return std::string();
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+      });
   app.add_option("--run-id", o.run_id,
                  "the run's id, stamped on every message; default: derived from the launch file and its "
                  "arguments (not --host), so the launches of one run on several machines agree");
@@ -60,6 +74,7 @@ int launch(const Options& o) {
   options.except = {o.except.begin(), o.except.end()};
   options.bin_dir = beft::ownBinDir();
   options.record_log = o.record;
+  options.record_camera = o.record_camera;
   options.lcm_url = lcmUrlOf(o);
   if (options.lcm_url.empty()) {
     std::fprintf(stderr, "[launch] error: no free UDP port\n");

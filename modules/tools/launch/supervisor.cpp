@@ -255,6 +255,7 @@ std::vector<Child> childrenToStart(const LaunchSpec& spec, const SupervisorOptio
     logger.argv = {resolveCommand("beft-record", options.bin_dir), "--force", "--quiet"};
     if (!options.lcm_url.empty()) logger.argv.push_back("--lcm-url=" + options.lcm_url);
     if (!options.record_exclude_regex.empty()) logger.argv.push_back("--exclude=" + options.record_exclude_regex);
+    if (options.record_camera != "all") logger.argv.push_back("--camera=" + options.record_camera);
     logger.argv.push_back(options.record_log);
     children.push_back(logger);
   }

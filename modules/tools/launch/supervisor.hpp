@@ -19,6 +19,7 @@ struct SupervisorOptions {
   std::string bin_dir;                // where commands are looked up first
   std::string record_log;             // if set, beft-record records the run here
   std::string record_exclude_regex;   // channels the logger leaves out
+  std::string record_camera = "all";  // camera frames the logger keeps: all, none, every:N (beft-record --camera)
   double stop_grace_s = 3.0;          // SIGTERM, then SIGKILL after this
   bool quiet_children = false;        // do not echo children's output
   std::string output_file;            // also append every prefixed line here

@@ -22,7 +22,9 @@
 #include "guarded_decode.hpp"
 #include "log_reader.hpp"
 #include "drawing.hpp"
+#include "frame_decoding.hpp"
 #include "map_picture.hpp"
+#include "run_identity.hpp"
 #include "run_record.hpp"
 #include "run_scoring.hpp"
 
@@ -30,19 +32,21 @@ namespace {
 
 using namespace beft;
 
-// The per-tick pictures the run record does not keep: camera colour images and
-// obstacle maps, by tick.
+// The per-tick pictures the run record does not keep: camera colour images
+// (as logged, compressed: unpacked when drawn) and obstacle maps, by tick.
 struct TickImages {
   std::map<int64_t, beft::camera_frame_t> camera;
   std::map<int64_t, beft::obstacle_map_t> maps;
 };
 
-// Damaged records are skipped (the run record reports them).
+// Damaged records are skipped (the run record reports them). The run's
+// channels carry its id: those of the log's run are read.
 TickImages readTickImages(const std::string& path) {
+  const int64_t run = wire::runId() != 0 ? wire::runId() : wire::runOfLog(path);
   wire::LogReader log(path);
   TickImages images;
   wire::LogEvent event;
-  while (log.next(event)) {
+  while (log.nextOfRun(event, run)) {
     if (event.channel == channels::kCameraColor) {
       beft::camera_frame_t frame{};
       if (wire::guardedDecode(event.data.data(), event.data.size(), frame).ok() &&
@@ -88,8 +92,13 @@ cv::Mat cameraPanel(const TickImages& images, int64_t tick, int height) {
     report::draw::text(panel, "no camera image for this tick", {20, height / 2}, 0.6, report::draw::kWhite);
     return panel;
   }
-  const auto& frame = it->second;
-  cv::Mat rgb(frame.height, frame.width, CV_8UC3, const_cast<uint8_t*>(frame.data.data()));
+  beft::camera_frame_t frame;
+  std::string why;
+  if (!camera::decodeCameraFrame(it->second, frame, &why)) {
+    report::draw::text(panel, "camera image refused: " + why, {20, height / 2}, 0.5, report::draw::kWhite);
+    return panel;
+  }
+  cv::Mat rgb(frame.height, frame.width, CV_8UC3, frame.data.data());
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
   cv::resize(bgr, panel, panel.size(), 0, 0, cv::INTER_NEAREST);

@@ -36,7 +36,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       "  --module NAME: runs that expert's own program with --replay LOG: feeds it the inputs it "
       "read during the run, in order, fires it at every FIRE it got, and compares what it writes "
       "with what it wrote then (exact in lockstep runs). Prints how many outputs match and the "
-      "first difference with both values. Exit 0 on an exact match, 3 on differences.\n"
+      "first difference with both values. Exit 0 on an exact match, 3 on differences, 4 when the log "
+      "lacks inputs the expert needs (the camera frames of a run recorded with --record-camera every:N "
+      "or none): then it says which instead of listing differences.\n"
       "  --to DIR|FILE.mp4: renders the run frame by frame (top-down view and camera image).",
       "beft-replay");
   app.add_option("log", o.log, "the run's LCM log (logs/<run>/run.lcmlog)")->required()->check(CLI::ExistingFile);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "camera_sampling.hpp"
 #include "command_line.hpp"
 #include "free_port.hpp"
 #include "launch_file.hpp"
@@ -74,6 +75,7 @@ struct Options {
   std::string planner = "pf-geodesic";
   std::vector<std::string> except, sets, kills;
   std::string run_id;
+  std::string record_camera = "all";
   long long seed = -1, max_ticks = -1;  // -1: the scenario's seed, duration / dt
   bool verbose = false, report = true;
 };
@@ -102,6 +104,19 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--kill", o.kills,
                  "NAME@TICK: SIGKILL this process once the run reaches the tick, to see it restarted and resume "
                  "from the run's log (fault injection; repeatable)");
+  app.add_option("--record-camera", o.record_camera,
+                 "camera frames kept in run.lcmlog: all, none, or every:N (those of ticks 0, N, 2N, ...); the "
+                 "live processes get every frame. A log without all of them cannot replay the vision expert "
+                 "(beft-replay says so), and a vision expert restarted mid-run resumes without the frames left out")
+      ->capture_default_str()
+      ->check([](const std::string& text) {
+        try {
+          beft::record::CameraSampling::parse(text);
+          return std::string();
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+      });
   app.add_flag("--verbose,-v", o.verbose, "echo every process's output (always in processes.log)");
   app.add_flag("!--no-report", o.report, "skip report.json and the pictures");
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
@@ -158,6 +173,7 @@ int runMission(Options& o) {
   options.bin_dir = beft::ownBinDir();
   options.except = {o.except.begin(), o.except.end()};
   options.record_log = o.out_dir + "/run.lcmlog";
+  options.record_camera = o.record_camera;
   options.quiet_children = !o.verbose;
   options.output_file = o.out_dir + "/processes.log";
   std::map<std::string, std::string> args;
@@ -172,6 +188,7 @@ int runMission(Options& o) {
   std::printf("[run] scenario %s (%s): up to %lld ticks of %.3g s, seed %lld, planner %s\n", scenario.name.c_str(),
               o.scenario_path.c_str(), o.max_ticks, scenario.dt, o.seed, o.planner.c_str());
   std::printf("[run] LCM %s; process output in %s/processes.log\n", options.lcm_url.c_str(), o.out_dir.c_str());
+  if (o.record_camera != "all") std::printf("[run] camera frames recorded: %s\n", o.record_camera.c_str());
   std::fflush(stdout);
 
   beft::launch::RunOutcome outcome;

@@ -12,6 +12,8 @@
 #include "channels.hpp"
 #include "depth_rays.hpp"
 #include "obstacle_mapper.hpp"
+#include "frame_compressor.hpp"
+#include "reject_counter.hpp"
 #include "obstacle_map_codec.hpp"
 #include "ray_caster.hpp"
 #include "scene_builders.hpp"
@@ -43,15 +45,25 @@ bool feed(expert::Expert& e, const std::string& channel, const Message& m) {
   return e.onMessage(channel, bytes.data(), static_cast<int>(bytes.size()));
 }
 
-// One tick of the world: a person 4 m in front of the camera at (2, 5); the
-// platform touched something at `contact` when one is given.
-void feedTick(expert::Expert& e, int64_t tick, std::optional<std::pair<double, double>> contact = std::nullopt) {
-  const auto s = test::scene({test::cylinderObject("victim", "person", 6, 5, 0.3, 1.8)}, tick, 20, 10);
+// One tick of the world: a person 4 m in front of the camera at (2, 5), or
+// further right as the tick grows (moving), frames raw or compressed as the
+// world publishes them; the platform touched something at `contact` when one
+// is given.
+void feedTick(expert::Expert& e, int64_t tick, bool moving = false, bool compressed = false,
+              std::optional<std::pair<double, double>> contact = std::nullopt) {
+  const double y = moving ? 5 - 0.2 * static_cast<double>(tick) : 5;
+  const auto s = test::scene({test::cylinderObject("victim", "person", 6, y, 0.3, 1.8)}, tick, 20, 10);
   camera::Camera cam;
   cam.pose = {2, 5, 1.6, 0, 0};
   camera::CameraMessages frames;
   camera::encodeCameraMessages(camera::renderFrame(camera::SceneGeometry::fromMessage(s), cam), s.utime, tick,
                                {"victim"}, frames);
+  if (compressed) {
+    camera::CameraMessages packed;
+    camera::FrameCompressor().compress(frames, packed);
+    ASSERT_NE(packed.depth.compression, camera_frame_t::COMPRESSION_NONE);
+    frames = packed;
+  }
   ASSERT_TRUE(feed(e, channels::kGroundTruth, s));
   ASSERT_TRUE(feed(e, channels::kCameraDepth, frames.depth));
   ASSERT_TRUE(feed(e, channels::kCameraInstance, frames.instance));
@@ -192,7 +204,7 @@ TEST(VisionExpert, ABadDepthFrameFailsTheFiringAndTheNextTickWorks) {
 TEST(VisionExpert, AContactEntersTheMapAndNoViewClearsIt) {
   vision::VisionExpert vision;
   vision.startUp();
-  feedTick(vision, 0, std::make_pair(4.0, 5.0));
+  feedTick(vision, 0, false, false, std::make_pair(4.0, 5.0));
   Collected out;
   ASSERT_TRUE(vision.fire(firingFor(0, 1), out).ok);
   auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
@@ -227,4 +239,57 @@ TEST(VisionExpert, AnOccupiedCellOnlySeenIsClearedByTheSameView) {
   EXPECT_EQ(mapper.cell(40, 50), obstacle_map_t::CELL_OCCUPIED);
   mapper.integrate(vision::DepthFrameRays(frames.depth));
   EXPECT_EQ(mapper.cell(40, 50), obstacle_map_t::CELL_OCCUPIED);
+}
+
+TEST(VisionExpert, CompressedFramesGiveTheOutputsOfRawOnes) {
+  vision::VisionExpert from_raw, from_compressed;
+  from_raw.startUp();
+  from_compressed.startUp();
+  for (int64_t tick = 0; tick < 6; ++tick) {
+    feedTick(from_raw, tick, true, false);
+    feedTick(from_compressed, tick, true, true);
+    Collected raw_out, compressed_out;
+    ASSERT_TRUE(from_raw.fire(firingFor(tick, tick + 1), raw_out).ok);
+    ASSERT_TRUE(from_compressed.fire(firingFor(tick, tick + 1), compressed_out).ok);
+    ASSERT_EQ(raw_out.latest.size(), 2u);
+    EXPECT_EQ(compressed_out.latest, raw_out.latest) << "tick " << tick;
+  }
+}
+
+TEST(VisionExpert, ADamagedCompressedFrameIsRefusedAndCountedAndTheTickWaits) {
+  vision::VisionExpert vision;
+  vision.startUp();
+  const auto s = test::scene({test::cylinderObject("victim", "person", 6, 5, 0.3, 1.8)}, 3, 20, 10);
+  camera::Camera cam;
+  cam.pose = {2, 5, 1.6, 0, 0};
+  camera::CameraMessages frames, packed;
+  camera::encodeCameraMessages(camera::renderFrame(camera::SceneGeometry::fromMessage(s), cam), s.utime, 3,
+                               {"victim"}, frames);
+  camera::FrameCompressor().compress(frames, packed);
+  camera_frame_t damaged = packed.depth;
+  damaged.data[damaged.data.size() / 2] ^= 0x01;
+  camera_frame_t lying = packed.instance;
+  lying.height = 60;  // the payload holds 120 rows
+
+  const auto before = wire::processRejects().totals();
+  const auto count = [](const std::map<std::string, uint64_t>& totals, const std::string& channel) {
+    auto it = totals.find(channel);
+    return it == totals.end() ? uint64_t{0} : it->second;
+  };
+  ASSERT_TRUE(feed(vision, channels::kGroundTruth, s));
+  EXPECT_FALSE(feed(vision, channels::kCameraDepth, damaged));
+  EXPECT_FALSE(feed(vision, channels::kCameraInstance, lying));
+  const auto after = wire::processRejects().totals();
+  EXPECT_EQ(count(after, channels::kCameraDepth), count(before, channels::kCameraDepth) + 1);
+  EXPECT_EQ(count(after, channels::kCameraInstance), count(before, channels::kCameraInstance) + 1);
+  EXPECT_FALSE(vision.inputsReady(firingFor(3, 1)));
+  EXPECT_EQ(vision.inputsLacking(firingFor(3, 1)),
+            (std::vector<std::string>{channels::kCameraDepth, channels::kCameraInstance}));
+  // The intact frames, arriving after, are taken.
+  ASSERT_TRUE(feed(vision, channels::kCameraDepth, packed.depth));
+  ASSERT_TRUE(feed(vision, channels::kCameraInstance, packed.instance));
+  EXPECT_TRUE(vision.inputsReady(firingFor(3, 1)));
+  Collected out;
+  ASSERT_TRUE(vision.fire(firingFor(3, 1), out).ok);
+  EXPECT_EQ(out.get<visual_percepts_t>(channels::kVision).num_percepts, 1);
 }

@@ -30,6 +30,8 @@
 
 #include "camera_messages.hpp"
 #include "channels.hpp"
+#include "frame_compressor.hpp"
+#include "frame_decoding.hpp"
 #include "lcm_url.hpp"
 #include "load_scenario.hpp"
 #include "world_simulation.hpp"
@@ -136,6 +138,17 @@ class Listener {
     }
     return out;
   }
+  // Camera frames as a reader gets them: decoded, then unpacked.
+  std::vector<beft::camera_frame_t> frames(const std::string& channel) const {
+    std::vector<beft::camera_frame_t> out;
+    for (auto frame : decoded<beft::camera_frame_t>(channel)) {
+      std::string why;
+      EXPECT_NE(frame.compression, beft::camera_frame_t::COMPRESSION_NONE) << channel;
+      EXPECT_TRUE(beft::camera::decodeCameraFrame(frame, &why)) << channel << ": " << why;
+      out.push_back(std::move(frame));
+    }
+    return out;
+  }
   size_t count(const std::string& channel) const {
     const auto found = messages.find(channel);
     return found == messages.end() ? 0 : found->second.size();
@@ -200,6 +213,7 @@ TEST(WorldProcess, LockstepPublishesEachTickAsTheInProcessWorldDoes) {
   beft::world::WorldOptions options;
   options.seed = scenario.seed;
   beft::world::WorldSimulation reference(scenario, options);
+  beft::camera::FrameCompressor compressor;
   std::map<std::string, std::vector<std::vector<uint8_t>>> expected;
 
   constexpr int kTicks = 12;
@@ -221,8 +235,9 @@ TEST(WorldProcess, LockstepPublishesEachTickAsTheInProcessWorldDoes) {
       reference.submitCommand(command);
     }
     if (k > 0) reference.step();
-    beft::camera::CameraMessages camera;
-    reference.cameraMessages(camera);
+    beft::camera::CameraMessages rendered, camera;
+    reference.cameraMessages(rendered);
+    compressor.compress(rendered, camera);  // as the world publishes them
     expected[beft::channels::kGroundTruth].push_back(encoded(reference.groundTruth()));
     expected[beft::channels::kRobotState].push_back(encoded(reference.robotState()));
     expected[beft::channels::kCameraColor].push_back(encoded(camera.color));
@@ -270,7 +285,8 @@ TEST(WorldProcess, LockstepPublishesEachTickAsTheInProcessWorldDoes) {
   EXPECT_NEAR(states[kTicks - 1].x, scenario.robot.x + 0.08 * (kTicks - 3), 1e-9);
   EXPECT_NEAR(states[kTicks - 1].head_yaw, 30, 1e-9);
   for (int k = 0; k < kTicks; ++k) EXPECT_EQ(states[k].tick, k);
-  const auto instances = listener.decoded<beft::camera_frame_t>(beft::channels::kCameraInstance);
+  const auto instances = listener.frames(beft::channels::kCameraInstance);
+  ASSERT_EQ(instances.size(), static_cast<size_t>(kTicks));
   std::string why;
   ASSERT_TRUE(beft::camera::validCameraFrame(instances[0], &why)) << why;
   EXPECT_EQ(instances[0].instance_ids[0], "victim_seen");
@@ -350,7 +366,8 @@ TEST(WorldProcess, FreeRunningPublishesEveryTickAndTakesCommands) {
   EXPECT_EQ(states[kLastTick].x, 2.0);
   EXPECT_NEAR(states[kLastTick].vy, 0.5, 1e-9);
   EXPECT_NE(states[kLastTick].last_command.find("velocity"), std::string::npos);
-  for (const auto& frame : listener.decoded<beft::camera_frame_t>(beft::channels::kCameraDepth)) {
+  ASSERT_FALSE(listener.frames(beft::channels::kCameraDepth).empty());
+  for (const auto& frame : listener.frames(beft::channels::kCameraDepth)) {
     std::string why;
     EXPECT_TRUE(beft::camera::validCameraFrame(frame, &why)) << why;
     EXPECT_EQ(frame.width, 40);
@@ -360,8 +377,8 @@ TEST(WorldProcess, FreeRunningPublishesEveryTickAndTakesCommands) {
   // (20, 15)'s ray runs half a pixel (0.025 t) to the right, meeting the
   // cylinder (centre 7 m ahead, radius 0.3) at t = 7 - sqrt(0.09 - (0.025 t)^2)
   // = 6.75 m.
-  const auto depth = listener.decoded<beft::camera_frame_t>(beft::channels::kCameraDepth).at(0);
-  const auto instance = listener.decoded<beft::camera_frame_t>(beft::channels::kCameraInstance).at(0);
+  const auto depth = listener.frames(beft::channels::kCameraDepth).at(0);
+  const auto instance = listener.frames(beft::channels::kCameraInstance).at(0);
   EXPECT_EQ(beft::camera::objectAt(instance, 20, 15), 0);
   EXPECT_NEAR(beft::camera::depthAt(depth, 20, 15), 6.752, 0.002);
 }

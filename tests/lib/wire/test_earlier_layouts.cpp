@@ -1,0 +1,91 @@
+// Logs recorded before a type changed read as today's layout: the short peek
+// run committed as test data holds camera frames from before `compression`.
+#include <gtest/gtest.h>
+#include <lcm/lcm-cpp.hpp>
+
+#include <string>
+#include <vector>
+
+#include <beft/camera_frame_t.hpp>
+#include <beft/fire_t.hpp>
+
+#include "earlier_layouts.hpp"
+#include "guarded_decode.hpp"
+#include "log_reader.hpp"
+
+using namespace beft::wire;
+
+namespace {
+
+const std::string kOldLog = std::string(BEFT_SOURCE_DIR) + "/tests/system/data/peek_6_ticks.lcmlog";
+
+uint64_t fingerprintOf(const std::vector<uint8_t>& data) {
+  uint64_t value = 0;
+  for (int i = 0; i < 8; ++i) value = (value << 8) | data[i];
+  return value;
+}
+
+}  // namespace
+
+TEST(EarlierLayouts, AnOldCameraFrameGainsItsCompressionByteAndNothingElseChanges) {
+  // The file's bytes as written, through LCM's own reader (no upgrade).
+  lcm::LogFile file(kOldLog, "r");
+  ASSERT_TRUE(file.good());
+  int frames = 0, others = 0;
+  while (const lcm::LogEvent* event = file.readNextEvent()) {
+    const auto* bytes = static_cast<const uint8_t*>(event->data);
+    const std::vector<uint8_t> original(bytes, bytes + event->datalen);
+    std::vector<uint8_t> data = original;
+    const bool camera = std::string(event->channel).rfind("CAMERA_", 0) == 0;
+    EXPECT_EQ(upgradeEarlierLayout(data), camera) << event->channel;
+    if (!camera) {
+      EXPECT_EQ(data, original);
+      ++others;
+      continue;
+    }
+    ASSERT_EQ(data.size(), original.size() + 1);
+    EXPECT_EQ(fingerprintOf(data), static_cast<uint64_t>(beft::camera_frame_t::getHash()));
+    EXPECT_NE(fingerprintOf(original), fingerprintOf(data));
+    EXPECT_TRUE(std::equal(original.begin() + 8, original.begin() + 25, data.begin() + 8));
+    EXPECT_EQ(data[25], beft::camera_frame_t::COMPRESSION_NONE);
+    EXPECT_TRUE(std::equal(original.begin() + 25, original.end(), data.begin() + 26));
+    // Today's layout is left as it is.
+    std::vector<uint8_t> again = data;
+    EXPECT_FALSE(upgradeEarlierLayout(again));
+    EXPECT_EQ(again, data);
+    ++frames;
+  }
+  EXPECT_EQ(frames, 18);
+  EXPECT_GT(others, 100);
+}
+
+TEST(EarlierLayouts, TheLogReaderHandsOutOldFramesInTodaysLayout) {
+  LogReader log(kOldLog);
+  LogEvent event;
+  int frames = 0;
+  while (log.next(event)) {
+    if (event.channel.rfind("CAMERA_", 0) != 0) continue;
+    beft::camera_frame_t frame{};
+    const Verdict verdict = guardedDecode(event.data.data(), event.data.size(), frame);
+    ASSERT_TRUE(verdict.ok()) << event.channel << ": " << verdict.text();
+    EXPECT_EQ(frame.compression, beft::camera_frame_t::COMPRESSION_NONE);
+    EXPECT_EQ(frame.data_size, frame.width * frame.height * (frame.encoding == frame.ENCODING_RGB8 ? 3 : 2));
+    ++frames;
+  }
+  EXPECT_EQ(frames, 18);
+  EXPECT_FALSE(log.damage().any());
+}
+
+TEST(EarlierLayouts, ShortOrForeignBytesAreLeftAlone) {
+  std::vector<uint8_t> short_bytes(20, 0xff);
+  EXPECT_FALSE(upgradeEarlierLayout(short_bytes));
+  EXPECT_EQ(short_bytes.size(), 20u);
+  beft::fire_t fire{};
+  fire.expert = "vision";
+  fire.transition = "t";
+  std::vector<uint8_t> bytes(fire.getEncodedSize());
+  fire.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  const std::vector<uint8_t> original = bytes;
+  EXPECT_FALSE(upgradeEarlierLayout(bytes));
+  EXPECT_EQ(bytes, original);
+}
