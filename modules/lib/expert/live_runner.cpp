@@ -314,7 +314,8 @@ class Runner {
   // Late joiners: ask the blackboard for the latest message of each channel
   // read; the answer only fills channels nothing has arrived on yet.
   // Again while a firing waits for inputs (refill): the answer then fills
-  // every channel whose latest message differs from what arrived live.
+  // the channels the firing lacks whose latest message differs from what
+  // arrived live.
   void requestSnapshot(bool refill = false) {
     beft::bb_query_t query{};
     query.utime = wallMicros();
@@ -330,9 +331,13 @@ class Runner {
     const beft::bb_snapshot_t* snap = &snapshot;
     if (refill_pending_) {
       refill_pending_ = false;
+      // Only what the waiting firing lacks (messages kept by tick): a
+      // message applied on arrival (a command) is never delivered twice.
+      if (!pending_ || pending_fired_) return;
+      const std::vector<std::string> lacking = expert_.inputsLacking(*pending_);
       int refilled = 0;
       for (const auto& entry : snap->entries) {
-        if (!read_channels_.count(entry.channel)) continue;
+        if (std::find(lacking.begin(), lacking.end(), entry.channel) == lacking.end()) continue;
         const auto live = last_live_bytes_.find(entry.channel);
         const uint64_t hash = bytesHash(entry.data.data(), entry.data.size());
         if (live != last_live_bytes_.end() && live->second == hash) continue;  // nothing was lost there

@@ -10,6 +10,8 @@
 #include <mutex>
 #include <thread>
 
+#include <beft/bb_query_t.hpp>
+#include <beft/bb_snapshot_t.hpp>
 #include <beft/done_t.hpp>
 #include <beft/fire_t.hpp>
 #include <beft/heartbeat_t.hpp>
@@ -261,6 +263,91 @@ TEST(LiveRunner, WaitsForInputsThenFiresAnyway) {
   ASSERT_EQ(collector.done.size(), 1u);
   EXPECT_EQ(collector.done[0].outcome, beft::done_t::OUTCOME_FAILED);
   EXPECT_NE(collector.done[0].message.find("no robot state"), std::string::npos);
+}
+
+// Keeps ROBOT_STATE by tick, as the mission's experts do.
+class TickReader : public expert::Expert {
+ public:
+  std::string name() const override { return "reader"; }
+  std::string description() const override { return "test expert"; }
+  bool inputsReady(const expert::Firing& f) const override { return robot_.has(f.tick); }
+  expert::Outcome fire(const expert::Firing& f, expert::Output&) override {
+    return robot_.has(f.tick) ? expert::Outcome::success() : expert::Outcome::failure("no robot state for tick");
+  }
+
+ private:
+  expert::TickInput<beft::robot_state_t> robot_{*this, channels::kRobotState};
+};
+
+// The blackboard's side of a refill: answers each query after the first
+// with the robot state of tick 5 (the datagram the expert lost).
+struct FakeBlackboard {
+  lcm::LCM* lcm = nullptr;
+  std::atomic<int> queries{0};
+  void onQuery(const lcm::ReceiveBuffer*, const std::string&, const beft::bb_query_t* query) {
+    ++queries;
+    if (query->query_id < 2) return;  // the catch-up at start: nothing stored yet
+    beft::robot_state_t state{};
+    state.utime = 500000;
+    state.tick = 5;
+    state.x = 1.5;
+    state.last_command = "stop";
+    beft::bb_entry_t entry{};
+    entry.channel = channels::kRobotState.name;
+    entry.sequence = 1;
+    entry.utime = state.utime;
+    entry.data.resize(state.getEncodedSize());
+    state.encode(entry.data.data(), 0, static_cast<int>(entry.data.size()));
+    entry.data_size = static_cast<int32_t>(entry.data.size());
+    beft::bb_snapshot_t snapshot{};
+    snapshot.query_id = query->query_id;
+    snapshot.entries.push_back(entry);
+    snapshot.num_entries = 1;
+    lcm->publish(std::string(channels::kBlackboardSnapshotPrefix) + query->requester, &snapshot);
+  }
+};
+
+// The input of a FIRE never arrives live (a lost datagram): after
+// refill_after_s the expert asks the blackboard again and fires with what it
+// holds, instead of firing without it (lockstep stays deterministic).
+TEST(LiveRunner, ALostInputIsAskedOfTheBlackboardAgain) {
+  TickReader reader;
+  reader.startUp();
+  expert::LiveOptions options;
+  options.lcm_url = lcmUrlForPort(uniquePort(9));
+  options.process_name = "reader";
+  options.catch_up = true;
+  options.refill_after_s = 0.2;
+  std::thread runner([&] { expert::runLive(reader, options); });
+
+  lcm::LCM lcm(options.lcm_url);
+  DoneCollector collector;
+  FakeBlackboard blackboard;
+  blackboard.lcm = &lcm;
+  lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
+  lcm.subscribe(channels::kBlackboardQuery, &FakeBlackboard::onQuery, &blackboard);
+  pump(lcm, 150ms);  // its catch-up query finds nothing
+  const int catch_up_queries = blackboard.queries.load();
+  const auto fire = fireToken("reader", 6, 1);
+  lcm.publish(channels::kFire, &fire);  // tick 6: the blackboard holds only tick 5
+  pump(lcm, 500ms);
+  {
+    std::lock_guard<std::mutex> lock(collector.mutex);
+    EXPECT_TRUE(collector.done.empty()) << "fired without the input of its tick";
+  }
+  EXPECT_GT(blackboard.queries.load(), catch_up_queries) << "never asked the blackboard again";
+  const auto fire5 = fireToken("reader", 5, 2);
+  lcm.publish(channels::kFire, &fire5);  // tick 5: lost live, held by the blackboard
+  pump(lcm, 800ms);
+  beft::run_status_t end{};
+  end.state = beft::run_status_t::STATE_FINISHED;
+  lcm.publish(channels::kRunStatus, &end);
+  runner.join();
+
+  std::lock_guard<std::mutex> lock(collector.mutex);
+  ASSERT_EQ(collector.done.size(), 1u);
+  EXPECT_EQ(collector.done[0].firing_id, 2);
+  EXPECT_EQ(collector.done[0].outcome, beft::done_t::OUTCOME_OK) << collector.done[0].message;
 }
 
 TEST(LiveRunner, AnInputArrivingAfterItsFireIsWaitedFor) {
