@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 
@@ -17,6 +18,12 @@ constexpr double kCarWidth = 1.8, kCarLength = 4.2;
 
 // A portable generator (splitmix64): the same seed gives the same district
 // with any standard library.
+std::string metres(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%g", value);
+  return buffer;
+}
+
 class Random {
  public:
   explicit Random(uint64_t seed) : state_(seed) {}
@@ -62,7 +69,7 @@ class DistrictBuilder {
     const int columns = static_cast<int>(std::floor((p.width - kStreet) / (kMinBlock + kStreet)));
     const int rows = static_cast<int>(std::floor((p.height - kStreet) / (kMinBlock + kStreet)));
     if (columns < 1 || rows < 1) {
-      throw std::invalid_argument("a district needs at least " + std::to_string(2 * kStreet + kMinBlock) +
+      throw std::invalid_argument("a district needs at least " + metres(2 * kStreet + kMinBlock) +
                                   " m in each direction for one block between streets");
     }
     const double block_w = (p.width - kStreet * (columns + 1)) / columns;
@@ -94,7 +101,7 @@ class DistrictBuilder {
       if (!placeOutside()) {
         if (++failures > 200 * p.objects) {
           throw std::invalid_argument(std::to_string(p.objects) + " objects do not fit in " +
-                                      std::to_string(p.width) + " x " + std::to_string(p.height) +
+                                      metres(p.width) + " x " + metres(p.height) +
                                       " m (placed " + std::to_string(placedCount()) + ")");
         }
       }
