@@ -281,18 +281,18 @@ class DistrictBuilder {
       add(fire, footprint);
       return true;
     }
-    if (roll < 0.8) {  // a siren on a pole: two objects
+    if (roll < 0.8) {  // a siren on a mast: two objects; the mast's foot covers the siren's footprint (no overhang to drive into)
       if (placedCount() + 2 > district_.parameters.objects) return false;
       const Rect footprint = boxAround(x, y, 0.4, 0.4);
       if (!isFree(footprint, kPassage)) return false;
       const std::string id = nextId("siren");
-      PlacedObject siren = box(id, "siren", x, y, 0.4, 0.4, 0.4, 0xe0c020);
+      PlacedObject siren = box(id, "siren", x, y, 0.3, 0.3, 0.3, 0xe0c020);
       siren.z = 1.8;
       siren.activity = "ringing";
       siren.sound = sound("siren.wav", 1.0);
       PlacedObject pole = box(id + "_pole", "wall", x, y, 0, 0, 0, 0x505050);
       pole.cylinder = true;
-      pole.radius = 0.06;
+      pole.radius = 0.22;  // >= the siren's half diagonal (0.21 m)
       pole.height = 1.8;
       add(siren, footprint);
       district_.objects.push_back(pole);
