@@ -55,6 +55,15 @@ CameraSampling CameraSampling::parse(const std::string& text) {
   throw std::invalid_argument("camera frames to record: '" + text + "' (all, none or every:N with N >= 1)");
 }
 
+std::string CameraSampling::problemWith(const std::string& text) {
+  try {
+    parse(text);
+    return "";
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+}
+
 std::string CameraSampling::text() const {
   if (every_ == 1) return "all";
   if (every_ == 0) return "none";

@@ -16,6 +16,8 @@ class CameraSampling {
   // "all" (the default), "none" or "every:N" with N >= 1 (every:1 is all).
   // std::invalid_argument for anything else.
   static CameraSampling parse(const std::string& text);
+  // What parse would refuse in text, or "" (a command-line check).
+  static std::string problemWith(const std::string& text);
   std::string text() const;  // as parse takes it
 
   // Whether a message heard on channel (of any run) is recorded. Every

@@ -45,14 +45,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
                  "camera frames kept in the log: all, none, or every:N (those of ticks 0, N, 2N, ...)")
       ->capture_default_str()
       ->needs(record)
-      ->check([](const std::string& text) {
-        try {
-          beft::record::CameraSampling::parse(text);
-          return std::string();
-        } catch (const std::invalid_argument& e) {
-          return std::string(e.what());
-        }
-      });
+      ->check(beft::record::CameraSampling::problemWith);
   app.add_option("--run-id", o.run_id,
                  "the run's id, stamped on every message; default: derived from the launch file and its "
                  "arguments (not --host), so the launches of one run on several machines agree");

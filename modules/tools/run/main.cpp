@@ -109,14 +109,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
                  "live processes get every frame. A log without all of them cannot replay the vision expert "
                  "(beft-replay says so), and a vision expert restarted mid-run resumes without the frames left out")
       ->capture_default_str()
-      ->check([](const std::string& text) {
-        try {
-          beft::record::CameraSampling::parse(text);
-          return std::string();
-        } catch (const std::invalid_argument& e) {
-          return std::string(e.what());
-        }
-      });
+      ->check(beft::record::CameraSampling::problemWith);
   app.add_flag("--verbose,-v", o.verbose, "echo every process's output (always in processes.log)");
   app.add_flag("!--no-report", o.report, "skip report.json and the pictures");
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
