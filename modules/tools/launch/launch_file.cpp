@@ -44,6 +44,18 @@ const char* attribute(const tinyxml2::XMLElement* e, const char* name, const std
   return value;
 }
 
+// A process with if="${arg}" starts only when the substituted value is 1 or
+// true (0, false or empty: not started), as roslaunch's if.
+bool startsWhen(const tinyxml2::XMLElement* e, const std::map<std::string, std::string>& args,
+                const std::string& path) {
+  const char* condition = e->Attribute("if");
+  if (condition == nullptr) return true;
+  const std::string value = substitute(condition, args, path, e->GetLineNum());
+  if (value == "1" || value == "true") return true;
+  if (value == "0" || value == "false" || value.empty()) return false;
+  throw LaunchError(where(path, e->GetLineNum()) + "if must be 1, true, 0, false or empty, not '" + value + "'");
+}
+
 }  // namespace
 
 std::vector<std::string> splitArguments(const std::string& text) {
@@ -120,6 +132,7 @@ LaunchSpec loadLaunchFile(const std::string& path, const std::map<std::string, s
     p.name = attribute(e, "name", path, true);
     if (!names.insert(p.name).second)
       throw LaunchError(where(path, p.line) + "duplicate process name '" + p.name + "'");
+    if (!startsWhen(e, spec.args, path)) continue;
     p.command = substitute(attribute(e, "command", path, true), spec.args, path, p.line);
     if (const char* a = e->Attribute("args")) {
       try {
@@ -151,8 +164,8 @@ LaunchSpec loadLaunchFile(const std::string& path, const std::map<std::string, s
       else throw LaunchError(where(path, p.line) + "priority must be 'normal' or 'background', not '" + value + "'");
     }
     for (const auto* attr = e->FirstAttribute(); attr; attr = attr->Next()) {
-      static const std::set<std::string> known = {"name", "command", "args", "group", "host",
-                                                  "restart", "max_restarts", "role", "lcm_url", "priority"};
+      static const std::set<std::string> known = {"name",         "command", "args",    "group",    "host", "restart",
+                                                  "max_restarts", "role",    "lcm_url", "priority", "if"};
       if (!known.count(attr->Name()))
         throw LaunchError(where(path, p.line) + "unknown attribute '" + attr->Name() + "' on <process>");
     }
@@ -165,7 +178,7 @@ LaunchSpec loadLaunchFile(const std::string& path, const std::map<std::string, s
 int64_t runIdOf(const std::string& launch_file, const std::map<std::string, std::string>& args) {
   std::string description = std::filesystem::path(launch_file).filename().string();
   for (const auto& [name, value] : args) {
-    if (name == "lcm_url" || name.size() >= 5 && name.compare(name.size() - 5, 5, "_host") == 0) continue;
+    if (name == "lcm_url" || (name.size() >= 5 && name.compare(name.size() - 5, 5, "_host") == 0)) continue;
     description += "\n" + name + "=" + value;
   }
   return wire::runIdFor(description);

@@ -105,6 +105,25 @@ TEST(LaunchFile, ReadsPriorities) {
   EXPECT_EQ(errorOf(bad), bad + ":2: priority must be 'normal' or 'background', not 'high'");
 }
 
+TEST(LaunchFile, StartsAProcessOnlyWhenItsConditionHolds) {
+  TempDir dir;
+  const auto file = dir.write("if.xml", R"(<launch>
+  <arg name="ears" default="0"/>
+  <process name="always" command="true"/>
+  <process name="ears" command="true" if="${ears}"/>
+</launch>)");
+  auto names = [](const LaunchSpec& spec) {
+    std::vector<std::string> out;
+    for (const auto& p : spec.processes) out.push_back(p.name);
+    return out;
+  };
+  EXPECT_EQ(names(loadLaunchFile(file, {})), (std::vector<std::string>{"always"}));
+  EXPECT_EQ(names(loadLaunchFile(file, {{"ears", "1"}})), (std::vector<std::string>{"always", "ears"}));
+  EXPECT_EQ(names(loadLaunchFile(file, {{"ears", "true"}})), (std::vector<std::string>{"always", "ears"}));
+  EXPECT_EQ(names(loadLaunchFile(file, {{"ears", ""}})), (std::vector<std::string>{"always"}));
+  EXPECT_EQ(errorOf(file, {{"ears", "maybe"}}), file + ":4: if must be 1, true, 0, false or empty, not 'maybe'");
+}
+
 TEST(LaunchFile, SplitsQuotedArguments) {
   EXPECT_EQ(splitArguments("  a  'b c' \"d e\" f'g h'  "),
             (std::vector<std::string>{"a", "b c", "d e", "fg h"}));
