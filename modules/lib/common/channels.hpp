@@ -14,6 +14,7 @@
 #include <beft/acoustic_percepts_t.hpp>
 #include <beft/bb_query_t.hpp>
 #include <beft/bb_snapshot_t.hpp>
+#include <beft/binaural_block_t.hpp>
 #include <beft/camera_frame_t.hpp>
 #include <beft/contact_t.hpp>
 #include <beft/done_t.hpp>
@@ -76,6 +77,7 @@ std::ostream& operator<<(std::ostream& out, Channel<Message> channel) { return o
   X(kCameraDepth, "CAMERA_DEPTH", camera_frame_t)                                             \
   X(kCameraInstance, "CAMERA_INSTANCE", camera_frame_t)                                       \
   X(kRobotCommand, "ROBOT_CMD", robot_command_t)                                              \
+  X(kEars, "EARS", binaural_block_t) /* beft-ears, with --acoustics binaural */                \
   /* Low-level experts. */                                                                   \
   X(kGeometry, "GEOMETRY", geometry_percepts_t)                                               \
   X(kVision, "VISION", visual_percepts_t)                                                     \
@@ -132,7 +134,7 @@ inline const std::vector<ChannelEntry>& allChannels() {
 inline bool isDataPlaneChannel(const std::string& channel) {
   static const std::set<std::string> names = {
       kGroundTruth.name, kRobotState.name,  kContact.name,        kCameraColor.name,    kCameraDepth.name,    kCameraInstance.name,
-      kGeometry.name,    kVision.name,      kObstacleMap.name,    kAudio.name,          kLabelsVisual.name,
+      kEars.name,        kGeometry.name,    kVision.name,      kObstacleMap.name,    kAudio.name,          kLabelsVisual.name,
       kLabelsAcoustic.name, kHypotheses.name, kDynamicWeights.name, kTaskStack.name,   kTaskCommand.name,
       kRobotCommand.name,   kPlanRequest.name};
   return names.count(channel) > 0;

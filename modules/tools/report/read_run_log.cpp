@@ -4,6 +4,7 @@
 #include <fstream>
 
 
+#include <beft/acoustic_percepts_t.hpp>
 #include <beft/dynamic_weights_t.hpp>
 #include <beft/hypotheses_t.hpp>
 #include <beft/obstacle_map_t.hpp>
@@ -73,6 +74,7 @@ class RecordBuilder {
     if (channel == channels::kGroundTruth) ok = addGroundTruth(event);
     else if (channel == channels::kRobotState) ok = addRobotState(event);
     else if (channel == channels::kHypotheses) ok = addHypotheses(event);
+    else if (channel == channels::kAudio) ok = addAudio(event);
     else if (channel == channels::kDynamicWeights) ok = addWeights(event);
     else if (channel == channels::kTaskStack) ok = addTaskStack(event);
     else if (channel == channels::kObstacleMap) ok = addObstacleMap(event);
@@ -109,6 +111,20 @@ class RecordBuilder {
       auto& trail = record_.trails[object.id];
       if (trail.empty() || std::hypot(trail.back().first - object.x, trail.back().second - object.y) >= kTrailStep)
         trail.emplace_back(object.x, object.y);
+    }
+    return true;
+  }
+
+  // The world publishes a tick's GT_OBJECTS before the experts fire, so the
+  // truth at hand is that of the estimate's tick.
+  bool addAudio(const wire::LogEvent& event) {
+    acoustic_percepts_t message{};
+    if (!decode(event, message)) return false;
+    for (const auto& percept : message.percepts) {
+      const auto truth = std::find_if(record_.truth.begin(), record_.truth.end(),
+                                      [&](const TruthObject& o) { return o.id == percept.object_id; });
+      if (truth == record_.truth.end()) continue;
+      record_.heard[percept.object_id] = {seconds(message.utime), percept.est_x, percept.est_y, truth->x, truth->y};
     }
     return true;
   }

@@ -56,6 +56,15 @@ nlohmann::json toJson(const RunReport& report) {
                                  {"seen_as", f.seen_as},
                                  {"settled_at_s", rounded(f.settled_at_s)}});
   json["missed"] = report.missed;
+  json["heard"] = nlohmann::json::array();  // the audio expert's last estimate of each sounding object
+  for (const auto& h : report.heard)
+    json["heard"].push_back({{"object", h.object},
+                             {"x", rounded(h.x)},
+                             {"y", rounded(h.y)},
+                             {"true_x", rounded(h.true_x)},
+                             {"true_y", rounded(h.true_y)},
+                             {"error_m", rounded(h.error_m)},
+                             {"at_s", rounded(h.at_s)}});
   json["false_alarms"] = nlohmann::json::array();
   for (const auto& a : report.false_alarms)
     json["false_alarms"].push_back({{"hypothesis", a.hypothesis},

@@ -71,6 +71,14 @@ struct TruthObject {
   bool acoustic = false;
 };
 
+// The audio expert's last position estimate of a sounding object (AUDIO),
+// beside where the object truly was then (GT_OBJECTS of the same tick).
+struct HeardPosition {
+  double t = 0;                 // simulated time [s]
+  double x = 0, y = 0;          // estimate p_hat [m]
+  double true_x = 0, true_y = 0;  // [m]
+};
+
 struct RunRecord {
   std::string log_path;
   std::string scenario_name;          // from GT_OBJECTS
@@ -84,6 +92,7 @@ struct RunRecord {
   std::vector<HypothesesSample> hypotheses;  // in log order
   std::vector<WeightSample> weights;  // in log order
   std::vector<TaskSample> tasks;      // in log order
+  std::map<std::string, HeardPosition> heard;  // by object id: the last AUDIO estimate
   std::optional<planners::ObstacleCells> obstacle_map;  // the last one received
   std::string stop_reason;            // last STOP_REQUEST message, or ""
   std::string run_status;             // last RUN_STATUS message, or ""

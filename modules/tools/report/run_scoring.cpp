@@ -185,6 +185,9 @@ RunReport scoreRun(const RunRecord& record, const ScoringOptions& options) {
   }
   orderVictims(persons, report);
   report.completed = report.missed.empty() && report.unsettled.empty();
+  for (const auto& [object, heard] : record.heard)
+    report.heard.push_back({object, heard.x, heard.y, heard.true_x, heard.true_y,
+                            std::hypot(heard.x - heard.true_x, heard.y - heard.true_y), heard.t});
   return report;
 }
 

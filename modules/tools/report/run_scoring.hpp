@@ -39,6 +39,15 @@ struct VictimEntry {
   double found_at_s = 0;    // first sim time the hypothesis met the victim test
 };
 
+// Where the audio expert last put a sounding object, and how far off it was.
+struct HeardEntry {
+  std::string object;
+  double x = 0, y = 0;            // estimate [m]
+  double true_x = 0, true_y = 0;  // [m]
+  double error_m = 0;
+  double at_s = 0;                // sim time of the estimate [s]
+};
+
 struct FalsifiedEntry {
   std::string object;       // hypothesis object id
   double x = 0, y = 0;      // estimated position [m]
@@ -70,6 +79,7 @@ struct RunReport {
   int persons = 0;              // ground-truth persons
   std::vector<VictimEntry> victims;
   std::vector<FalsifiedEntry> falsified;
+  std::vector<HeardEntry> heard;        // every object the audio expert reported, by id
   std::vector<std::string> missed;      // ground-truth persons not found
   std::vector<FalseAlarm> false_alarms;
   std::vector<std::string> unsettled;   // heard, neither verified nor falsified

@@ -71,7 +71,8 @@ int runProgram(const std::vector<std::string>& args) {
 struct Options {
   std::string scenario_path, out_dir;
   std::string launch_file = std::string(BEFT_SOURCE_DIR) + "/scenarios/launch/mission.xml";
-  std::string net = std::string(BEFT_SOURCE_DIR) + "/scenarios/nets/default.pnml";
+  std::string net;  // default: nets/default.pnml, or nets/binaural.pnml with --acoustics binaural
+  std::string acoustics = "ground_truth";
   std::string planner = "pf-geodesic";
   std::vector<std::string> except, sets, kills;
   std::string run_id;
@@ -92,7 +93,15 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("scenario", o.scenario_path, "scenario XML file")->required();
   app.add_option("--out", o.out_dir, "run folder (default logs/<scenario>-<time>/)");
   app.add_option("--planner", o.planner, "pf | pf-geodesic | astar | ompl:NAME")->capture_default_str();
-  app.add_option("--net", o.net, "Petri net (PNML) of the schedule");
+  app.add_option("--net", o.net,
+                 "Petri net (PNML) of the schedule (default: scenarios/nets/default.pnml; binaural.pnml, which "
+                 "fires the ears before audio, with --acoustics binaural)");
+  app.add_option("--acoustics", o.acoustics,
+                 "where the audio expert's position estimates come from: ground_truth (the paper's experiments: "
+                 "true positions degraded by its formulas) or binaural (the ears process renders what the head "
+                 "hears with KEMAR impulse responses and the audio expert localises it)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"ground_truth", "binaural"}));
   app.add_option("--launch", o.launch_file, "launch file listing the processes");
   app.add_option("--seed", o.seed, "seed (default: the scenario's)");
   app.add_option("--max-ticks", o.max_ticks, "stop after this many ticks (default: duration / dt)");
@@ -119,11 +128,19 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
 // The launch file's arguments: the run's own, then every --set.
 std::map<std::string, std::string> launchArguments(const Options& o, const beft::scenario::Scenario& scenario,
                                                    const std::string& lcm_url) {
+  const bool binaural = o.acoustics == "binaural";
+  const std::string net = !o.net.empty() ? o.net
+                          : std::string(BEFT_SOURCE_DIR) + (binaural ? "/scenarios/nets/binaural.pnml"
+                                                                     : "/scenarios/nets/default.pnml");
   std::map<std::string, std::string> args = {
-      {"scenario", absolutePath(o.scenario_path)}, {"net", absolutePath(o.net)},
+      {"scenario", absolutePath(o.scenario_path)}, {"net", absolutePath(net)},
       {"planner", o.planner},                      {"seed", std::to_string(o.seed)},
       {"max_ticks", std::to_string(o.max_ticks)},  {"dt", std::to_string(scenario.dt)},
       {"lcm_url", lcm_url}};
+  if (binaural) {  // only then: a launch file of the user's need not declare them
+    args["acoustics"] = o.acoustics;
+    args["ears"] = "1";
+  }
   for (const auto& [name, value] : beft::launch::parseSettings(o.sets)) args[name] = value;
   return args;
 }
