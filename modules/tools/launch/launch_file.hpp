@@ -30,6 +30,11 @@ enum class RestartPolicy { Never, OnFailure };
 // blackboard), which catch up whenever a core is free.
 enum class Priority { Normal, Background };
 
+// The host label of a process that is not started anywhere: an optional
+// process, off until an <arg> puts it on a host
+// (host="${ssr_bridge_host}", default "none"; --set ssr_bridge_host=local).
+inline constexpr const char* kNoHost = "none";
+
 struct ProcessSpec {
   std::string name;
   std::string command;            // a program in the build's bin/ or on PATH
@@ -37,7 +42,7 @@ struct ProcessSpec {
   std::string group;              // e.g. infra, sensor, low, mid, high, control
   RestartPolicy restart = RestartPolicy::Never;
   int max_restarts = 3;
-  std::string host = "local";     // host label: where this process runs
+  std::string host = "local";     // host label: where this process runs; kNoHost: nowhere
   bool is_arbiter = false;        // the run ends when it exits
   bool append_lcm_url = true;
   Priority priority = Priority::Normal;

@@ -260,6 +260,7 @@ std::vector<Child> childrenToStart(const LaunchSpec& spec, const SupervisorOptio
     children.push_back(logger);
   }
   for (const auto& process : spec.processes) {
+    if (process.host == kNoHost) continue;  // an optional process, off
     if (process.host != options.host) {
       printer.own("not starting " + process.name + ": it runs on host '" + process.host + "'");
       continue;

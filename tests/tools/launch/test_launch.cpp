@@ -177,6 +177,28 @@ TEST(Supervisor, HostsCanBeLaunchArguments) {
   EXPECT_EQ(access(marker.c_str(), F_OK), 0);
 }
 
+TEST(Supervisor, AProcessOnHostNoneIsOffUntilAnArgumentPutsItOnAHost) {
+  TempDir dir;
+  const std::string marker = dir.path + "/ran";
+  const auto file = dir.write("run.xml", R"(<launch>
+  <arg name="extra_host" default="none"/>
+  <process name="extra" command="touch" args=")" + marker + R"(" host="${extra_host}" lcm_url="0"/>
+  <process name="arbiter" command="sleep" args="0.3" role="arbiter" lcm_url="0"/>
+</launch>)");
+  SupervisorOptions options;
+  options.quiet_children = true;
+  options.output_file = dir.path + "/out.log";
+  supervise(loadLaunchFile(file, {}), options);
+  EXPECT_NE(access(marker.c_str(), F_OK), 0) << "an optional process was started";
+  EXPECT_EQ(readAll(options.output_file).find("extra"), std::string::npos) << "an off process is not mentioned";
+  options.host = "none";  // not even on a machine that calls itself so
+  supervise(loadLaunchFile(file, {}), options);
+  EXPECT_NE(access(marker.c_str(), F_OK), 0);
+  options.host = "local";
+  supervise(loadLaunchFile(file, {{"extra_host", "local"}}), options);
+  EXPECT_EQ(access(marker.c_str(), F_OK), 0);
+}
+
 namespace {
 
 // Fields of /proc/PID/stat after the command name: nice is field 19, policy field 41.
