@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <sstream>
@@ -55,7 +56,9 @@ int runServiceMain(int argc, char** argv, Service& service) {
   std::string process_name = service.name();
   bool show_interface = false;
   std::string resume_log;
-  CLI::App app(service.description(), "beft-" + service.name());
+  std::string program = "beft-" + service.name();
+  std::replace(program.begin(), program.end(), '_', '-');  // the program's name: dashes for underscores
+  CLI::App app(service.description(), program);
   app.add_option("--lcm-url", lcm_url, "LCM URL (env BEFT_LCM_URL)")->capture_default_str();
   app.add_option("--name", process_name, "process name in logs and heartbeats")->capture_default_str();
   app.add_flag("--interface", show_interface, "print the channels read and written");

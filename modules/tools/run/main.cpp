@@ -78,7 +78,7 @@ struct Options {
   std::string run_id;
   std::string record_camera = "all";
   long long seed = -1, max_ticks = -1;  // -1: the scenario's seed, duration / dt
-  bool verbose = false, report = true;
+  bool verbose = false, report = true, ssr = false;
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
@@ -119,6 +119,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
                  "(beft-replay says so), and a vision expert restarted mid-run resumes without the frames left out")
       ->capture_default_str()
       ->check(beft::record::CameraSampling::problemWith);
+  app.add_flag("--ssr", o.ssr,
+               "also start beft-ssr-bridge: hear the run in a running SoundScape Renderer (ssr-binaural "
+               "--ip-server; --set ssr_server_host=HOST --set ssr_port=PORT if it is not at localhost:4711)");
   app.add_flag("--verbose,-v", o.verbose, "echo every process's output (always in processes.log)");
   app.add_flag("!--no-report", o.report, "skip report.json and the pictures");
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
@@ -141,6 +144,7 @@ std::map<std::string, std::string> launchArguments(const Options& o, const beft:
     args["acoustics"] = o.acoustics;
     args["ears"] = "1";
   }
+  if (o.ssr) args["ssr"] = "1";
   for (const auto& [name, value] : beft::launch::parseSettings(o.sets)) args[name] = value;
   return args;
 }

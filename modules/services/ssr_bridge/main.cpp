@@ -1,0 +1,7 @@
+// beft-ssr-bridge: mirrors a run into the SoundScape Renderer (see --help, README.md).
+#include "ssr_bridge_process.hpp"
+
+int main(int argc, char** argv) {
+  beft::ssr_bridge::SsrBridgeProcess bridge;
+  return beft::service::runServiceMain(argc, argv, bridge);
+}
