@@ -1,0 +1,255 @@
+#include "binaural_renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "fft_convolver.hpp"
+#include "looped_signal.hpp"
+#include "sensor_noise.hpp"
+
+namespace beft::hearing {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Output samples per FFT: a 0.1 s block is one chunk; a long span is cut
+// into chunks so the transforms stay small (overlap-save).
+constexpr int kMaxChunk = 16384;
+// Absolute sample indices beyond this lose precision as doubles.
+constexpr int64_t kMaxAbsoluteSample = int64_t{1} << 52;
+
+// Where and how loud a source is for one head pose.
+struct SourceView {
+  double azimuth_deg;
+  double gain;           // level / r
+  double delay_samples;  // r / c
+};
+
+// Buffers reused from call to call on the same thread.
+struct Scratch {
+  Samples segment, padded, time;
+  Spectrum source, lowpass, filter;
+  Spectrum sums[2][2];    // [pose][ear]
+  Samples outputs[2][2];  // [pose][ear]
+  std::vector<float> hrir_left, hrir_right;
+  std::vector<SourceView> views[2];
+};
+
+Scratch& threadScratch() {
+  thread_local Scratch scratch;
+  return scratch;
+}
+
+bool finite(const Eigen::Vector3d& v) { return v.allFinite(); }
+
+void refuse(const std::string& what) { throw std::invalid_argument("BinauralRenderer: " + what); }
+
+void checkRequest(const BlockRequest& request, double sample_rate) {
+  const double max_samples = BinauralRenderer::kMaxBlockSeconds * sample_rate;
+  if (request.num_samples < 0 || request.num_samples > max_samples) {
+    refuse("num_samples " + std::to_string(request.num_samples) + " is outside 0 to " +
+           std::to_string(static_cast<int64_t>(max_samples)) + " (" +
+           std::to_string(static_cast<int>(BinauralRenderer::kMaxBlockSeconds)) + " s)");
+  }
+  if (request.first_sample < -kMaxAbsoluteSample || request.first_sample > kMaxAbsoluteSample) {
+    refuse("first_sample " + std::to_string(request.first_sample) + " is beyond +-2^52");
+  }
+  for (const auto& [pose, name] : {std::pair<const HeadPose*, const char*>{&request.previous, "previous"},
+                                   std::pair<const HeadPose*, const char*>{&request.current, "current"}}) {
+    if (!finite(pose->centre) || !std::isfinite(pose->yaw_deg)) refuse(std::string(name) + " head pose is not finite");
+  }
+  if (!std::isfinite(request.noise_rms) || request.noise_rms < 0) {
+    refuse("noise_rms " + std::to_string(request.noise_rms) + " is not a finite value >= 0");
+  }
+  for (std::size_t i = 0; i < request.sources.size(); ++i) {
+    const RenderedSource& source = request.sources[i];
+    const std::string which = "source " + std::to_string(i) + ": ";
+    if (source.signal == nullptr || source.signal->samples.empty()) refuse(which + "has no signal samples");
+    if (!finite(source.position)) refuse(which + "position is not finite");
+    if (!std::isfinite(source.level) || source.level < 0) {
+      refuse(which + "level " + std::to_string(source.level) + " is not a finite value >= 0");
+    }
+    if (!(source.occlusion >= 0 && source.occlusion <= 1)) {
+      refuse(which + "occlusion " + std::to_string(source.occlusion) + " is outside [0, 1]");
+    }
+  }
+}
+
+bool samePose(const HeadPose& a, const HeadPose& b) { return a.centre == b.centre && a.yaw_deg == b.yaw_deg; }
+
+// Position index + fraction of the signal heard at absolute sample n when
+// it is read `shift` samples later (shift = advance - delay): the split
+// depends on shift alone, so a sample's value does not depend on the block.
+struct ReadPosition {
+  int64_t offset;  // added to n
+  float fraction;
+};
+ReadPosition splitShift(double shift) {
+  const double whole = std::floor(shift);
+  return {static_cast<int64_t>(whole), static_cast<float>(shift - whole)};
+}
+
+}  // namespace
+
+BinauralRenderer::BinauralRenderer(HrirSet hrirs, double sample_rate, OcclusionModel occlusion)
+    : hrirs_(std::move(hrirs)), sample_rate_(sample_rate), occlusion_(occlusion) {
+  if (!(sample_rate_ > 0) || !std::isfinite(sample_rate_)) {
+    throw std::invalid_argument("BinauralRenderer: sample rate " + std::to_string(sample_rate_) + " Hz is not positive");
+  }
+  if (std::fabs(hrirs_.sampleRate() - sample_rate_) > 1e-6) {
+    throw std::invalid_argument("BinauralRenderer: the HRIR set (" + hrirs_.name() + ") is at " +
+                                std::to_string(hrirs_.sampleRate()) + " Hz, the renderer at " +
+                                std::to_string(sample_rate_) + " Hz; resample one of them");
+  }
+  occlusion_.taps = std::max(1, occlusion_.taps | 1);
+  filter_length_ = hrirs_.length() + occlusion_.taps - 1;
+  read_advance_ = hrirs_.centreDelaySamples() + (occlusion_.taps - 1) / 2.0;
+}
+
+double BinauralRenderer::headAzimuthDeg(const HeadPose& pose, const Eigen::Vector3d& point) {
+  const Eigen::Vector3d relative = point - pose.centre;
+  double azimuth = std::atan2(relative.y(), relative.x()) * 180 / kPi - pose.yaw_deg;
+  azimuth = std::fmod(azimuth, 360.0);
+  if (azimuth > 180) azimuth -= 360;
+  if (azimuth <= -180) azimuth += 360;
+  return azimuth;
+}
+
+StereoBlock BinauralRenderer::render(const BlockRequest& request) const {
+  StereoBlock out;
+  render(request, out);
+  return out;
+}
+
+void BinauralRenderer::render(const BlockRequest& request, StereoBlock& out) const {
+  checkRequest(request, sample_rate_);
+  const int total = request.num_samples;
+  out.left.assign(total, 0.0f);
+  out.right.assign(total, 0.0f);
+  if (total == 0) return;
+
+  Scratch& s = threadScratch();
+  const bool turning = !samePose(request.previous, request.current);
+  const int poses = turning ? 2 : 1;
+  const HeadPose* pose_of[2] = {&request.previous, &request.current};
+  const std::size_t source_count = request.sources.size();
+  for (int p = 0; p < poses; ++p) {
+    s.views[p].resize(source_count);
+    for (std::size_t i = 0; i < source_count; ++i) {
+      const RenderedSource& source = request.sources[i];
+      const double distance = std::max(kMinDistance, (source.position - pose_of[p]->centre).norm());
+      s.views[p][i] = {headAzimuthDeg(*pose_of[p], source.position), source.level / distance,
+                       distance / kSpeedOfSound * sample_rate_};
+    }
+  }
+
+  const int hrir_length = hrirs_.length();
+  const int history = filter_length_ - 1;
+  s.hrir_left.resize(hrir_length);
+  s.hrir_right.resize(hrir_length);
+  const int64_t first = request.first_sample;
+  // Share of the way from the previous pose to the current one at absolute
+  // sample n: 1/total at the block's first sample, 1 at its last, negative
+  // before the block.
+  const auto progress = [&](int64_t n) { return static_cast<double>(n - first + 1) / total; };
+
+  for (int chunk_start = 0; chunk_start < total; chunk_start += kMaxChunk) {
+    const int chunk = std::min(kMaxChunk, total - chunk_start);
+    const int segment_length = chunk + history;
+    const int64_t segment_first = first + chunk_start - history;
+    const RealFft fft(fastFftSize(segment_length));
+    const int bins = fft.bins();
+    for (int p = 0; p < poses; ++p)
+      for (auto& sum : s.sums[p]) {
+        sum.resize(bins);
+        std::fill(sum.data(), sum.data() + bins, std::complex<float>(0, 0));
+      }
+    s.segment.resize(segment_length);
+
+    for (std::size_t i = 0; i < source_count; ++i) {
+      const RenderedSource& source = request.sources[i];
+      const std::vector<float>& signal = source.signal->samples;
+      // The source as it arrives at the head centre, over the chunk and the
+      // history the filters need.
+      const SourceView& before = s.views[0][i];
+      if (!turning) {
+        const ReadPosition read = splitShift(read_advance_ - before.delay_samples);
+        readLoopedRun(signal, segment_first + read.offset, read.fraction, static_cast<float>(before.gain),
+                      segment_length, s.segment.data());
+      } else {
+        // The delay and gain move linearly over the block; before it (the
+        // history the filters need), they continue the same motion
+        // backwards, at most one block's worth, which is what the previous
+        // block rendered when the head moved steadily: walking towards a
+        // source at 1 m/s, holding the delay there instead put a 2-sample
+        // phase jump at each block's start. The read index moves by 0 to 2
+        // samples from one sample to the next: a cursor kept wrapped saves
+        // a division per sample.
+        const SourceView& after = s.views[1][i];
+        const int64_t length = static_cast<int64_t>(signal.size());
+        int64_t index = 0, cursor = 0;
+        for (int j = 0; j < segment_length; ++j) {
+          const int64_t n = segment_first + j;
+          const double u = std::clamp(progress(n), -1.0, 1.0);
+          const double delay = before.delay_samples + u * (after.delay_samples - before.delay_samples);
+          const double gain = std::max(0.0, before.gain + u * (after.gain - before.gain));
+          const ReadPosition read = splitShift(read_advance_ - delay);
+          const int64_t next = n + read.offset;
+          if (j == 0 || next - index > 2 * length || index - next > 2 * length) {
+            cursor = ((next % length) + length) % length;
+          } else {
+            cursor += next - index;
+            while (cursor >= length) cursor -= length;
+            while (cursor < 0) cursor += length;
+          }
+          index = next;
+          s.segment[j] = static_cast<float>(gain) * readLoopedWrapped(signal, cursor, read.fraction);
+        }
+      }
+      fft.forward(s.segment.data(), segment_length, s.padded, s.source);
+      const std::vector<float> lowpass = occlusionFilter(source.occlusion, sample_rate_, occlusion_);
+      fft.forward(lowpass.data(), static_cast<int>(lowpass.size()), s.padded, s.lowpass);
+      multiplyInPlace(s.source, s.lowpass, bins);
+      // Linear: the ears' spectra are summed over sources, and each pose
+      // needs one inverse transform per ear whatever the number of sources.
+      for (int p = 0; p < poses; ++p) {
+        hrirs_.responsesAt(s.views[p][i].azimuth_deg, s.hrir_left.data(), s.hrir_right.data());
+        fft.forward(s.hrir_left.data(), hrir_length, s.padded, s.filter);
+        multiplyAccumulate(s.source, s.filter, bins, s.sums[p][0]);
+        fft.forward(s.hrir_right.data(), hrir_length, s.padded, s.filter);
+        multiplyAccumulate(s.source, s.filter, bins, s.sums[p][1]);
+      }
+    }
+
+    for (int p = 0; p < poses; ++p)
+      for (int ear = 0; ear < 2; ++ear) fft.inverse(s.sums[p][ear], s.outputs[p][ear]);
+    // Overlap-save: the first `history` outputs wrapped round; the rest are
+    // the chunk.
+    float* ears[2] = {out.left.data() + chunk_start, out.right.data() + chunk_start};
+    if (!turning) {
+      for (int ear = 0; ear < 2; ++ear) {
+        const float* from_previous = s.outputs[0][ear].data() + history;
+        std::copy(from_previous, from_previous + chunk, ears[ear]);
+      }
+      continue;
+    }
+    // Raised cosine w = (1 - cos(pi u)) / 2, u = (j + 1) / total, from 0 to 1:
+    // the cosine by rotating a phasor, one step per sample.
+    const std::complex<double> step = std::polar(1.0, kPi / total);
+    std::complex<double> phasor = std::polar(1.0, kPi * progress(first + chunk_start));
+    for (int j = 0; j < chunk; ++j) {
+      const float w = static_cast<float>(0.5 - 0.5 * phasor.real());
+      phasor *= step;
+      for (int ear = 0; ear < 2; ++ear)
+        ears[ear][j] = (1 - w) * s.outputs[0][ear][history + j] + w * s.outputs[1][ear][history + j];
+    }
+  }
+
+  addSensorNoise(request.noise_seed, first, total, request.noise_rms, out.left.data(), out.right.data());
+}
+
+}  // namespace beft::hearing

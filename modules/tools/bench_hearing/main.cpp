@@ -1,0 +1,186 @@
+// beft-bench-hearing (./beft bench hearing): the binaural renderer's figures:
+// the cues of a source at +90 deg (ITD, ILD) and how much faster than real
+// time it renders four sources on one core. Each figure is one entry of
+// figures(): a key, its unit, what it measures and how.
+#include <time.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "binaural_cues.hpp"
+#include "binaural_renderer.hpp"
+#include "command_line.hpp"
+#include "hrir_set.hpp"
+#include "log.hpp"
+
+using namespace beft::hearing;
+
+namespace {
+
+constexpr double kRate = 44100;
+constexpr int kBlock = 4410;  // one tick, 0.1 s
+constexpr double kPi = 3.14159265358979323846;
+
+struct Options {
+  std::string hrir_path = HrirSet::kKemarPath;
+  bool spherical_head = false;
+  double seconds = 2.0;  // CPU time per speed figure
+  bool json = false;
+};
+
+// What every figure may use; built once.
+struct Bench {
+  const Options& options;
+  const BinauralRenderer& renderer;
+  SourceSignal noise;  // white, 2 s, unit RMS
+};
+
+struct Figure {
+  std::string key;
+  std::string unit;
+  std::string meaning;
+  std::function<double(const Bench&)> measure;
+};
+
+// CPU time of this thread [s]: the figure does not depend on what else the
+// machine runs.
+double threadSeconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return now.tv_sec + 1e-9 * now.tv_nsec;
+}
+
+SourceSignal whiteNoise(double seconds, uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::normal_distribution<float> normal(0, 1);
+  SourceSignal signal;
+  signal.samples.resize(static_cast<std::size_t>(seconds * kRate));
+  for (float& sample : signal.samples) sample = normal(random);
+  return signal;
+}
+
+Eigen::Vector3d at(double azimuth_deg, double distance) {
+  return {distance * std::cos(azimuth_deg * kPi / 180), distance * std::sin(azimuth_deg * kPi / 180), 0};
+}
+
+// White noise from +90 deg (the left), 2 m away, head at the origin facing +x; 0.2 s, no sensor noise.
+StereoBlock leftSource(const Bench& bench) {
+  BlockRequest request;
+  request.first_sample = kBlock * 10;
+  request.num_samples = 2 * kBlock;
+  request.noise_rms = 0;
+  request.sources.push_back({&bench.noise, at(90, 2.0), 1.0, 0.0});
+  return bench.renderer.render(request);
+}
+
+// Four sources at 30, 120, -45 and -160 deg, 1.5 to 6 m, one partly
+// occluded; consecutive blocks rendered for about options.seconds of CPU
+// time. `moving`: the head turns at 90 deg/s and walks at 0.5 m/s (every
+// block cross-fades two poses); otherwise it stands still. Rendered audio
+// seconds per CPU second.
+double realtimeFactor(const Bench& bench, bool moving) {
+  const std::vector<SourceSignal> signals = {whiteNoise(1.3, 1), whiteNoise(1.7, 2), whiteNoise(2.1, 3),
+                                             whiteNoise(0.9, 4)};
+  BlockRequest request;
+  request.num_samples = kBlock;
+  request.noise_seed = 5;
+  const double azimuths[4] = {30, 120, -45, -160}, distances[4] = {1.5, 3, 4.5, 6}, occlusions[4] = {0, 0.4, 0, 1};
+  for (int i = 0; i < 4; ++i) request.sources.push_back({&signals[i], at(azimuths[i], distances[i]), 1.0, occlusions[i]});
+  StereoBlock out;
+  const auto setTick = [&](int64_t tick) {
+    request.first_sample = tick * kBlock;
+    const double step = moving ? 1.0 : 0.0;
+    request.previous.yaw_deg = step * 9.0 * tick;
+    request.current.yaw_deg = step * 9.0 * (tick + 1);
+    request.previous.centre = Eigen::Vector3d(step * 0.05 * tick, 0, 0);
+    request.current.centre = Eigen::Vector3d(step * 0.05 * (tick + 1), 0, 0);
+  };
+  setTick(0);
+  bench.renderer.render(request, out);  // FFT plans and buffers
+  const double start = threadSeconds();
+  int64_t blocks = 0;
+  double elapsed = 0;
+  while (blocks < 5 || elapsed < bench.options.seconds) {
+    setTick(blocks + 1);
+    bench.renderer.render(request, out);
+    ++blocks;
+    elapsed = threadSeconds() - start;
+  }
+  return blocks * (kBlock / kRate) / elapsed;
+}
+
+const std::vector<Figure>& figures() {
+  static const std::vector<Figure> list = {
+      {"itd_90_ms", "ms", "ITD of white noise from +90 deg at 2 m (cross-correlation peak; > 0: left ear first)",
+       [](const Bench& b) {
+         const StereoBlock ears = leftSource(b);
+         return interauralTimeDifferenceMs(ears.left, ears.right, kRate);
+       }},
+      {"ild_90_db", "dB", "ILD of the same above 4 kHz (> 0: left ear louder)",
+       [](const Bench& b) {
+         const StereoBlock ears = leftSource(b);
+         return interauralLevelDifferenceDb(ears.left, ears.right, kRate, 4000);
+       }},
+      {"render_realtime_factor_4_sources", "x",
+       "4 sources, head turning 90 deg/s and walking 0.5 m/s: audio rendered per CPU second on one core",
+       [](const Bench& b) { return realtimeFactor(b, true); }},
+      {"render_realtime_factor_4_sources_static", "x", "the same with the head standing still",
+       [](const Bench& b) { return realtimeFactor(b, false); }},
+  };
+  return list;
+}
+
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
+  CLI::App app(
+      "Benchmarks the binaural renderer: the cues of a white-noise source at +90 deg (ITD, ILD above 4 kHz) and "
+      "how many times faster than real time it renders 4 sources in 0.1 s blocks on one core (CPU time of this "
+      "thread). Human-readable by default, one JSON object with --json.",
+      "beft-bench-hearing");
+  app.add_option("--hrir", o.hrir_path, "HRIR set (WAV, the SSR's layout); falls back to the spherical head")
+      ->capture_default_str();
+  app.add_flag("--spherical-head", o.spherical_head, "use the spherical-head model instead of the HRIR file");
+  app.add_option("--seconds", o.seconds, "CPU time per speed figure [s]")->capture_default_str()->check(
+      CLI::PositiveNumber);
+  app.add_flag("--json", o.json, "print one JSON object of the figures");
+  return beft::parseCommandLine(app, argc, argv);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  beft::log::setProcessName("bench-hearing");
+  Options options;
+  if (const auto code = parseOptions(argc, argv, options)) return *code;
+  const HrirSet hrirs = options.spherical_head
+                            ? HrirSet::sphericalHead(kRate)
+                            : HrirSet::loadDefault([](const std::string& m) { beft::log::warn(m); }, options.hrir_path);
+  if (hrirs.sampleRate() != kRate) {
+    std::fprintf(stderr, "beft-bench-hearing: %s is at %.0f Hz; the benchmark renders at %.0f Hz\n",
+                 hrirs.name().c_str(), hrirs.sampleRate(), kRate);
+    return 1;
+  }
+  const BinauralRenderer renderer(hrirs, kRate);
+  const Bench bench{options, renderer, whiteNoise(2.0, 7)};
+
+  nlohmann::json report;
+  report["hrir_set"] = hrirs.name();
+  if (!options.json) std::printf("HRIR set: %s\n", hrirs.name().c_str());
+  for (const Figure& figure : figures()) {
+    const double value = figure.measure(bench);
+    report[figure.key] = value;
+    if (!options.json) {
+      std::printf("%-42s %9.3f %-3s %s\n", figure.key.c_str(), value, figure.unit.c_str(), figure.meaning.c_str());
+      std::fflush(stdout);
+    }
+  }
+  if (options.json) std::printf("%s\n", report.dump(2).c_str());
+  return 0;
+}
