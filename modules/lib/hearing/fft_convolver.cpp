@@ -135,6 +135,13 @@ void RealFft::forward(const float* x, int n, Samples& scratch, Spectrum& spectru
                         reinterpret_cast<fftwf_complex*>(spectrum.data()));
 }
 
+void RealFft::forward(const std::vector<float>& input, std::vector<std::complex<float>>& output) const {
+  thread_local Samples scratch;
+  thread_local Spectrum spectrum;
+  forward(input.data(), std::min(static_cast<int>(input.size()), size_), scratch, spectrum);
+  output.assign(spectrum.data(), spectrum.data() + bins());
+}
+
 void RealFft::inverse(Spectrum& spectrum, Samples& out) const {
   if (static_cast<int>(spectrum.size()) < bins()) {
     throw std::invalid_argument("RealFft::inverse: spectrum of " + std::to_string(spectrum.size()) +

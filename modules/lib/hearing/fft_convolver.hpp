@@ -58,6 +58,10 @@ class RealFft {
   // Transforms x[0..n) zero-padded to size() into spectrum (resized to bins()).
   // n <= size(). Uses `scratch` (resized to size()) for the padded input.
   void forward(const float* x, int n, Samples& scratch, Spectrum& spectrum) const;
+  // The same for analysis: the first size() samples of `input` (zero-padded
+  // if shorter) into `output` (resized to bins()), through aligned scratch
+  // buffers of the calling thread.
+  void forward(const std::vector<float>& input, std::vector<std::complex<float>>& output) const;
   // Inverse of forward, scaled by 1/size() (so inverse(forward(x)) == x);
   // `spectrum` is overwritten, `out` resized to size().
   void inverse(Spectrum& spectrum, Samples& out) const;

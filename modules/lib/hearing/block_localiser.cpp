@@ -1,0 +1,160 @@
+#include "block_localiser.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+
+#include "azimuth_votes.hpp"
+
+namespace beft::hearing {
+
+namespace {
+
+constexpr int kAzimuths = AzimuthPosterior::kBins;
+
+// One frame's spectra, reduced to what the votes need.
+struct FrameSpectra {
+  std::vector<double> energy_left, energy_right;  // per band
+  std::vector<std::complex<float>> cross;         // left times conjugate right, per bin below the split
+};
+
+}  // namespace
+
+BlockLocaliser::BlockLocaliser(InterauralTemplates templates, const LocaliserConfig& config)
+    : templates_(std::move(templates)), config_(config), fft_(templates_.layout().frame_size) {
+  if (!(config.silence_rms > 0) || !(config.band_range_db > 0) || !(config.phase_sharpness > 0) ||
+      !(config.max_phase_sharpness > 0) || !(config.ild_spread_db > 0) || !(config.level_cue_weight >= 0) ||
+      !(config.min_peak_separation_deg >= 0) || !(config.min_peak_relative_weight >= 0) || config.max_peaks < 0)
+    throw std::invalid_argument("the localiser's silence level, band range, sharpness and ILD spread must be > 0, "
+                                "its weights, separation and peak count >= 0");
+  const int size = templates_.layout().frame_size;
+  window_.resize(static_cast<std::size_t>(size));
+  for (int n = 0; n < size; ++n) {
+    window_[static_cast<std::size_t>(n)] = static_cast<float>(0.5 - 0.5 * std::cos(2 * M_PI * n / size));
+    window_power_ += static_cast<double>(window_[static_cast<std::size_t>(n)]) * window_[static_cast<std::size_t>(n)];
+  }
+}
+
+BlockLocalisation BlockLocaliser::localise(const std::vector<float>& left, const std::vector<float>& right) const {
+  if (left.size() != right.size())
+    throw std::invalid_argument("the ear signals differ in length (" + std::to_string(left.size()) + " left, " +
+                                std::to_string(right.size()) + " right samples)");
+  for (std::size_t i = 0; i < left.size(); ++i)
+    if (!std::isfinite(left[i]) || !std::isfinite(right[i]))
+      throw std::invalid_argument("the ear signals hold a sample that is not finite (at " + std::to_string(i) + ")");
+
+  const FrequencyBands& bands = templates_.bands();
+  const int band_count = bands.size();
+  const int level_from = templates_.firstLevelBand();
+  const int phase_bins = templates_.phaseBins();
+  const int frame_size = templates_.layout().frame_size, hop = templates_.layout().hop;
+  const long length = static_cast<long>(left.size());
+
+  // 1. Spectra of the frames loud enough to vote.
+  std::vector<FrameSpectra> frames;
+  std::vector<float> windowed_left(static_cast<std::size_t>(frame_size)), windowed_right(windowed_left);
+  std::vector<std::complex<float>> spectrum_left, spectrum_right;
+  for (long start = 0; length > 0 && (start == 0 || start + frame_size <= length); start += hop) {
+    double energy = 0;
+    for (int n = 0; n < frame_size; ++n) {
+      const long i = start + n;
+      const float l = i < length ? left[static_cast<std::size_t>(i)] : 0.0f;
+      const float r = i < length ? right[static_cast<std::size_t>(i)] : 0.0f;
+      energy += static_cast<double>(l) * l + static_cast<double>(r) * r;
+      windowed_left[static_cast<std::size_t>(n)] = l * window_[static_cast<std::size_t>(n)];
+      windowed_right[static_cast<std::size_t>(n)] = r * window_[static_cast<std::size_t>(n)];
+    }
+    if (energy < 2.0 * frame_size * config_.silence_rms * config_.silence_rms) continue;
+    fft_.forward(windowed_left, spectrum_left);
+    fft_.forward(windowed_right, spectrum_right);
+    FrameSpectra frame;
+    frame.energy_left.assign(static_cast<std::size_t>(band_count), 0.0);
+    frame.energy_right.assign(static_cast<std::size_t>(band_count), 0.0);
+    for (int b = 0; b < band_count; ++b)
+      for (int k = bands[b].first_bin; k < bands[b].end_bin; ++k) {
+        frame.energy_left[static_cast<std::size_t>(b)] += std::norm(spectrum_left[static_cast<std::size_t>(k)]);
+        frame.energy_right[static_cast<std::size_t>(b)] += std::norm(spectrum_right[static_cast<std::size_t>(k)]);
+      }
+    frame.cross.resize(static_cast<std::size_t>(phase_bins));
+    for (int k = 0; k < phase_bins; ++k)
+      frame.cross[static_cast<std::size_t>(k)] =
+          spectrum_left[static_cast<std::size_t>(k)] * std::conj(spectrum_right[static_cast<std::size_t>(k)]);
+    frames.push_back(std::move(frame));
+  }
+
+  BlockLocalisation result;
+  result.voting_frames = static_cast<int>(frames.size());
+  if (frames.empty()) return result;
+
+  // 2. Which bands vote: within band_range_db of the loudest, and above white noise at the silence level.
+  auto density = [&](const FrameSpectra& f, int b) {
+    const auto i = static_cast<std::size_t>(b);
+    return 0.5 * (f.energy_left[i] + f.energy_right[i]) / (bands[b].end_bin - bands[b].first_bin);
+  };
+  double loudest = 0;
+  for (const FrameSpectra& f : frames)
+    for (int b = 0; b < band_count; ++b) loudest = std::max(loudest, density(f, b));
+  const double threshold = std::max(loudest * std::pow(10.0, -config_.band_range_db / 10),
+                                    config_.silence_rms * config_.silence_rms * window_power_);
+
+  // 3. The votes.
+  AzimuthVotes votes(band_count);
+  const float inverse_twice_variance = static_cast<float>(1.0 / (2 * config_.ild_spread_db * config_.ild_spread_db));
+  for (const FrameSpectra& f : frames) {
+    for (int b = 0; b < band_count; ++b) {
+      if (density(f, b) < threshold) continue;
+      if (b < level_from) {
+        // Time cues: each bin on its own, so a tone or a harmonic holds its bin even where another sound
+        // holds the rest of the band. Its phase against each azimuth's template phase, as a von Mises
+        // likelihood whose concentration grows towards low frequencies, where the whole range of
+        // interaural delays spans only a fraction of a cycle (so each radian counts for more degrees).
+        for (int k = bands[b].first_bin; k < bands[b].end_bin; ++k) {
+          const std::complex<float> c = f.cross[static_cast<std::size_t>(k)];
+          const float magnitude = std::abs(c);
+          if (!(magnitude > 0)) continue;
+          const double hz = std::max(k * bands.binHz(), 1.0);
+          const float sharpness = static_cast<float>(
+              std::min(config_.max_phase_sharpness, config_.phase_sharpness * config_.sharpness_reference_hz / hz));
+          AzimuthVote vote;
+          for (int a = 0; a < kAzimuths; ++a) {
+            const std::complex<float> t = templates_.interauralPhase(a, k);
+            const float cosine = (c.real() * t.real() + c.imag() * t.imag()) / magnitude;
+            vote.likelihood[static_cast<std::size_t>(a)] = std::exp(sharpness * (cosine - 1));
+          }
+          vote.band = b;
+          vote.energy = 2.0 * magnitude;  // |L| |R| per ear
+          vote.weight = std::pow(vote.energy, config_.weight_exponent);
+          votes.add(std::move(vote));
+        }
+      } else if (config_.level_cue_weight > 0) {
+        // Level cue: the band's ILD against each azimuth's template ILD.
+        const auto i = static_cast<std::size_t>(b);
+        const double heard = 10 * std::log10((f.energy_left[i] + 1e-30) / (f.energy_right[i] + 1e-30));
+        AzimuthVote vote;
+        for (int a = 0; a < kAzimuths; ++a) {
+          const float difference = static_cast<float>(heard - templates_.ild(a, b));
+          vote.likelihood[static_cast<std::size_t>(a)] = std::exp(-difference * difference * inverse_twice_variance);
+        }
+        vote.band = b;
+        vote.energy = f.energy_left[i] + f.energy_right[i];
+        vote.weight = config_.level_cue_weight * std::pow(vote.energy, config_.weight_exponent);
+        votes.add(std::move(vote));
+      }
+    }
+  }
+  result.posterior = votes.posterior();
+
+  // 4. The sources, one after the other, with the band energy of the votes each explained.
+  for (FoundSource& source : votes.separateSources(config_.max_peaks, config_.min_peak_separation_deg,
+                                                   config_.min_peak_relative_weight)) {
+    LocalisedPeak peak;
+    peak.azimuth_deg = source.azimuth_deg;
+    peak.weight = source.weight;
+    peak.signature.band_energy = std::move(source.band_energy);
+    result.peaks.push_back(std::move(peak));
+  }
+  return result;
+}
+
+}  // namespace beft::hearing

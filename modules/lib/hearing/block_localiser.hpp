@@ -1,0 +1,90 @@
+// Where the sounds in one block of ear signals come from. The block is cut
+// into short Hann-windowed frames; in each frame every band that is loud
+// enough votes for the azimuths whose templates match what it hears:
+//  - below the split frequency, the interaural phase of its FFT bins, weighed
+//    by their cross-power and steered to each azimuth's template phase (the
+//    GCC-PHAT of the band evaluated at that azimuth's interaural delay, with
+//    the template's own phase per bin rather than one delay for all);
+//  - above it, the interaural level difference of the band against the
+//    template's, with a spread that allows for a head not quite like the
+//    template's.
+// Each vote is a distribution over azimuth, weighted by the band's amplitude
+// (the square root of its energy, so a quieter source still shows). Sources
+// that dominate different frames and bands give separate peaks. Silent
+// blocks and bands do not vote: a silent block gives a flat posterior and no
+// peaks.
+#pragma once
+
+#include <vector>
+
+#include "azimuth_posterior.hpp"
+#include "band_signature.hpp"
+#include "interaural_templates.hpp"
+#include "fft_convolver.hpp"
+
+namespace beft::hearing {
+
+struct LocaliserConfig {
+  // A frame votes only if its RMS over both ears is at least this (-60 dBFS;
+  // the rendered noise floor is -80 dBFS).
+  double silence_rms = 1e-3;
+  // A band votes only if its power per bin is within this of the block's
+  // loudest band and above what white noise at silence_rms would give it.
+  double band_range_db = 50;
+  // Concentration of a bin's phase vote, exp(k (cos(heard - template) - 1)),
+  // at the reference frequency; it grows as 1/f below it, up to the maximum.
+  double phase_sharpness = 8;
+  double sharpness_reference_hz = 1000;
+  double max_phase_sharpness = 200;
+  // Spread of a level band's vote around the template's ILD [dB]: wide,
+  // since ILDs above a few kHz differ by up to 10 dB between two KEMARs.
+  double ild_spread_db = 6;
+  // Weight of a level vote against a time vote of the same energy: the
+  // level cues help beside the head, where time cues change least, but
+  // carry the other head's pinna with them.
+  double level_cue_weight = 0.3;
+  // A vote weighs energy^weight_exponent: 0.5 (its amplitude) lets a quieter
+  // or narrower-band source still show beside a loud broadband one.
+  double weight_exponent = 0.5;
+  int max_peaks = 4;
+  double min_peak_separation_deg = 20;
+  double min_peak_relative_weight = 0.1;  // of what the first peak explained
+};
+
+struct LocalisedPeak {
+  double azimuth_deg = 0;  // head-relative, CCW, 0 = front
+  double weight = 0;       // share of the block's votes it explains
+  BandSignature signature;  // energy per band of the votes it explains
+};
+
+struct BlockLocalisation {
+  AzimuthPosterior posterior;       // flat when silent
+  // The sources told apart in the votes (azimuth_votes.hpp), strongest
+  // first; none when silent. Each is still front-back ambiguous: the
+  // posterior holds its mirror image too (see combineAfterTurn).
+  std::vector<LocalisedPeak> peaks;
+  int voting_frames = 0;
+  bool silent() const { return voting_frames == 0; }
+};
+
+class BlockLocaliser {
+ public:
+  explicit BlockLocaliser(InterauralTemplates templates, const LocaliserConfig& config = LocaliserConfig{});
+
+  // `left` and `right` at the templates' sample rate, of equal length (a
+  // block is 0.1 s; blocks shorter than a frame are zero-padded to one).
+  // Throws std::invalid_argument if the lengths differ or a sample is not finite.
+  BlockLocalisation localise(const std::vector<float>& left, const std::vector<float>& right) const;
+
+  const LocaliserConfig& config() const { return config_; }
+  const InterauralTemplates& templates() const { return templates_; }
+
+ private:
+  InterauralTemplates templates_;
+  LocaliserConfig config_;
+  RealFft fft_;
+  std::vector<float> window_;
+  double window_power_ = 0;  // sum of the squared window
+};
+
+}  // namespace beft::hearing
