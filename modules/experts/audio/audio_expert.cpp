@@ -1,10 +1,15 @@
 #include "audio_expert.hpp"
 
+#include <cmath>
+#include <filesystem>
 #include <limits>
-
 #include <stdexcept>
 
 #include "channels.hpp"
+#include "heard_percepts.hpp"
+#include "log.hpp"
+#include "object_geometry.hpp"
+#include "task_messages.hpp"
 
 namespace beft::audio {
 
@@ -15,7 +20,12 @@ std::string AudioExpert::description() const {
          "another object), the position estimate p_hat (true position; with "
          "--param position_noise=1 plus seeded Gaussian noise of spread noise_max_m * (1 - a_P)), "
          "the label its sound suggests, its activity and level. Reads GT_OBJECTS and ROBOT_STATE "
-         "of the fired tick, writes AUDIO. To run it alone: start beft-world and feed FIRE "
+         "of the fired tick, writes AUDIO. With --param acoustics=binaural (./beft run --acoustics binaural) "
+         "p_hat comes from what the ears heard (EARS): each block localised against interaural templates of "
+         "the MIT KEMAR head (libmysofa), its peaks matched to the sounding objects by spectrum, a world-frame "
+         "direction per object kept over the blocks (a turning head resolves front and back; when it stays "
+         "ambiguous a turn_head task is pushed on TASK_COMMAND), the distance triangulated over the robot's "
+         "own motion; O_a is computed for a source at p_hat. To run it alone: start beft-world and feed FIRE "
          "tokens for 'audio' (or run the arbiter), and watch AUDIO with lcm-spy.";
 }
 
@@ -26,14 +36,102 @@ void AudioExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("seed", seed_, 0, std::numeric_limits<int64_t>::max(),
                      "seed of the position noise (use the scenario's seed)");
   model::declareParameters(parameters, config_.model, {"aw_variance_deg2"});
+  parameters.declareChoice("acoustics", acoustics_,
+                           {{"ground_truth", Acoustics::GroundTruth}, {"binaural", Acoustics::Binaural}},
+                           "p_hat from ground truth (the paper's experiments) or from the ear signals on EARS");
+  parameters.declare("scenario", scenario_, "scenario file; binaural: the objects' sounds are relative to its folder");
+  parameters.declare("default_distance_m", hearing_config_.default_distance_m, 0.5, 50,
+                     "binaural: distance of an estimate before the bearings cross [m]");
+  parameters.declare("turn_deg", hearing_config_.turn_deg, 5, 60,
+                     "binaural: head turn asked for when front and back cannot be told apart [deg]");
+  parameters.declare("turn_priority", turn_priority_, 0, 1000, "binaural: priority of that turn_head task");
+  parameters.declare("head_yaw_limit_deg", head_yaw_limit_deg_, 0, 180,
+                     "binaural: the head turns no farther than this either way [deg]");
 }
 
 void AudioExpert::onStartUp() {
   config_.noise.seed = static_cast<uint64_t>(seed_);
+  if (acoustics_ != Acoustics::Binaural) return;
+  auto templates = hearing::InterauralTemplates::fromSofa();
+  const double rate = templates.layout().sample_rate;
+  localiser_.emplace(std::move(templates));
+  const std::string folder = std::filesystem::path(scenario_).parent_path().string();
+  if (scenario_.empty()) log::warn("audio: no --param scenario=FILE: sounds are looked up from the current folder");
+  sounds_ = std::make_unique<hearing::SoundBank>(folder.empty() ? "." : folder, rate,
+                                                 [](const std::string& text) { log::warn(text); });
+  heard_.emplace(hearing_config_);
+  log::info("audio: localising the ear signals (templates of the MIT KEMAR head)");
+}
+
+bool AudioExpert::admitBlock(binaural_block_t& block, std::string* why) {
+  constexpr int kMaxSamples = 10 * 48000;  // 10 s of one ear: far beyond any tick
+  if (!(block.full_scale > 0) || !std::isfinite(block.full_scale)) {
+    *why = "full_scale is not a positive number";
+    return false;
+  }
+  if (block.num_samples > kMaxSamples) {
+    *why = "more than 10 s of samples in one block";
+    return false;
+  }
+  return true;
 }
 
 bool AudioExpert::inputsReady(const expert::Firing& firing) const {
-  return scene_.has(firing.tick) && robot_.has(firing.tick);
+  const bool heard = acoustics_ != Acoustics::Binaural || ears_.has(firing.tick);
+  return scene_.has(firing.tick) && robot_.has(firing.tick) && heard;
+}
+
+const hearing::BandSignature* AudioExpert::signatureOf(const std::string& sound) {
+  auto found = signatures_.find(sound);
+  if (found == signatures_.end()) {
+    std::optional<hearing::BandSignature> signature;
+    if (const hearing::SourceSignal* signal = sounds_->sound(sound)) {
+      const auto& layout = localiser_->templates().layout();
+      signature = hearing::signatureOfSound(signal->samples, layout.sample_rate, layout);
+    }
+    found = signatures_.emplace(sound, std::move(signature)).first;
+  }
+  return found->second ? &*found->second : nullptr;
+}
+
+void AudioExpert::askForHeadTurn(const expert::Firing& firing, const robot_state_t& robot, expert::Output& out) {
+  std::string object_id;
+  const auto target = heard_->wantsHeadTurn(robot.head_yaw, head_yaw_limit_deg_, firing.utime, &object_id);
+  if (!target) return;
+  tasks::Task turn;
+  turn.kind = tasks::kinds::kTurnHead;
+  turn.priority = static_cast<int>(turn_priority_);
+  turn.yaw = *target;
+  turn.object_id = object_id;
+  turn.origin = "audio";
+  turn.note = "front or back? " + object_id + " is heard where its mirror image would be heard too";
+  task_command_t command{};
+  command.utime = firing.utime;
+  command.command_id = next_command_id_++;
+  command.command = task_command_t::COMMAND_PUSH;
+  command.task = tasks::toMessage(turn);
+  task_command_out_.publish(out, command);
+}
+
+expert::Outcome AudioExpert::fireHearing(const expert::Firing& firing, const scene_objects_t& scene,
+                                         const robot_state_t& robot, expert::Output& out) {
+  const auto* block = ears_.ofTick(firing.tick);
+  if (block == nullptr) return expert::Outcome::failure("no EARS for tick " + std::to_string(firing.tick));
+  const std::size_t count = std::min(block->left.size(), block->right.size());
+  std::vector<float> left(count), right(count);
+  const double scale = block->full_scale / 32767.0;
+  for (std::size_t i = 0; i < count; ++i) {
+    left[i] = static_cast<float>(block->left[i] * scale);
+    right[i] = static_cast<float>(block->right[i] * scale);
+  }
+  std::vector<SoundingObject> sounding;
+  for (const auto& object : scene.objects)
+    if (geometry::isSounding(object)) sounding.push_back({object.id, signatureOf(object.sound)});
+  heard_->hear(localiser_->localise(left, right), *block, sounding);
+  const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(scene);
+  audio_out_.publish(out, heardPercepts(scene, solids, robot, *heard_));
+  askForHeadTurn(firing, robot, out);
+  return expert::Outcome::success();
 }
 
 expert::Outcome AudioExpert::fire(const expert::Firing& firing, expert::Output& out) {
@@ -42,6 +140,7 @@ expert::Outcome AudioExpert::fire(const expert::Firing& firing, expert::Output& 
   if (scene == nullptr || robot == nullptr)
     return expert::Outcome::failure(std::string("no ") + (scene == nullptr ? "GT_OBJECTS" : "ROBOT_STATE") +
                                     " for tick " + std::to_string(firing.tick));
+  if (acoustics_ == Acoustics::Binaural) return fireHearing(firing, *scene, *robot, out);
   const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
   audio_out_.publish(out, estimateAudio(*scene, solids, *robot, config_));
   return expert::Outcome::success();

@@ -1,12 +1,24 @@
 // The audio expert as a process (low level): stores GT_OBJECTS and
-// ROBOT_STATE, and on FIRE for tick k publishes AUDIO for tick k.
+// ROBOT_STATE (and EARS with acoustics=binaural), and on FIRE for tick k
+// publishes AUDIO for tick k (and, hearing, a head turn on TASK_COMMAND when
+// front and back cannot be told apart).
 #pragma once
 
+#include <map>
+#include <memory>
+#include <optional>
+
+#include <beft/binaural_block_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
+#include <beft/task_command_t.hpp>
 
 #include "audio_estimator.hpp"
+#include "band_signature.hpp"
+#include "block_localiser.hpp"
 #include "expert.hpp"
+#include "heard_sources.hpp"
+#include "sound_bank.hpp"
 
 namespace beft::audio {
 
@@ -22,11 +34,31 @@ class AudioExpert : public expert::Expert {
   void onStartUp() override;
 
  private:
+  enum class Acoustics { GroundTruth, Binaural };
+  expert::Outcome fireHearing(const expert::Firing& firing, const scene_objects_t& scene,
+                              const robot_state_t& robot, expert::Output& out);
+  const hearing::BandSignature* signatureOf(const std::string& sound);
+  void askForHeadTurn(const expert::Firing& firing, const robot_state_t& robot, expert::Output& out);
+
   AudioConfig config_;
   int64_t seed_ = 0;  // of the position noise
+  Acoustics acoustics_ = Acoustics::GroundTruth;
+  std::string scenario_;  // the sounds' folder (binaural)
+  HearingConfig hearing_config_;
+  double head_yaw_limit_deg_ = 80;
+  int64_t turn_priority_ = 90;
+  std::optional<hearing::BlockLocaliser> localiser_;
+  std::unique_ptr<hearing::SoundBank> sounds_;
+  std::map<std::string, std::optional<hearing::BandSignature>> signatures_;  // by sound file
+  std::optional<HeardSources> heard_;
+  int64_t next_command_id_ = 1;
   expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
+  expert::TickInput<binaural_block_t> ears_{*this, channels::kEars, 16, admitBlock, /*optional_until_heard=*/true};
   expert::OutputPort<acoustic_percepts_t> audio_out_{*this, channels::kAudio};
+  expert::OutputPort<task_command_t> task_command_out_{*this, channels::kTaskCommand};
+
+  static bool admitBlock(binaural_block_t& block, std::string* why);
 };
 
 }  // namespace beft::audio

@@ -11,8 +11,12 @@
 #include <string>
 #include <vector>
 
+#include <filesystem>
+#include <map>
+
 #include "command_line.hpp"
 #include "own_bin_dir.hpp"
+#include "run_parameters.hpp"
 
 namespace {
 int execProgram(std::vector<std::string> args) {
@@ -33,7 +37,8 @@ struct Options {
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
       "Offline tools over a recorded run; the live system is never needed.\n"
-      "  --module NAME: runs that expert's own program with --replay LOG: feeds it the inputs it "
+      "  --module NAME: runs that expert's own program with --replay LOG and the parameters it ran with "
+      "(parameters.json beside the log, written by ./beft run; --param overrides them): feeds it the inputs it "
       "read during the run, in order, fires it at every FIRE it got, and compares what it writes "
       "with what it wrote then (exact in lockstep runs). Prints how many outputs match and the "
       "first difference with both values. Exit 0 on an exact match, 3 on differences, 4 when the log "
@@ -43,7 +48,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       "beft-replay");
   app.add_option("log", o.log, "the run's LCM log (logs/<run>/run.lcmlog)")->required()->check(CLI::ExistingFile);
   auto* module_option = app.add_option("--module", o.module,
-      "expert to replay: world, geometry, vision, audio, visual_labels, acoustic_labels, fusion, dw, exploration, tasks");
+      "expert to replay: world, ears, geometry, vision, audio, visual_labels, acoustic_labels, fusion, dw, exploration, tasks");
   app.add_option("--param", o.params, "NAME=VALUE for the replayed expert (repeatable)")->needs(module_option);
   auto* to_option = app.add_option("--to", o.to, "render into this folder of PNGs, or this .mp4 file");
   module_option->excludes(to_option);
@@ -60,10 +65,29 @@ int replay(const Options& o) {
     std::string program = o.module;
     std::replace(program.begin(), program.end(), '_', '-');
     std::vector<std::string> args = {bin + "/beft-" + program, "--replay", o.log, "--name", o.module};
-    for (const auto& p : o.params) {
-      args.push_back("--param");
-      args.push_back(p);
+    const std::string recorded =
+        (std::filesystem::path(o.log).parent_path() / beft::launch::kRunParametersFile).string();
+    std::map<std::string, std::string> parameters;
+    try {
+      parameters = beft::launch::readRunParameters(recorded, o.module);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "[replay] error: %s\n", e.what());
+      return 2;
     }
+    for (const auto& p : o.params) {
+      const auto eq = p.find('=');
+      if (eq == std::string::npos || eq == 0) {
+        std::fprintf(stderr, "[replay] error: --param '%s' is not NAME=VALUE\n", p.c_str());
+        return 2;
+      }
+      parameters[p.substr(0, eq)] = p.substr(eq + 1);
+    }
+    std::string said;
+    for (const auto& [name, value] : parameters) {
+      args.insert(args.end(), {"--param", name + "=" + value});
+      said += " " + name + "=" + value;
+    }
+    if (!said.empty()) std::fprintf(stderr, "[replay] %s with%s\n", o.module.c_str(), said.c_str());
     return execProgram(args);
   }
   if (!o.to.empty()) {

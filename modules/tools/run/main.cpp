@@ -22,6 +22,7 @@
 #include "load_scenario.hpp"
 #include "own_bin_dir.hpp"
 #include "run_identity.hpp"
+#include "run_parameters.hpp"
 #include "supervisor.hpp"
 
 namespace {
@@ -208,7 +209,11 @@ int runMission(Options& o) {
   beft::launch::RunOutcome outcome;
   const auto start = std::chrono::steady_clock::now();
   try {
-    outcome = beft::launch::supervise(beft::launch::loadLaunchFile(o.launch_file, args), options);
+    const beft::launch::LaunchSpec spec = beft::launch::loadLaunchFile(o.launch_file, args);
+    if (!beft::launch::writeRunParameters(spec, o.out_dir + "/" + beft::launch::kRunParametersFile))
+      std::fprintf(stderr, "[run] warning: cannot write %s/%s: a replay will need --param\n", o.out_dir.c_str(),
+                   beft::launch::kRunParametersFile);
+    outcome = beft::launch::supervise(spec, options);
   } catch (const beft::launch::LaunchError& e) {
     std::fprintf(stderr, "[run] error: %s\n", e.what());
     return 2;

@@ -13,6 +13,7 @@
 
 #include "free_port.hpp"
 #include "launch_file.hpp"
+#include "run_parameters.hpp"
 #include "supervisor.hpp"
 
 using namespace beft::launch;
@@ -122,6 +123,30 @@ TEST(LaunchFile, StartsAProcessOnlyWhenItsConditionHolds) {
   EXPECT_EQ(names(loadLaunchFile(file, {{"ears", "true"}})), (std::vector<std::string>{"always", "ears"}));
   EXPECT_EQ(names(loadLaunchFile(file, {{"ears", ""}})), (std::vector<std::string>{"always"}));
   EXPECT_EQ(errorOf(file, {{"ears", "maybe"}}), file + ":4: if must be 1, true, 0, false or empty, not 'maybe'");
+}
+
+TEST(RunParameters, KeepEachProcesssParamsForAReplay) {
+  TempDir dir;
+  const auto file = dir.write("run.xml", R"(<launch>
+  <arg name="acoustics" default="ground_truth"/>
+  <process name="audio" command="beft-audio" args="--param seed=7 --verbose --param acoustics=${acoustics}"/>
+  <process name="fusion" command="beft-fusion"/>
+</launch>)");
+  const std::string path = dir.path + "/parameters.json";
+  ASSERT_TRUE(writeRunParameters(loadLaunchFile(file, {{"acoustics", "binaural"}}), path));
+  EXPECT_EQ(readRunParameters(path, "audio"),
+            (std::map<std::string, std::string>{{"acoustics", "binaural"}, {"seed", "7"}}));
+  EXPECT_TRUE(readRunParameters(path, "fusion").empty());
+  EXPECT_TRUE(readRunParameters(path, "nobody").empty());
+  EXPECT_TRUE(readRunParameters(dir.path + "/missing.json", "audio").empty());
+  const auto bad = dir.write("bad.json", R"({"audio": {"seed": 7}})");
+  try {
+    readRunParameters(bad, "audio");
+    FAIL() << "a number where a string belongs was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(bad + ": not a run's parameters file"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(readRunParameters(dir.write("cut.json", R"({"audio": {"se)"), "audio"), std::runtime_error);
 }
 
 TEST(LaunchFile, SplitsQuotedArguments) {

@@ -1,0 +1,101 @@
+// What the audio expert knows of the sounding objects from the ear signals
+// alone (--param acoustics=binaural). Each block of EARS is localised
+// (hearing::BlockLocaliser: a posterior over head-relative azimuth and its
+// peaks, each with the band spectrum of what voted for it); each peak is
+// given to the sounding object whose sound has the most similar spectrum
+// (ties broken by the direction the object was heard in before); each
+// object keeps
+//  - a posterior over the world direction it is heard in: the block's
+//    posterior near its peaks, turned into the world frame, adds bounded
+//    evidence to what was heard before, which fades. When the head turns, the
+//    mirror image of the true direction (front-back: interaural cues are the
+//    same at a and 180 - a) moves the other way in the world frame and dies
+//    out while the true direction keeps agreeing (Wallach 1940);
+//  - bearing lines from the places it was heard from clearly, whose crossing
+//    (bearing_triangulation.hpp) gives the distance once the robot has moved
+//    enough; before that the estimate lies default_distance_m along the
+//    bearing.
+// When an object's direction stays front-back ambiguous, a head turn is
+// asked for (wantsHeadTurn).
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <beft/binaural_block_t.hpp>
+
+#include "azimuth_posterior.hpp"
+#include "band_signature.hpp"
+#include "bearing_triangulation.hpp"
+#include "block_localiser.hpp"
+
+namespace beft::audio {
+
+struct HearingConfig {
+  double min_similarity = 0.6;       // a peak whose spectrum matches no sounding object this well is not assigned
+  double peak_half_width_deg = 12;   // the part of the block's posterior that belongs to a peak
+  double forgetting = 0.1;           // per block: this share of the evidence gathered so far fades
+  double evidence_per_block = 2.0;   // one block multiplies a direction's odds by at most 1 + this
+  double clear_mass = 0.5;           // a bearing line is kept when this share of the posterior lies within 10 deg
+  double line_spacing_m = 0.3;       // lines from places at least this far apart
+  int max_lines = 40;                // the newest lines kept per object
+  double line_max_age_s = 30;        // older lines are dropped (the source may have moved)
+  double default_distance_m = 4;     // distance of an estimate before triangulation [m]
+  double turn_deg = 20;              // the head turn that resolves front and back
+  double turn_interval_s = 3;        // at most one head turn per this time
+  TriangulationLimits triangulation;
+};
+
+// One sounding object as the expert hears it this tick.
+struct SoundingObject {
+  std::string id;
+  const hearing::BandSignature* signature = nullptr;  // of its sound; null: cannot be told apart
+};
+
+struct HeardEstimate {
+  Eigen::Vector2d position;  // world frame [m]
+  bool triangulated = false;
+  double bearing_deg = 0;    // world direction from where it was last heard [deg]
+};
+
+class HeardSources {
+ public:
+  explicit HeardSources(const HearingConfig& config = HearingConfig{}) : config_(config) {}
+
+  // One block: its localisation, the head's pose (block message) and the
+  // objects that sound now.
+  void hear(const hearing::BlockLocalisation& heard, const binaural_block_t& block,
+            const std::vector<SoundingObject>& sounding);
+
+  // The object's position estimate, if it was ever heard.
+  std::optional<HeardEstimate> estimate(const std::string& id) const;
+
+  // The head yaw (relative to the platform, within +-limit) to turn to, if an
+  // object heard this tick is front-back ambiguous and no turn was asked for
+  // within turn_interval_s; the object's id in `object_id`.
+  std::optional<double> wantsHeadTurn(double head_yaw_deg, double limit_deg, int64_t utime, std::string* object_id);
+
+  const HearingConfig& config() const { return config_; }
+
+ private:
+  struct Track {
+    std::array<double, hearing::AzimuthPosterior::kBins> log_evidence{};  // per world bearing
+    hearing::AzimuthPosterior world;  // over world bearing, CCW from +x: from log_evidence
+    Eigen::Vector2d heard_from = Eigen::Vector2d::Zero();
+    std::vector<std::pair<int64_t, BearingLine>> lines;  // (utime, line)
+    int64_t last_heard_tick = -1;
+  };
+  void update(Track& track, const hearing::AzimuthPosterior& heard_world, const binaural_block_t& block);
+
+  HearingConfig config_;
+  std::map<std::string, Track> tracks_;
+  int64_t last_turn_utime_ = -1;
+  int64_t last_tick_ = -1;
+  double last_head_yaw_ = 0;  // world heading of the nose in the last block [deg]
+};
+
+}  // namespace beft::audio

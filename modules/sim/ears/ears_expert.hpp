@@ -1,0 +1,41 @@
+// beft-ears as a process: stores GT_OBJECTS and ROBOT_STATE, and on FIRE for
+// tick k publishes on EARS what the two ears heard from tick k-1 to tick k.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include <beft/binaural_block_t.hpp>
+#include <beft/robot_state_t.hpp>
+#include <beft/scene_objects_t.hpp>
+
+#include "binaural_renderer.hpp"
+#include "ear_signals.hpp"
+#include "expert.hpp"
+#include "sound_bank.hpp"
+
+namespace beft::ears {
+
+class EarsExpert : public expert::Expert {
+ public:
+  std::string name() const override { return "ears"; }
+  std::string description() const override;
+  bool inputsReady(const expert::Firing& firing) const override;
+  expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
+
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override;
+  void onStartUp() override;
+
+ private:
+  EarsConfig config_;
+  std::string scenario_;   // the scene objects' sounds are relative to its folder
+  std::string hrirs_;      // "" = the KEMAR set (spherical head if missing), "spherical" = the model
+  std::optional<hearing::BinauralRenderer> renderer_;
+  std::unique_ptr<hearing::SoundBank> sounds_;
+  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
+  expert::OutputPort<binaural_block_t> ears_out_{*this, channels::kEars};
+};
+
+}  // namespace beft::ears

@@ -1,0 +1,154 @@
+// The audio expert's hearing (acoustics=binaural): bearings crossed into a
+// position, and peaks of localised blocks given to the objects whose sounds
+// they match, turned into world directions, front and back told apart.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bearing_triangulation.hpp"
+#include "heard_sources.hpp"
+
+using namespace beft;
+using namespace beft::audio;
+
+namespace {
+
+double bearingTo(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+  return std::atan2(to.y() - from.y(), to.x() - from.x()) * 180.0 / M_PI;
+}
+
+// A posterior with bumps (1-degree Gaussians of width sigma) at the given head-relative azimuths.
+hearing::AzimuthPosterior bumps(const std::vector<std::pair<double, double>>& centre_and_weight, double sigma = 4) {
+  std::array<double, hearing::AzimuthPosterior::kBins> values{};
+  for (int a = 0; a < hearing::AzimuthPosterior::kBins; ++a) {
+    for (const auto& [centre, weight] : centre_and_weight) {
+      const double d = hearing::angularDistance(a, centre);
+      values[static_cast<std::size_t>(a)] += weight * std::exp(-0.5 * d * d / (sigma * sigma));
+    }
+  }
+  return hearing::AzimuthPosterior(values);
+}
+
+hearing::BandSignature spectrum(std::vector<double> bands) { return hearing::BandSignature{std::move(bands)}; }
+
+hearing::BlockLocalisation heardAt(const std::vector<std::pair<double, const hearing::BandSignature*>>& peaks,
+                                   double sigma = 4) {
+  hearing::BlockLocalisation heard;
+  std::vector<std::pair<double, double>> centres;
+  for (const auto& [azimuth, signature] : peaks) {
+    centres.emplace_back(azimuth, 1.0);
+    hearing::LocalisedPeak peak;
+    peak.azimuth_deg = azimuth;
+    peak.weight = 1.0 / peaks.size();
+    peak.signature = *signature;
+    heard.peaks.push_back(peak);
+  }
+  heard.posterior = bumps(centres, sigma);
+  heard.voting_frames = 7;
+  return heard;
+}
+
+binaural_block_t blockAt(int64_t tick, double x, double y, double head_yaw) {
+  binaural_block_t block{};
+  block.tick = tick;
+  block.utime = tick * 100000;
+  block.sample_rate = 44100;
+  block.head_x = x;
+  block.head_y = y;
+  block.head_yaw = head_yaw;
+  block.full_scale = 1;
+  return block;
+}
+
+}  // namespace
+
+TEST(BearingTriangulation, CrossesLinesFromTwoPlacesAtTheSource) {
+  const Eigen::Vector2d source(5, 3);
+  const std::vector<BearingLine> lines = {{{0, 0}, bearingTo({0, 0}, source)}, {{2, -1}, bearingTo({2, -1}, source)},
+                                          {{4, -1.5}, bearingTo({4, -1.5}, source)}};
+  const auto crossing = triangulate(lines);
+  ASSERT_TRUE(crossing.has_value());
+  EXPECT_NEAR(crossing->x(), 5, 1e-9);
+  EXPECT_NEAR(crossing->y(), 3, 1e-9);
+}
+
+TEST(BearingTriangulation, RefusesLinesThatHardlyCrossOrCrossBehind) {
+  // Driving straight at the source: every line points the same way.
+  EXPECT_FALSE(triangulate({{{0, 0}, 0.0}, {{1, 0}, 0.5}, {{2, 0}, -0.5}}).has_value());
+  EXPECT_FALSE(triangulate({{{0, 0}, 45.0}}).has_value());
+  // Two lines that meet only behind both places.
+  EXPECT_FALSE(triangulate({{{0, 0}, 135.0}, {{4, 0}, 45.0}}).has_value());
+  // The same two turned round meet in front, at (2, 2).
+  const auto crossing = triangulate({{{0, 0}, 45.0}, {{4, 0}, 135.0}});
+  ASSERT_TRUE(crossing.has_value());
+  EXPECT_NEAR(crossing->y(), 2, 1e-9);
+  EXPECT_FALSE(triangulate({{{0, 0}, std::nan("")}, {{4, 0}, 135.0}}).has_value());
+}
+
+TEST(HeardSources, GivesEachPeakToTheObjectWhoseSoundItMatches) {
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const auto siren = spectrum({0.1, 1, 10, 10, 1});
+  HeardSources heard;
+  const std::vector<SoundingObject> sounding = {{"victim", &voice}, {"siren", &siren}};
+  // Head at (0, 0) facing +y (yaw 90): the voice 30 deg to the left, the siren 60 deg to the right.
+  heard.hear(heardAt({{30, &voice}, {-60 + 360, &siren}}), blockAt(0, 0, 0, 90), sounding);
+  const auto victim = heard.estimate("victim");
+  const auto siren_heard = heard.estimate("siren");
+  ASSERT_TRUE(victim && siren_heard);
+  EXPECT_NEAR(victim->bearing_deg, 120, 1.0);
+  EXPECT_NEAR(siren_heard->bearing_deg, 30, 1.0);
+  EXPECT_FALSE(victim->triangulated);
+  EXPECT_NEAR(victim->position.norm(), heard.config().default_distance_m, 1e-6);
+  EXPECT_FALSE(heard.estimate("nobody").has_value());
+}
+
+TEST(HeardSources, APeakLikeNoSoundingObjectIsNotAssigned) {
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const auto engine = spectrum({0.1, 0.1, 1, 8, 10});
+  HeardSources heard;
+  heard.hear(heardAt({{30, &engine}}), blockAt(0, 0, 0, 0), {{"victim", &voice}});
+  EXPECT_FALSE(heard.estimate("victim").has_value());
+}
+
+TEST(HeardSources, ATurningHeadTellsFrontFromBackAndAsksForATurnMeanwhile) {
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const std::vector<SoundingObject> sounding = {{"victim", &voice}};
+  HeardSources heard;
+  // The source is behind-left at world bearing 150 (head yaw 0): heard at 150 and at its mirror 30.
+  for (int tick = 0; tick < 10; ++tick) heard.hear(heardAt({{150, &voice}, {30, &voice}}), blockAt(tick, 0, 0, 0), sounding);
+  std::string who;
+  const auto turn = heard.wantsHeadTurn(0, 80, 0, &who);
+  ASSERT_TRUE(turn.has_value());
+  EXPECT_EQ(who, "victim");
+  EXPECT_NEAR(*turn, heard.config().turn_deg, 1e-9);
+  EXPECT_FALSE(heard.wantsHeadTurn(0, 80, 100000, &who).has_value()) << "one turn per turn_interval_s";
+  // Near the limit the head turns the other way.
+  HeardSources near_limit;
+  near_limit.hear(heardAt({{150, &voice}, {30, &voice}}), blockAt(0, 0, 0, 0), sounding);
+  EXPECT_NEAR(*near_limit.wantsHeadTurn(75, 80, 0, &who), 75 - near_limit.config().turn_deg, 1e-9);
+
+  // After a 20-degree turn to the left the true source is at head-relative
+  // 130, its mirror at 50: in the world 150 (agrees) and 70 (moved).
+  for (int tick = 10; tick < 20; ++tick) heard.hear(heardAt({{130, &voice}, {50, &voice}}), blockAt(tick, 0, 0, 20), sounding);
+  const auto victim = heard.estimate("victim");
+  ASSERT_TRUE(victim.has_value());
+  EXPECT_NEAR(victim->bearing_deg, 150, 2.0);
+  EXPECT_FALSE(heard.wantsHeadTurn(20, 80, 10000000, &who).has_value()) << "resolved: no more turns";
+}
+
+TEST(HeardSources, TriangulatesOverTheRobotsOwnMotion) {
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const std::vector<SoundingObject> sounding = {{"victim", &voice}};
+  const Eigen::Vector2d source(6, 4);
+  HeardSources heard;
+  // The robot drives along +x facing +x (yaw 0), hearing the source to its left (sharp, unambiguous: no mirror).
+  for (int tick = 0; tick <= 80; ++tick) {
+    const Eigen::Vector2d at(0.1 * tick, 0);
+    const double azimuth = bearingTo(at, source);
+    heard.hear(heardAt({{azimuth, &voice}}, 2), blockAt(tick, at.x(), at.y(), 0), sounding);
+  }
+  const auto victim = heard.estimate("victim");
+  ASSERT_TRUE(victim.has_value());
+  ASSERT_TRUE(victim->triangulated);
+  EXPECT_LT((victim->position - source).norm(), 0.5);
+}
