@@ -124,6 +124,15 @@ expert::Outcome AudioExpert::fireHearing(const expert::Firing& firing, const sce
     left[i] = static_cast<float>(block->left[i] * scale);
     right[i] = static_cast<float>(block->right[i] * scale);
   }
+  const double rate = localiser_->templates().layout().sample_rate;
+  if (block->sample_rate != static_cast<int32_t>(std::lround(rate))) {
+    // Another renderer's blocks: not heard (said once), the estimates stay as they were.
+    if (!warned_about_rate_)
+      log::warn("audio: EARS blocks at ", block->sample_rate, " Hz, the templates are for ", rate, " Hz: not heard");
+    warned_about_rate_ = true;
+    left.clear();
+    right.clear();
+  }
   std::vector<SoundingObject> sounding;
   for (const auto& object : scene.objects)
     if (geometry::isSounding(object)) sounding.push_back({object.id, signatureOf(object.sound)});

@@ -52,6 +52,7 @@ class AudioExpert : public expert::Expert {
   std::map<std::string, std::optional<hearing::BandSignature>> signatures_;  // by sound file
   std::optional<HeardSources> heard_;
   int64_t next_command_id_ = 1;
+  bool warned_about_rate_ = false;
   expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
   expert::TickInput<binaural_block_t> ears_{*this, channels::kEars, 16, admitBlock, /*optional_until_heard=*/true};

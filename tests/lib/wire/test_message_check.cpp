@@ -107,6 +107,8 @@ class RandomMessage {
         if (constant.name.rfind(match[1].str() + "_", 0) == 0) allowed.push_back(std::stoll(constant.value));
       value = allowed[random_() % allowed.size()];
     }
+    static const std::regex bound_pattern(R"(>=\s*(-?[0-9]+))");
+    if (std::regex_search(member.comment, match, bound_pattern)) value += std::stoll(match[1].str());
     const int width = type == "int64_t" ? 8 : type == "int32_t" ? 4 : type == "int16_t" ? 2 : 1;
     put(static_cast<uint64_t>(value), width);
     return value;
