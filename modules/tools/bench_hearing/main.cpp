@@ -1,11 +1,18 @@
-// beft-bench-hearing (./beft bench hearing): the binaural renderer's figures:
-// the cues of a source at +90 deg (ITD, ILD) and how much faster than real
-// time it renders four sources on one core. Each figure is one entry of
-// figures(): a key, its unit, what it measures and how.
+// beft-bench-hearing (./beft bench hearing): hearing's figures. The
+// renderer's cues of a source at +90 deg (ITD, ILD) and how much faster than
+// real time it renders four sources on one core; the localiser's accuracy on
+// ear signals through the KEMAR responses (trials/localisation_trials); and
+// missions that hear for real (--acoustics binaural) with each heard
+// object's position error. Each figure is one entry of figures(): a key, its
+// unit, what it measures and how.
 #include <time.h>
+
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <optional>
 #include <random>
@@ -19,7 +26,10 @@
 #include "binaural_renderer.hpp"
 #include "command_line.hpp"
 #include "hrir_set.hpp"
+#include "localisation_trials.hpp"
 #include "log.hpp"
+#include "own_bin_dir.hpp"
+#include "quiet_child.hpp"
 
 using namespace beft::hearing;
 
@@ -33,6 +43,11 @@ struct Options {
   std::string hrir_path = HrirSet::kKemarPath;
   bool spherical_head = false;
   double seconds = 2.0;  // CPU time per speed figure
+  int single_trials = 360;
+  int pair_trials = 100;
+  uint64_t seed = 1;
+  std::string sounds_dir = trials::scenarioSoundsDir();
+  bool missions = true;
   bool json = false;
 };
 
@@ -41,6 +56,9 @@ struct Bench {
   const Options& options;
   const BinauralRenderer& renderer;
   SourceSignal noise;  // white, 2 s, unit RMS
+  trials::OneSourceFigures one_source;
+  trials::TwoSourceFigures two_sources;
+  double localise_ms_per_block = 0;
 };
 
 struct Figure {
@@ -129,6 +147,18 @@ const std::vector<Figure>& figures() {
          const StereoBlock ears = leftSource(b);
          return interauralLevelDifferenceDb(ears.left, ears.right, kRate, 4000);
        }},
+      {"median_azimuth_error_deg", "deg",
+       "one source 2 m away (white, pink, two voices), after one head turn: median azimuth error",
+       [](const Bench& b) { return b.one_source.median_error_after_turn_deg; }},
+      {"front_back_static", "", "share of those trials confused front for back without turning",
+       [](const Bench& b) { return b.one_source.front_back_static; }},
+      {"front_back_after_turn", "", "the same after one head turn of 20 deg (target < 0.05)",
+       [](const Bench& b) { return b.one_source.front_back_after_turn; }},
+      {"two_sources_within_10deg", "",
+       "two different sounds >= 30 deg apart: share found within 10 deg after the turn (target >= 0.85)",
+       [](const Bench& b) { return b.two_sources.found_after_turn; }},
+      {"localise_ms_per_block", "ms", "the localiser's CPU time per 0.1 s block",
+       [](const Bench& b) { return b.localise_ms_per_block; }},
       {"render_realtime_factor_4_sources", "x",
        "4 sources, head turning 90 deg/s and walking 0.5 m/s: audio rendered per CPU second on one core",
        [](const Bench& b) { return realtimeFactor(b, true); }},
@@ -140,17 +170,70 @@ const std::vector<Figure>& figures() {
 
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
-      "Benchmarks the binaural renderer: the cues of a white-noise source at +90 deg (ITD, ILD above 4 kHz) and "
-      "how many times faster than real time it renders 4 sources in 0.1 s blocks on one core (CPU time of this "
-      "thread). Human-readable by default, one JSON object with --json.",
+      "Benchmarks hearing. The renderer: the cues of a white-noise source at +90 deg (ITD, ILD above 4 kHz) and how "
+      "many times faster than real time it renders 4 sources in 0.1 s blocks on one core (CPU time of this thread). "
+      "The localiser, on sources 2 m away convolved with the KEMAR responses of the simulation and localised "
+      "against templates of the MIT KEMAR (a different head), each trial a block with the head still and one "
+      "turned by 20 deg: the median azimuth error, front-back confusions without and with the turn, two "
+      "simultaneous sources found within 10 deg, CPU per block. Then yard, peek and decoy run with --acoustics "
+      "binaural, and each heard object's position error is printed. Human-readable by default, one JSON object "
+      "with --json.",
       "beft-bench-hearing");
   app.add_option("--hrir", o.hrir_path, "HRIR set (WAV, the SSR's layout); falls back to the spherical head")
       ->capture_default_str();
-  app.add_flag("--spherical-head", o.spherical_head, "use the spherical-head model instead of the HRIR file");
+  app.add_flag("--spherical-head", o.spherical_head, "render with the spherical-head model instead of the HRIR file");
   app.add_option("--seconds", o.seconds, "CPU time per speed figure [s]")->capture_default_str()->check(
       CLI::PositiveNumber);
+  app.add_option("--trials", o.single_trials, "one-source trials")->capture_default_str()->check(CLI::Range(1, 100000));
+  app.add_option("--pairs", o.pair_trials, "two-source trials")->capture_default_str()->check(CLI::Range(1, 100000));
+  app.add_option("--seed", o.seed, "seed of the trials")->capture_default_str();
+  app.add_option("--sounds", o.sounds_dir, "folder of the scenario sounds")->capture_default_str()->check(
+      CLI::ExistingDirectory);
+  app.add_flag("!--no-missions", o.missions, "skip the missions (yard, peek, decoy with --acoustics binaural)");
   app.add_flag("--json", o.json, "print one JSON object of the figures");
   return beft::parseCommandLine(app, argc, argv);
+}
+
+// A mission heard for real: did it succeed, and how far off was each heard object.
+nlohmann::json hearingMission(const std::string& scenario) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("beft_bench_hearing_" + std::to_string(getpid()) + "_" + scenario);
+  const int exit_code = beft::runQuietly({beft::ownBinDir() + "/beft-run",
+                                          std::string(BEFT_SOURCE_DIR) + "/scenarios/" + scenario + ".xml",
+                                          "--acoustics", "binaural", "--out", dir.string()});
+  nlohmann::json mission = {{"scenario", scenario}, {"exit_code", exit_code}};
+  try {
+    std::ifstream in(dir / "report.json");
+    const nlohmann::json report = nlohmann::json::parse(in);
+    mission["persons"] = report.at("persons");
+    mission["victims"] = report.at("victims").size();
+    mission["falsified"] = nlohmann::json::array();
+    for (const auto& f : report.at("falsified")) mission["falsified"].push_back(f.at("object"));
+    mission["collisions"] = report.at("collisions");
+    mission["heard"] = nlohmann::json::array();
+    for (const auto& h : report.at("heard"))
+      mission["heard"].push_back({{"object", h.at("object")}, {"error_m", h.at("error_m")}});
+  } catch (const std::exception& e) {
+    mission["error"] = std::string("no report: ") + e.what();
+  }
+  std::error_code ignored;
+  fs::remove_all(dir, ignored);
+  return mission;
+}
+
+void printMission(const nlohmann::json& mission) {
+  if (mission.contains("error")) {
+    std::printf("  %-8s failed (exit %d, %s)\n", mission["scenario"].get<std::string>().c_str(),
+                mission["exit_code"].get<int>(), mission["error"].get<std::string>().c_str());
+    return;
+  }
+  std::printf("  %-8s persons found %d/%d, falsified %s, collisions %d; heard:",
+              mission["scenario"].get<std::string>().c_str(), mission["victims"].get<int>(),
+              mission["persons"].get<int>(), mission["falsified"].empty() ? "none" : mission["falsified"].dump().c_str(),
+              mission["collisions"].get<int>());
+  for (const auto& h : mission["heard"])
+    std::printf(" %s %.2f m", h["object"].get<std::string>().c_str(), h["error_m"].get<double>());
+  std::printf("\n");
 }
 
 }  // namespace
@@ -159,28 +242,46 @@ int main(int argc, char** argv) {
   beft::log::setProcessName("bench-hearing");
   Options options;
   if (const auto code = parseOptions(argc, argv, options)) return *code;
-  const HrirSet hrirs = options.spherical_head
-                            ? HrirSet::sphericalHead(kRate)
-                            : HrirSet::loadDefault([](const std::string& m) { beft::log::warn(m); }, options.hrir_path);
-  if (hrirs.sampleRate() != kRate) {
-    std::fprintf(stderr, "beft-bench-hearing: %s is at %.0f Hz; the benchmark renders at %.0f Hz\n",
-                 hrirs.name().c_str(), hrirs.sampleRate(), kRate);
+  try {
+    const HrirSet hrirs = options.spherical_head
+                              ? HrirSet::sphericalHead(kRate)
+                              : HrirSet::loadDefault([](const std::string& m) { beft::log::warn(m); }, options.hrir_path);
+    if (hrirs.sampleRate() != kRate) {
+      std::fprintf(stderr, "beft-bench-hearing: %s is at %.0f Hz; the benchmark renders at %.0f Hz\n",
+                   hrirs.name().c_str(), hrirs.sampleRate(), kRate);
+      return 1;
+    }
+    const BinauralRenderer renderer(hrirs, kRate);
+    Bench bench{options, renderer, whiteNoise(2.0, 7), {}, {}, 0};
+    trials::LocalisationTrials localisation(BlockLocaliser(InterauralTemplates::fromSofa()), options.sounds_dir);
+    bench.one_source = localisation.oneSource(options.single_trials, options.seed);
+    bench.two_sources = localisation.twoSources(options.pair_trials, options.seed + 1);
+    bench.localise_ms_per_block = localisation.localiseMsPerBlock();
+
+    nlohmann::json report;
+    report["hrir_set"] = hrirs.name();
+    if (!options.json) std::printf("HRIR set: %s\n", hrirs.name().c_str());
+    for (const Figure& figure : figures()) {
+      const double value = figure.measure(bench);
+      report[figure.key] = value;
+      if (!options.json) {
+        std::printf("%-42s %9.3f %-3s %s\n", figure.key.c_str(), value, figure.unit.c_str(), figure.meaning.c_str());
+        std::fflush(stdout);
+      }
+    }
+    if (options.missions) {
+      report["missions"] = nlohmann::json::array();
+      if (!options.json) std::printf("missions with --acoustics binaural (each heard object's last estimate):\n");
+      for (const char* scenario : {"yard", "peek", "decoy"}) {
+        report["missions"].push_back(hearingMission(scenario));
+        if (!options.json) printMission(report["missions"].back());
+        std::fflush(stdout);
+      }
+    }
+    if (options.json) std::printf("%s\n", report.dump(2).c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "beft-bench-hearing: %s\n", e.what());
     return 1;
   }
-  const BinauralRenderer renderer(hrirs, kRate);
-  const Bench bench{options, renderer, whiteNoise(2.0, 7)};
-
-  nlohmann::json report;
-  report["hrir_set"] = hrirs.name();
-  if (!options.json) std::printf("HRIR set: %s\n", hrirs.name().c_str());
-  for (const Figure& figure : figures()) {
-    const double value = figure.measure(bench);
-    report[figure.key] = value;
-    if (!options.json) {
-      std::printf("%-42s %9.3f %-3s %s\n", figure.key.c_str(), value, figure.unit.c_str(), figure.meaning.c_str());
-      std::fflush(stdout);
-    }
-  }
-  if (options.json) std::printf("%s\n", report.dump(2).c_str());
   return 0;
 }

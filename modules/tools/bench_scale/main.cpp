@@ -5,10 +5,7 @@
 // ticks per second, times real time, milliseconds per tick relative to
 // yard's in the same invocation, and MB of log per simulated minute, beside
 // the targets.
-#include <sys/wait.h>
 #include <unistd.h>
-
-#include <fcntl.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -23,6 +20,7 @@
 
 #include "command_line.hpp"
 #include "own_bin_dir.hpp"
+#include "quiet_child.hpp"
 
 namespace {
 
@@ -48,21 +46,9 @@ Figures runScene(const Scene& scene, const std::string& out_dir, const std::vect
                                    std::string(BEFT_SOURCE_DIR) + "/scenarios/" + scene.name + ".xml", "--out", out_dir};
   if (scene.max_ticks > 0) args.insert(args.end(), {"--max-ticks", std::to_string(scene.max_ticks)});
   args.insert(args.end(), extra.begin(), extra.end());
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    dup2(null, 1);
-    dup2(null, 2);
-    std::vector<char*> argv;
-    for (auto& arg : args) argv.push_back(arg.data());
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
+  const int exit_code = beft::runQuietly(args);
   Figures figures;
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return figures;
+  if (exit_code != 0) return figures;
   try {
     std::ifstream in(out_dir + "/report.json");
     const nlohmann::json report = nlohmann::json::parse(in);

@@ -6,13 +6,13 @@
 #include <random>
 
 #include "block_localiser.hpp"
-#include "hearing_stimuli.hpp"
+#include "stimuli.hpp"
 
 namespace beft::hearing {
 namespace {
 
-using testing::kBlock;
-using testing::kRate;
+using trials::kBlock;
+using trials::kRate;
 
 const BlockLocaliser& localiser() {
   static const BlockLocaliser instance(InterauralTemplates::fromSofa());
@@ -58,7 +58,7 @@ TEST(BlockLocaliser, SilenceGivesNoPeaksAndAFlatPosterior) {
   EXPECT_TRUE(silent.posterior.isFlat());
   // The microphones' own noise (-80 dBFS) is silence too, not a source.
   std::mt19937_64 random(2);
-  const auto noise_left = testing::whiteNoise(kBlock, random, 1e-4f), noise_right = testing::whiteNoise(kBlock, random, 1e-4f);
+  const auto noise_left = trials::whiteNoise(kBlock, random, 1e-4f), noise_right = trials::whiteNoise(kBlock, random, 1e-4f);
   const BlockLocalisation hiss = localiser().localise(noise_left, noise_right);
   EXPECT_TRUE(hiss.peaks.empty());
   EXPECT_TRUE(hiss.posterior.isFlat());

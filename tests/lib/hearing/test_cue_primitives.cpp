@@ -7,12 +7,12 @@
 #include "band_signature.hpp"
 #include "frequency_bands.hpp"
 #include "gcc_phat.hpp"
-#include "hearing_stimuli.hpp"
+#include "stimuli.hpp"
 
 namespace beft::hearing {
 namespace {
 
-using testing::kRate;
+using trials::kRate;
 
 std::vector<float> delayed(const std::vector<float>& x, int samples) {
   std::vector<float> y(x.size(), 0.0f);
@@ -25,7 +25,7 @@ std::vector<float> delayed(const std::vector<float>& x, int samples) {
 
 TEST(GccPhat, RecoversAKnownDelayWithinASample) {
   std::mt19937_64 random(3);
-  const std::vector<float> x = testing::whiteNoise(4410, random);
+  const std::vector<float> x = trials::whiteNoise(4410, random);
   for (int delay : {-30, -13, -1, 0, 5, 22, 31}) {
     // right = left delayed: positive, as from a source on the left
     const DelayEstimate found = gccPhatDelay(x, delayed(x, delay), kRate);
@@ -76,8 +76,8 @@ TEST(FrequencyBands, ContiguousOverTheRangeWithAnEdgeAtTheSplit) {
 TEST(BandSignature, SameSoundAlikeDifferentSoundsApart) {
   const AnalysisLayout layout;
   std::mt19937_64 random(5);
-  const auto white = testing::whiteNoise(20000, random), pink = testing::pinkNoise(20000, random);
-  const auto white_again = testing::whiteNoise(20000, random);
+  const auto white = trials::whiteNoise(20000, random), pink = trials::pinkNoise(20000, random);
+  const auto white_again = trials::whiteNoise(20000, random);
   const BandSignature w = signatureOfSound(white, kRate, layout), w2 = signatureOfSound(white_again, kRate, layout);
   const BandSignature p = signatureOfSound(pink, kRate, layout);
   EXPECT_GT(signatureSimilarity(w, w2), 0.9);
@@ -87,7 +87,7 @@ TEST(BandSignature, SameSoundAlikeDifferentSoundsApart) {
   for (float& s : quiet) s *= 0.01f;
   EXPECT_NEAR(signatureSimilarity(w, signatureOfSound(quiet, kRate, layout)), 1.0, 1e-6);
   // A sound at its own lower rate lands in the same bands: the siren's tones.
-  const auto siren16k = testing::scenarioSound("siren");
+  const auto siren16k = trials::scenarioSound("siren");
   EXPECT_EQ(signatureOfSound(siren16k, kRate, layout).band_energy.size(), w.band_energy.size());
   EXPECT_EQ(signatureSimilarity(w, BandSignature{}), 0);
   EXPECT_THROW(signatureOfSound({0.0f, NAN}, kRate, layout), std::invalid_argument);

@@ -1,11 +1,13 @@
-#include "hearing_stimuli.hpp"
+#include "stimuli.hpp"
 
 #include <sndfile.h>
+
+#include "hrir_set.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-namespace beft::hearing::testing {
+namespace beft::hearing::trials {
 
 namespace {
 void scaleTo(std::vector<float>& samples, float rms) {
@@ -44,8 +46,10 @@ std::vector<float> pinkNoise(int samples, std::mt19937_64& random, float rms) {
   return out;
 }
 
-std::vector<float> scenarioSound(const std::string& name, float rms) {
-  const std::string path = std::string(BEFT_SOUNDS_DIR) + "/" + name + ".wav";
+std::string scenarioSoundsDir() { return BEFT_SOUNDS_DIR; }
+
+std::vector<float> scenarioSound(const std::string& name, float rms, const std::string& dir) {
+  const std::string path = dir + "/" + name + ".wav";
   SF_INFO info{};
   SNDFILE* file = sf_open(path.c_str(), SFM_READ, &info);
   if (file == nullptr || info.channels != 1) throw std::runtime_error("cannot read mono " + path);
@@ -86,7 +90,7 @@ double loopedRms(const std::vector<float>& signal, long first, int count) {
 }
 
 KemarEars::KemarEars() {
-  const char* path = "/usr/share/ssr/impulse_responses/hrirs/hrirs_kemar.wav";
+  const char* path = HrirSet::kKemarPath;
   SF_INFO info{};
   SNDFILE* file = sf_open(path, SFM_READ, &info);
   if (file == nullptr || info.channels != 720 || info.samplerate != 44100)
@@ -133,4 +137,4 @@ void KemarEars::render(const std::vector<PlacedSound>& sounds, std::vector<float
   }
 }
 
-}  // namespace beft::hearing::testing
+}  // namespace beft::hearing::trials

@@ -1,7 +1,8 @@
-// Test stimuli for the localiser: noises, the scenario sounds at 44.1 kHz,
-// and ear signals made by convolving sources with the KEMAR responses that
-// the simulation renders with (a direct convolution, independent of the
-// localiser's code).
+// Stimuli for trials of the localiser (its statistical tests and
+// ./beft bench hearing): noises, the scenario sounds at 44.1 kHz, and ear
+// signals made by convolving sources with the KEMAR responses that the
+// simulation renders with (a direct convolution, independent of the
+// renderer's and the localiser's code).
 #pragma once
 
 #include <cstdint>
@@ -9,15 +10,18 @@
 #include <string>
 #include <vector>
 
-namespace beft::hearing::testing {
+namespace beft::hearing::trials {
 
 inline constexpr double kRate = 44100;
 inline constexpr int kBlock = 4410;  // 0.1 s
 
 std::vector<float> whiteNoise(int samples, std::mt19937_64& random, float rms = 0.1f);
 std::vector<float> pinkNoise(int samples, std::mt19937_64& random, float rms = 0.1f);
-// A scenario sound (scenarios/sounds/NAME.wav) resampled to 44.1 kHz and scaled to `rms`.
-std::vector<float> scenarioSound(const std::string& name, float rms = 0.1f);
+// The folder of the scenario sounds (scenarios/sounds of this source tree).
+std::string scenarioSoundsDir();
+// A scenario sound (DIR/NAME.wav, DIR the folder above by default) resampled
+// to 44.1 kHz and scaled to `rms`; throws std::runtime_error if unreadable.
+std::vector<float> scenarioSound(const std::string& name, float rms = 0.1f, const std::string& dir = scenarioSoundsDir());
 // RMS of samples [first, first + count) of a looped signal.
 double loopedRms(const std::vector<float>& signal, long first, int count);
 
@@ -39,4 +43,4 @@ class KemarEars {
   std::vector<std::vector<float>> left_, right_;
 };
 
-}  // namespace beft::hearing::testing
+}  // namespace beft::hearing::trials
