@@ -39,24 +39,33 @@ speak voice_radio.wav 170 en-us+m1 "Good evening, this is the news on radio one.
 "${SOX[@]}" "$work/high.wav" "$work/low.wav" "$work/high.wav" "$work/low.wav" \
   "$work/high.wav" "$work/low.wav" "${FORMAT[@]}" siren.wav gain -n -1
 
-# Idling engine: low-passed brown noise with a 30 Hz firing rhythm.
-"${SOX[@]}" -n "${FORMAT[@]}" engine.wav synth 2.5 brownnoise lowpass 250 tremolo 30 70 \
-  fade 0.05 2.5 0.05 gain -n -1
+# Idling engine: the firing rhythm (27 Hz, four cylinders at 800 rpm) and its
+# harmonics up to 2 kHz, the lowest ones taken down as a car's body radiates
+# them little, plus mechanical noise around 1 kHz pulsing with the firing.
+# Most of its energy lies between 80 Hz and 1.5 kHz, where ears localise.
+"${SOX[@]}" -n "${FORMAT[@]}" "$work/harmonics.wav" synth 2.5 sawtooth 27 highpass 90 highpass 90 lowpass 2000 gain -n -3
+"${SOX[@]}" -n "${FORMAT[@]}" "$work/mechanics.wav" synth 2.5 pinknoise bandpass 900 1.2k tremolo 27 60 gain -n -9
+"${SOX[@]}" -m "$work/harmonics.wav" "$work/mechanics.wav" "${FORMAT[@]}" engine.wav fade 0.05 2.5 0.05 gain -n -1
 
-# Fire: a low roar bed plus short bright noise bursts (crackles) at irregular times.
-"${SOX[@]}" -n "${FORMAT[@]}" "$work/roar.wav" synth 2.5 brownnoise lowpass 400 gain -n -12
+# Fire: a roar of turbulent flames (pink noise, 100-700 Hz, swelling at 3 Hz),
+# bright crackles (bursts of noise above 1.2 kHz at irregular times) and a
+# faint hiss above 2 kHz: broadband, unlike the engine.
+"${SOX[@]}" -n "${FORMAT[@]}" "$work/roar.wav" synth 2.5 pinknoise highpass 100 lowpass 700 tremolo 3 40 gain -n -16
 crackles=()
 i=0
-for step in "0.13 0.02" "0.31 0.01" "0.07 0.03" "0.22 0.015" "0.41 0.02" "0.05 0.01" \
-            "0.18 0.025" "0.27 0.01" "0.11 0.02" "0.35 0.015" "0.09 0.01" "0.16 0.02"; do
+for step in "0.05 0.012" "0.09 0.006" "0.03 0.02" "0.12 0.008" "0.04 0.015" "0.07 0.006" "0.02 0.01" \
+            "0.1 0.012" "0.06 0.008" "0.03 0.018" "0.08 0.006" "0.05 0.01" "0.11 0.015" "0.04 0.007" \
+            "0.06 0.012" "0.02 0.006" "0.09 0.02" "0.05 0.008" "0.07 0.012" "0.03 0.006" "0.1 0.01" \
+            "0.04 0.015" "0.06 0.007" "0.08 0.012" "0.03 0.01"; do
   read -r gap burst <<<"$step"
   "${SOX[@]}" -n "${FORMAT[@]}" "$work/gap$i.wav" trim 0 "$gap"
-  "${SOX[@]}" -n "${FORMAT[@]}" "$work/burst$i.wav" synth "$burst" whitenoise highpass 1500 fade 0 "$burst" "$burst"
+  "${SOX[@]}" -n "${FORMAT[@]}" "$work/burst$i.wav" synth "$burst" whitenoise highpass 1200 fade 0 "$burst" "$burst"
   crackles+=("$work/gap$i.wav" "$work/burst$i.wav")
   i=$((i + 1))
 done
 "${SOX[@]}" "${crackles[@]}" "${FORMAT[@]}" "$work/crackle.wav" pad 0 1
-"${SOX[@]}" -m "$work/roar.wav" "$work/crackle.wav" "${FORMAT[@]}" fire.wav trim 0 2.5 gain -n -1
+"${SOX[@]}" -n "${FORMAT[@]}" "$work/hiss.wav" synth 2.5 whitenoise highpass 2000 gain -n -22
+"${SOX[@]}" -m "$work/roar.wav" "$work/crackle.wav" "$work/hiss.wav" "${FORMAT[@]}" fire.wav trim 0 2.5 gain -n -1
 
 for file in help talk voice_radio siren engine fire; do
   printf '%-16s %s s\n' "$file.wav" "$(soxi -D "$file.wav")"

@@ -17,6 +17,12 @@ struct AnalysisLayout {
   // the head starts to shadow the far ear.
   double split_hz = 1500;
   double high_hz = 16000;  // highest band edge [Hz]
+  // Interaural phase is compared with the templates' up to here: above the
+  // split it is ambiguous within one bin (several azimuths share a phase),
+  // but summed over many bins only the true direction agrees in all of them,
+  // and a sound that holds the high bins while another holds the low ones
+  // still gets its time cues.
+  double phase_high_hz = 6000;
   double erb_step = 1.0;   // band width [ERB]
 
   FrequencyBands bands() const { return FrequencyBands(frame_size, sample_rate, low_hz, high_hz, erb_step, split_hz); }

@@ -110,26 +110,4 @@ bool isFrontBackAmbiguous(const AzimuthPosterior& posterior, double min_ratio, d
   return posterior.massNear(mirror, half_width_deg) >= min_ratio * posterior.massNear(direction, half_width_deg);
 }
 
-AzimuthPosterior combineAfterTurn(const AzimuthPosterior& before, double head_turn_deg, const AzimuthPosterior& after) {
-  constexpr double kFlatShare = 0.01;
-  const AzimuthPosterior moved = before.inTurnedFrame(head_turn_deg);
-  std::array<double, kBins> product{};
-  for (int i = 0; i < kBins; ++i) {
-    const double a = (1 - kFlatShare) * moved[i] + kFlatShare / kBins;
-    const double b = (1 - kFlatShare) * after[i] + kFlatShare / kBins;
-    product[static_cast<std::size_t>(i)] = std::sqrt(a * b);
-  }
-  return AzimuthPosterior(product);
-}
-
-}  // namespace beft::hearing
-
-namespace beft::hearing {
-
-double resolveFrontBack(double azimuth_deg, const AzimuthPosterior& posterior, double half_width_deg) {
-  const double mirror = frontBackMirror(azimuth_deg);
-  return posterior.massNear(mirror, half_width_deg) > posterior.massNear(azimuth_deg, half_width_deg) ? mirror
-                                                                                                       : azimuth_deg;
-}
-
 }  // namespace beft::hearing

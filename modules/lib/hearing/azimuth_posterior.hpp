@@ -57,31 +57,12 @@ class AzimuthPosterior {
 // posterior is not ambiguous (it has no direction at all).
 bool isFrontBackAmbiguous(const AzimuthPosterior& posterior, double min_ratio = 0.3, double half_width_deg = 10);
 
-// Turning the head resolves front and back (Wallach 1940). `before` was heard
-// before the head turned head_turn_deg CCW, `after` after it; `before` is
-// moved into the new head frame (shifted by -head_turn_deg) and multiplied
-// with `after`. A source at a appears at a - d in both; its mirror image,
-// 180 - a before, becomes 180 - a - d when shifted but is heard at
-// 180 - a + d after the turn: the two mirror peaks land 2d apart and their
-// product vanishes while the true one's stays. The result is the normalised
-// square root of the product (the geometric mean), so that a weaker second
-// source keeps its height relative to the first instead of the square of it.
-// Each factor is first mixed with a little of the flat distribution so that
-// one posterior's near-zero tail cannot veto the other's peak when the turn
-// was slightly off.
-AzimuthPosterior combineAfterTurn(const AzimuthPosterior& before, double head_turn_deg, const AzimuthPosterior& after);
-
-// Of a direction and its front-back mirror image, the one that `posterior`
-// (typically from combineAfterTurn) holds more probability near: how a peak
-// of one block, found where its mirror image fits the cues as well, is put
-// on the side the head turn showed.
-double resolveFrontBack(double azimuth_deg, const AzimuthPosterior& posterior, double half_width_deg = 10);
-
 // The turn a listener makes to resolve front and back: 20 degrees moves the
 // two mirror images 40 degrees apart, more than twice the width of a
 // posterior peak even beside the head, where the interaural cues change
-// least with azimuth (about +-10 degrees there, +-3 in front), so the
-// product keeps the true peak and suppresses the mirror; the head turns it
+// least with azimuth (about +-10 degrees there, +-3 in front), so blocks
+// pooled across the turn (BlockLocaliser::localise(blocks)) agree on the
+// true direction and split their mirror images (Wallach 1940); the head turns it
 // in about 0.1 s at 180 deg/s and it stays well within the +-85 degrees pan.
 inline constexpr double kDefaultResolvingTurnDeg = 20;
 

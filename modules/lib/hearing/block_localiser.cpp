@@ -16,15 +16,28 @@ constexpr int kAzimuths = AzimuthPosterior::kBins;
 // One frame's spectra, reduced to what the votes need.
 struct FrameSpectra {
   std::vector<double> energy_left, energy_right;  // per band
-  std::vector<std::complex<float>> cross;         // left times conjugate right, per bin below the split
+  std::vector<std::complex<float>> cross;         // left times conjugate right, per bin with a phase template
+  std::vector<float> level_db;                    // left over right power, per bin with a phase template [dB]
 };
+
+// A vote heard `shift` degrees of head turn ago, in the frame of the head now:
+// a source now at azimuth a was then at a + shift.
+AzimuthVote rotated(AzimuthVote vote, int shift) {
+  shift = ((shift % kAzimuths) + kAzimuths) % kAzimuths;
+  if (shift == 0) return vote;
+  std::array<float, kAzimuths> turned;
+  for (int a = 0; a < kAzimuths; ++a)
+    turned[static_cast<std::size_t>(a)] = vote.likelihood[static_cast<std::size_t>((a + shift) % kAzimuths)];
+  vote.likelihood = turned;
+  return vote;
+}
 
 }  // namespace
 
 BlockLocaliser::BlockLocaliser(InterauralTemplates templates, const LocaliserConfig& config)
     : templates_(std::move(templates)), config_(config), fft_(templates_.layout().frame_size) {
   if (!(config.silence_rms > 0) || !(config.band_range_db > 0) || !(config.phase_sharpness > 0) ||
-      !(config.max_phase_sharpness > 0) || !(config.ild_spread_db > 0) || !(config.level_cue_weight >= 0) ||
+      !(config.max_phase_sharpness > 0) || !(config.ild_spread_db > 0) || !(config.joint_ild_spread_db > 0) || !(config.level_cue_weight >= 0) ||
       !(config.min_peak_separation_deg >= 0) || !(config.min_peak_relative_weight >= 0) || config.max_peaks < 0)
     throw std::invalid_argument("the localiser's silence level, band range, sharpness and ILD spread must be > 0, "
                                 "its weights, separation and peak count >= 0");
@@ -36,7 +49,8 @@ BlockLocaliser::BlockLocaliser(InterauralTemplates templates, const LocaliserCon
   }
 }
 
-BlockLocalisation BlockLocaliser::localise(const std::vector<float>& left, const std::vector<float>& right) const {
+void BlockLocaliser::addVotes(const std::vector<float>& left, const std::vector<float>& right, int shift, AzimuthVotes& votes,
+                              int& voting_frames) const {
   if (left.size() != right.size())
     throw std::invalid_argument("the ear signals differ in length (" + std::to_string(left.size()) + " left, " +
                                 std::to_string(right.size()) + " right samples)");
@@ -77,15 +91,18 @@ BlockLocalisation BlockLocaliser::localise(const std::vector<float>& left, const
         frame.energy_right[static_cast<std::size_t>(b)] += std::norm(spectrum_right[static_cast<std::size_t>(k)]);
       }
     frame.cross.resize(static_cast<std::size_t>(phase_bins));
-    for (int k = 0; k < phase_bins; ++k)
-      frame.cross[static_cast<std::size_t>(k)] =
-          spectrum_left[static_cast<std::size_t>(k)] * std::conj(spectrum_right[static_cast<std::size_t>(k)]);
+    frame.level_db.resize(static_cast<std::size_t>(phase_bins));
+    for (int k = 0; k < phase_bins; ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      frame.cross[i] = spectrum_left[i] * std::conj(spectrum_right[i]);
+      frame.level_db[i] = static_cast<float>(
+          10 * std::log10((std::norm(spectrum_left[i]) + 1e-30) / (std::norm(spectrum_right[i]) + 1e-30)));
+    }
     frames.push_back(std::move(frame));
   }
 
-  BlockLocalisation result;
-  result.voting_frames = static_cast<int>(frames.size());
-  if (frames.empty()) return result;
+  voting_frames += static_cast<int>(frames.size());
+  if (frames.empty()) return;
 
   // 2. Which bands vote: within band_range_db of the loudest, and above white noise at the silence level.
   auto density = [&](const FrameSpectra& f, int b) {
@@ -99,35 +116,44 @@ BlockLocalisation BlockLocaliser::localise(const std::vector<float>& left, const
                                     config_.silence_rms * config_.silence_rms * window_power_);
 
   // 3. The votes.
-  AzimuthVotes votes(band_count);
   const float inverse_twice_variance = static_cast<float>(1.0 / (2 * config_.ild_spread_db * config_.ild_spread_db));
+  const float joint_inverse_twice_variance =
+      static_cast<float>(1.0 / (2 * config_.joint_ild_spread_db * config_.joint_ild_spread_db));
   for (const FrameSpectra& f : frames) {
     for (int b = 0; b < band_count; ++b) {
       if (density(f, b) < threshold) continue;
-      if (b < level_from) {
+      if (bands[b].first_bin < phase_bins) {
         // Time cues: each bin on its own, so a tone or a harmonic holds its bin even where another sound
         // holds the rest of the band. Its phase against each azimuth's template phase, as a von Mises
         // likelihood whose concentration grows towards low frequencies, where the whole range of
         // interaural delays spans only a fraction of a cycle (so each radian counts for more degrees).
-        for (int k = bands[b].first_bin; k < bands[b].end_bin; ++k) {
+        for (int k = bands[b].first_bin; k < std::min(bands[b].end_bin, phase_bins); ++k) {
           const std::complex<float> c = f.cross[static_cast<std::size_t>(k)];
           const float magnitude = std::abs(c);
           if (!(magnitude > 0)) continue;
           const double hz = std::max(k * bands.binHz(), 1.0);
           const float sharpness = static_cast<float>(
               std::min(config_.max_phase_sharpness, config_.phase_sharpness * config_.sharpness_reference_hz / hz));
+          const bool joint = hz >= config_.joint_level_from_hz && hz < config_.joint_level_to_hz;
+          const float heard_level = f.level_db[static_cast<std::size_t>(k)];
           AzimuthVote vote;
           for (int a = 0; a < kAzimuths; ++a) {
             const std::complex<float> t = templates_.interauralPhase(a, k);
             const float cosine = (c.real() * t.real() + c.imag() * t.imag()) / magnitude;
-            vote.likelihood[static_cast<std::size_t>(a)] = std::exp(sharpness * (cosine - 1));
+            float exponent = sharpness * (cosine - 1);
+            if (joint) {
+              const float difference = static_cast<float>(heard_level - templates_.ild(a, b));
+              exponent -= difference * difference * joint_inverse_twice_variance;
+            }
+            vote.likelihood[static_cast<std::size_t>(a)] = std::exp(exponent);
           }
           vote.band = b;
           vote.energy = 2.0 * magnitude;  // |L| |R| per ear
           vote.weight = std::pow(vote.energy, config_.weight_exponent);
-          votes.add(std::move(vote));
+          votes.add(rotated(std::move(vote), shift));
         }
-      } else if (config_.level_cue_weight > 0) {
+      }
+      if (b >= level_from && config_.level_cue_weight > 0) {
         // Level cue: the band's ILD against each azimuth's template ILD.
         const auto i = static_cast<std::size_t>(b);
         const double heard = 10 * std::log10((f.energy_left[i] + 1e-30) / (f.energy_right[i] + 1e-30));
@@ -139,10 +165,22 @@ BlockLocalisation BlockLocaliser::localise(const std::vector<float>& left, const
         vote.band = b;
         vote.energy = f.energy_left[i] + f.energy_right[i];
         vote.weight = config_.level_cue_weight * std::pow(vote.energy, config_.weight_exponent);
-        votes.add(std::move(vote));
+        votes.add(rotated(std::move(vote), shift));
       }
     }
   }
+}
+
+BlockLocalisation BlockLocaliser::localise(const std::vector<float>& left, const std::vector<float>& right) const {
+  return localise(std::vector<EarBlock>{EarBlock{left, right, 0.0}});
+}
+
+BlockLocalisation BlockLocaliser::localise(const std::vector<EarBlock>& blocks) const {
+  AzimuthVotes votes(templates_.bands().size());
+  BlockLocalisation result;
+  for (const EarBlock& block : blocks)
+    addVotes(block.left, block.right, static_cast<int>(std::lround(block.turned_since_deg)), votes, result.voting_frames);
+  if (result.voting_frames == 0) return result;
   result.posterior = votes.posterior();
 
   // 4. The sources, one after the other, with the band energy of the votes each explained.

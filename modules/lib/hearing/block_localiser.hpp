@@ -1,13 +1,15 @@
 // Where the sounds in one block of ear signals come from. The block is cut
 // into short Hann-windowed frames; in each frame every band that is loud
 // enough votes for the azimuths whose templates match what it hears:
-//  - below the split frequency, the interaural phase of its FFT bins, weighed
-//    by their cross-power and steered to each azimuth's template phase (the
-//    GCC-PHAT of the band evaluated at that azimuth's interaural delay, with
-//    the template's own phase per bin rather than one delay for all);
-//  - above it, the interaural level difference of the band against the
-//    template's, with a spread that allows for a head not quite like the
-//    template's.
+//  - up to the layout's phase_high_hz, the interaural phase of its FFT bins,
+//    weighed by their cross-power and steered to each azimuth's template
+//    phase (the GCC-PHAT of the band evaluated at that azimuth's interaural
+//    delay, with the template's own phase per bin rather than one delay for
+//    all); between joint_level_from_hz and joint_level_to_hz together with
+//    the bin's level difference;
+//  - above the split frequency, also the interaural level difference of the
+//    band against the template's, with a spread that allows for a head not
+//    quite like the template's.
 // Each vote is a distribution over azimuth, weighted by the band's amplitude
 // (the square root of its energy, so a quieter source still shows). Sources
 // that dominate different frames and bands give separate peaks. Silent
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "azimuth_posterior.hpp"
+#include "azimuth_votes.hpp"
 #include "band_signature.hpp"
 #include "interaural_templates.hpp"
 #include "fft_convolver.hpp"
@@ -38,11 +41,20 @@ struct LocaliserConfig {
   double max_phase_sharpness = 200;
   // Spread of a level band's vote around the template's ILD [dB]: wide,
   // since ILDs above a few kHz differ by up to 10 dB between two KEMARs.
-  double ild_spread_db = 6;
+  double ild_spread_db = 9;
   // Weight of a level vote against a time vote of the same energy: the
   // level cues help beside the head, where time cues change least, but
   // carry the other head's pinna with them.
   double level_cue_weight = 0.3;
+  // Between these frequencies [Hz] a bin's phase vote also weighs the bin's
+  // own level difference against the template's (one likelihood for both,
+  // since they come from the same source): from about 700 Hz the interaural
+  // phase of a tone fits several azimuths (a period is shorter than the
+  // range of ITDs), and a few dB of level tell them apart; above 3 kHz the
+  // two heads' level differences disagree too much to sharpen anything.
+  double joint_level_from_hz = 700;
+  double joint_level_to_hz = 3000;
+  double joint_ild_spread_db = 9;
   // A vote weighs energy^weight_exponent: 0.5 (its amplitude) lets a quieter
   // or narrower-band source still show beside a loud broadband one.
   double weight_exponent = 0.5;
@@ -61,10 +73,18 @@ struct BlockLocalisation {
   AzimuthPosterior posterior;       // flat when silent
   // The sources told apart in the votes (azimuth_votes.hpp), strongest
   // first; none when silent. Each is still front-back ambiguous: the
-  // posterior holds its mirror image too (see combineAfterTurn).
+  // posterior holds its mirror image too (pool blocks across a head turn,
+  // localise(blocks), to tell them apart).
   std::vector<LocalisedPeak> peaks;
   int voting_frames = 0;
   bool silent() const { return voting_frames == 0; }
+};
+
+// One block of ear signals and how far the head has turned since (CCW [deg]).
+struct EarBlock {
+  const std::vector<float>& left;
+  const std::vector<float>& right;
+  double turned_since_deg = 0;
 };
 
 class BlockLocaliser {
@@ -76,10 +96,19 @@ class BlockLocaliser {
   // Throws std::invalid_argument if the lengths differ or a sample is not finite.
   BlockLocalisation localise(const std::vector<float>& left, const std::vector<float>& right) const;
 
+  // Several blocks heard while the head turned, their votes pooled in the
+  // frame of the head now (turned_since_deg 0). A source's true direction
+  // agrees across the blocks while its front-back mirror image moves by twice
+  // the turn, so the peaks are on the side the turn showed. Throws as above.
+  BlockLocalisation localise(const std::vector<EarBlock>& blocks) const;
+
   const LocaliserConfig& config() const { return config_; }
   const InterauralTemplates& templates() const { return templates_; }
 
  private:
+  void addVotes(const std::vector<float>& left, const std::vector<float>& right, int shift, AzimuthVotes& votes,
+                int& voting_frames) const;
+
   InterauralTemplates templates_;
   LocaliserConfig config_;
   RealFft fft_;

@@ -18,6 +18,8 @@ InterauralTemplates::InterauralTemplates(const HorizontalHrirs& hrirs, const Ana
                                 " Hz but the analysis at " + std::to_string(layout.sample_rate) + " Hz");
   first_level_band_ = bands_.firstBandFrom(layout.split_hz);
   phase_bins_ = first_level_band_ > 0 ? bands_[first_level_band_ - 1].end_bin : 0;
+  if (layout.phase_high_hz > layout.split_hz)
+    phase_bins_ = std::min(layout.frame_size / 2, static_cast<int>(std::lround(layout.phase_high_hz / bands_.binHz())));
   itd_s_.resize(kAzimuths);
   ild_db_.resize(static_cast<std::size_t>(kAzimuths) * static_cast<std::size_t>(bands_.size()));
   phase_.resize(static_cast<std::size_t>(kAzimuths) * static_cast<std::size_t>(phase_bins_));

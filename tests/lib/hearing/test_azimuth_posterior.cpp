@@ -42,23 +42,6 @@ TEST(AzimuthPosterior, PeaksAreSeparatedLocalMaximaHeaviestFirst) {
   EXPECT_THROW(AzimuthPosterior(std::array<double, 360>{{-1}}), std::invalid_argument);
 }
 
-TEST(AzimuthPosterior, CombineAfterTurnPicksTheTrueSideOfAnAmbiguousPair) {
-  for (double truth : {30.0, 150.0, 200.0, 340.0}) {
-    const double turn = kDefaultResolvingTurnDeg;
-    // Before: the true direction and its mirror, equally likely (the mirror a little higher).
-    const AzimuthPosterior before = bumps({{truth, 0.9}, {frontBackMirror(truth), 1.0}});
-    // After turning CCW by `turn`, the source is at truth - turn, its mirror at 180 - (truth - turn).
-    const double now = wrapDegrees(truth - turn);
-    const AzimuthPosterior after = bumps({{now, 0.9}, {frontBackMirror(now), 1.0}});
-    ASSERT_TRUE(isFrontBackAmbiguous(before)) << truth;
-    const AzimuthPosterior combined = combineAfterTurn(before, turn, after);
-    EXPECT_LT(angularDistance(combined.mostLikely(), now), 2) << truth;
-    EXPECT_FALSE(isFrontBackAmbiguous(combined)) << truth;
-    EXPECT_NEAR(resolveFrontBack(frontBackMirror(now), combined), now, 1e-9) << truth;
-    EXPECT_NEAR(resolveFrontBack(now, combined), now, 1e-9) << truth;
-  }
-}
-
 TEST(AzimuthPosterior, BesideTheHeadThereIsNoAmbiguity) {
   EXPECT_FALSE(isFrontBackAmbiguous(bumps({{88, 1.0}})));
   EXPECT_FALSE(isFrontBackAmbiguous(bumps({{30, 1.0}})));

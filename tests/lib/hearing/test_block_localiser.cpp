@@ -81,8 +81,33 @@ TEST(BlockLocaliser, APureInterauralDelayPointsToItsAzimuth) {
   }
 }
 
+TEST(BlockLocaliser, BlocksPooledAcrossAHeadTurnPutTheSourceOnItsSide) {
+  // Interaural delays alone are the same at a and 180 - a; between the two
+  // blocks the head turns CCW, so the source moves by -turn while its mirror
+  // image moves by +turn, and only the true side agrees in both.
+  const InterauralTemplates& templates = localiser().templates();
+  const Tones tones = randomTones(100, 1400, 60, 21);
+  const int turn = static_cast<int>(kDefaultResolvingTurnDeg);
+  for (int now : {30, 150, 200, 330}) {
+    std::vector<float> left_before, right_before, left_after, right_after;
+    addTones(tones, templates.itd(now + turn), 0, 0.02f, left_before, right_before);
+    addTones(tones, templates.itd(now), 0, 0.02f, left_after, right_after);
+    const BlockLocalisation one = localiser().localise(left_after, right_after);
+    ASSERT_FALSE(one.peaks.empty()) << now;
+    EXPECT_TRUE(isFrontBackAmbiguous(one.posterior)) << now;
+    const BlockLocalisation pooled = localiser().localise(
+        {EarBlock{left_before, right_before, static_cast<double>(turn)}, EarBlock{left_after, right_after, 0.0}});
+    ASSERT_FALSE(pooled.peaks.empty()) << now;
+    EXPECT_LT(angularDistance(pooled.peaks[0].azimuth_deg, now), 5) << now << ": " << pooled.peaks[0].azimuth_deg;
+    // Additive pooling: the true direction holds both blocks' votes, each mirror image one block's.
+    EXPECT_GT(pooled.posterior.massNear(now, 10), 1.5 * pooled.posterior.massNear(frontBackMirror(now), 10)) << now;
+    EXPECT_EQ(pooled.voting_frames, 2 * one.voting_frames);
+  }
+}
+
 TEST(BlockLocaliser, ALevelDifferenceAlonePointsToTheLouderSide) {
-  const Tones high = randomTones(2000, 12000, 80, 12);
+  // Above the highest frequency whose phase is compared (6 kHz): level cues only.
+  const Tones high = randomTones(7000, 12000, 80, 12);
   for (double ild : {12.0, -12.0}) {
     std::vector<float> left, right;
     addTones(high, 0, ild, 0.01f, left, right);

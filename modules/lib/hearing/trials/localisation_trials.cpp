@@ -41,25 +41,25 @@ LocalisationTrials::LocalisationTrials(BlockLocaliser localiser, const std::stri
     sounds_.emplace_back(name, scenarioSound(name, 0.1f, sounds_dir));
 }
 
-BlockLocalisation LocalisationTrials::localise(const std::vector<float>& left, const std::vector<float>& right) {
+BlockLocalisation LocalisationTrials::localise(const std::vector<EarBlock>& blocks) {
   const double start = threadSeconds();
-  BlockLocalisation found = localiser_.localise(left, right);
+  BlockLocalisation found = localiser_.localise(blocks);
   localise_seconds_ += threadSeconds() - start;
-  ++blocks_;
+  blocks_ += static_cast<int64_t>(blocks.size());
   return found;
 }
 
-// Two blocks: the head still, then turned by the resolving turn (each source then kDefaultResolvingTurnDeg further right).
+// Two blocks: the head still, then turned by the resolving turn (each source then kDefaultResolvingTurnDeg further
+// right); the first alone, and both pooled in the frame of the turned head.
 LocalisationTrials::Heard LocalisationTrials::hear(std::vector<PlacedSound> sounds, uint64_t seed) {
   const double turn = kDefaultResolvingTurnDeg;
   Heard heard;
-  std::vector<float> left, right;
-  ears_.render(sounds, left, right, kBlock, 1e-4f, seed);
-  heard.before = localise(left, right);
+  std::vector<float> left_before, right_before, left_after, right_after;
+  ears_.render(sounds, left_before, right_before, kBlock, 1e-4f, seed);
+  heard.before = localise({EarBlock{left_before, right_before, 0.0}});
   for (PlacedSound& s : sounds) s.azimuth_deg -= turn, s.offset += kBlock;
-  ears_.render(sounds, left, right, kBlock, 1e-4f, seed + 1);
-  heard.after = localise(left, right);
-  heard.combined = combineAfterTurn(heard.before.posterior, turn, heard.after.posterior);
+  ears_.render(sounds, left_after, right_after, kBlock, 1e-4f, seed + 1);
+  heard.after_turn = localise({EarBlock{left_before, right_before, turn}, EarBlock{left_after, right_after, 0.0}});
   return heard;
 }
 
@@ -74,7 +74,7 @@ OneSourceFigures LocalisationTrials::oneSource(int trials, uint64_t seed) {
     const auto& sound = sounds_[static_cast<std::size_t>(trial % 4)].second;
     const double truth = std::round(azimuth(random));
     const Heard heard = hear({{&sound, truth, soundingOffset(sound, random)}}, 1000 + static_cast<uint64_t>(trial));
-    if (heard.before.peaks.empty() || heard.after.peaks.empty()) {
+    if (heard.before.peaks.empty() || heard.after_turn.peaks.empty()) {
       ++figures.unheard;  // counted as the worst error below, never as a confusion
       folded_errors.push_back(90);
       turned_errors.push_back(180);
@@ -83,7 +83,7 @@ OneSourceFigures LocalisationTrials::oneSource(int trials, uint64_t seed) {
     const double first = heard.before.peaks[0].azimuth_deg;
     folded_errors.push_back(std::min(angularDistance(first, truth), angularDistance(first, frontBackMirror(truth))));
     const double now = wrapDegrees(truth - kDefaultResolvingTurnDeg);
-    const double resolved = resolveFrontBack(heard.after.peaks[0].azimuth_deg, heard.combined);
+    const double resolved = heard.after_turn.peaks[0].azimuth_deg;
     turned_errors.push_back(angularDistance(resolved, now));
     // Front-back confusions count where the mirror image is a different direction.
     if (angularDistance(truth, frontBackMirror(truth)) > 20 && angularDistance(now, frontBackMirror(now)) > 20) {
@@ -121,9 +121,9 @@ TwoSourceFigures LocalisationTrials::twoSources(int trials, uint64_t seed) {
       ++figures.sources;
       const double now = wrapDegrees(truth - kDefaultResolvingTurnDeg);
       bool found = false, folded = false;
-      for (std::size_t p = 0; p < heard.after.peaks.size() && p < 2; ++p) {
-        const double peak = heard.after.peaks[p].azimuth_deg;
-        found = found || angularDistance(resolveFrontBack(peak, heard.combined), now) <= 10;
+      for (std::size_t p = 0; p < heard.after_turn.peaks.size() && p < 2; ++p) {
+        const double peak = heard.after_turn.peaks[p].azimuth_deg;
+        found = found || angularDistance(peak, now) <= 10;
         folded = folded || std::min(angularDistance(peak, now), angularDistance(peak, frontBackMirror(now))) <= 10;
       }
       found_after_turn += found;

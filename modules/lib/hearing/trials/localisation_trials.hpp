@@ -1,7 +1,8 @@
 // Trials of the localiser on ear signals through the KEMAR responses the
 // simulation renders with, against its templates from the MIT KEMAR (a
 // different head), 2 m away. Each trial hears two blocks of 0.1 s: the head
-// still, then turned by kDefaultResolvingTurnDeg. The statistical tests and
+// still, then turned by kDefaultResolvingTurnDeg; the figures after the turn
+// come from both blocks pooled (BlockLocaliser::localise(blocks)). The statistical tests and
 // ./beft bench hearing both take their figures from here; a seed fixes them.
 #pragma once
 
@@ -19,7 +20,7 @@ struct OneSourceFigures {
   int trials = 0;
   int unheard = 0;                         // trials in which a block gave no peak
   double median_error_folded_deg = 0;      // first block, front-back folded
-  double median_error_after_turn_deg = 0;  // after the turn, on the side it showed
+  double median_error_after_turn_deg = 0;  // both blocks pooled across the turn
   int counted = 0;                         // trials whose mirror image is another direction (> 20 deg away)
   double front_back_static = 0;            // share of those confused without turning
   double front_back_after_turn = 0;        // share of those confused after the turn
@@ -27,7 +28,7 @@ struct OneSourceFigures {
 
 struct TwoSourceFigures {
   int sources = 0;
-  double found_after_turn = 0;  // share within 10 deg of one of the two strongest peaks, side resolved by the turn
+  double found_after_turn = 0;  // share within 10 deg of one of the two strongest peaks of both blocks pooled
   double found_folded = 0;      // the same, front-back folded
 };
 
@@ -48,11 +49,11 @@ class LocalisationTrials {
 
  private:
   struct Heard {
-    BlockLocalisation before, after;
-    AzimuthPosterior combined;
+    BlockLocalisation before;      // the first block alone: front-back ambiguous
+    BlockLocalisation after_turn;  // both blocks pooled in the frame of the turned head
   };
   Heard hear(std::vector<PlacedSound> sounds, uint64_t seed);
-  BlockLocalisation localise(const std::vector<float>& left, const std::vector<float>& right);
+  BlockLocalisation localise(const std::vector<EarBlock>& blocks);
 
   KemarEars ears_;
   BlockLocaliser localiser_;
