@@ -110,6 +110,21 @@ TEST(VisualLabeller, SkipsPerceptsWithoutGeometry) {
   EXPECT_NE(result.skipped[0].find("ghost"), std::string::npos);
 }
 
+TEST(VisualLabeller, LabelsOnlyWhatTheCameraShows) {
+  const auto s = test::scene({test::boxObject("car1", "car", 0, 0, 0, 4, 2, 1.5),
+                              test::cylinderObject("behind", "person", 5, 0, 0.3, 1.8)});
+  visual_percepts_t vision{};
+  visual_percept_t hidden = visualPercept("behind", 100);
+  hidden.visible_pixels = 0;
+  vision.percepts = {visualPercept("car1", 0), hidden};
+  vision.num_percepts = 2;
+  const auto result = visual_labels::labelVisually(s, geometryOf({{"car1", 3, 0}, {"behind", 6, 0}}), vision,
+                                                   model::Parameters{});
+  ASSERT_EQ(result.labels.num_objects, 1);
+  EXPECT_EQ(result.labels.objects[0].object_id, "car1");
+  EXPECT_TRUE(result.skipped.empty());  // an unseen object is no error
+}
+
 TEST(AcousticLabeller, HandComputedValuesUseTheAcousticLabel) {
   // A radio (a siren) that plays a voice: it sounds like a person.
   const auto s = test::scene({test::sounding(test::boxObject("radio", "siren", 0, 0, 0, 0.3, 0.2, 0.2), "playing",

@@ -447,7 +447,10 @@ TEST(OldLogs, ACommittedLogStillDecodesAndReplaysExactly) {
     }
   }
   for (const auto& [channel, count] : decoded) EXPECT_GT(count, 0) << channel;
-  for (const char* module : {"fusion", "visual_labels", "acoustic_labels", "geometry"}) {
+  // Not visual_labels: since this log was recorded it labels only what the
+  // camera shows, so its replay here differs by the unseen entries (a fresh
+  // run's replays exactly: Replay.FusionAndVisualLabelsMatchTheRecordedRunExactly).
+  for (const char* module : {"fusion", "acoustic_labels", "geometry"}) {
     const auto replay = runCommand(binDir() + "/beft-replay " + log_path + " --module " + module, 120);
     EXPECT_EQ(replay.exit_code, 0) << module << "\n" << replay.output;
     EXPECT_NE(replay.output.find("EXACT MATCH"), std::string::npos) << replay.output;

@@ -16,6 +16,10 @@ VisualLabelling labelVisually(const scene_objects_t& scene, const geometry_perce
   result.labels.tick = vision.tick;
   result.labels.modality = labels_t::MODALITY_VISUAL;
   for (const auto& percept : vision.percepts) {
+    // Only what the camera shows is labelled: fusion takes visual evidence
+    // from visible pixels alone, and at hundreds of objects the rest (v_P 0)
+    // was most of the message.
+    if (percept.visible_pixels <= 0) continue;
     const auto geometry_it = geometry_by_id.find(percept.object_id);
     const auto object_it = object_by_id.find(percept.object_id);
     if (geometry_it == geometry_by_id.end() || object_it == object_by_id.end()) {

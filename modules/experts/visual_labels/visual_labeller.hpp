@@ -1,5 +1,5 @@
-// The visual labelling expert's logic (mid level): for every object with a
-// visual, its visual perceptibility v_P (eq. 1) from the distance d_i of
+// The visual labelling expert's logic (mid level): for every object the
+// camera shows (visible pixels in VISION), its visual perceptibility v_P (eq. 1) from the distance d_i of
 // GEOMETRY and the occlusion O_v of VISION, and the confidence L_j of every
 // category k_j (eq. 3) given the object's true category.
 #pragma once
@@ -17,7 +17,7 @@
 namespace beft::visual_labels {
 
 struct VisualLabelling {
-  labels_t labels{};                    // one entry per visual percept that could be labelled
+  labels_t labels{};                    // one entry per shown object that could be labelled
   std::vector<std::string> skipped;   // percepts left out, each with the reason
 };
 
