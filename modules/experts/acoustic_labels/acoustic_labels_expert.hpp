@@ -7,6 +7,7 @@
 #include <beft/scene_objects_t.hpp>
 
 #include "expert.hpp"
+#include "scene_input.hpp"
 #include "model.hpp"
 
 namespace beft::acoustic_labels {
@@ -23,7 +24,7 @@ class AcousticLabelsExpert : public expert::Expert {
 
  private:
   model::Parameters model_;
-  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::SceneInput scene_{*this};
   expert::TickInput<geometry_percepts_t> geometry_{*this, channels::kGeometry};
   expert::TickInput<acoustic_percepts_t> audio_{*this, channels::kAudio};
   expert::OutputPort<labels_t> labels_acoustic_out_{*this, channels::kLabelsAcoustic};

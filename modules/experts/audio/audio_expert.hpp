@@ -17,6 +17,7 @@
 #include "band_signature.hpp"
 #include "block_localiser.hpp"
 #include "expert.hpp"
+#include "scene_input.hpp"
 #include "heard_sources.hpp"
 #include "sound_bank.hpp"
 
@@ -53,7 +54,7 @@ class AudioExpert : public expert::Expert {
   std::optional<HeardSources> heard_;
   int64_t next_command_id_ = 1;
   bool warned_about_rate_ = false;
-  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::SceneInput scene_{*this};
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
   expert::TickInput<binaural_block_t> ears_{*this, channels::kEars, 16, admitBlock, /*optional_until_heard=*/true};
   expert::OutputPort<acoustic_percepts_t> audio_out_{*this, channels::kAudio};

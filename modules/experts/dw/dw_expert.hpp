@@ -19,6 +19,7 @@
 
 #include "dynamic_weighting.hpp"
 #include "expert.hpp"
+#include "scene_input.hpp"
 
 namespace beft::dw {
 
@@ -55,7 +56,7 @@ class DwExpert : public expert::Expert {
 
   expert::TickInput<acoustic_percepts_t> audio_{*this, channels::kAudio};
   expert::TickInput<labels_t> labels_{*this, channels::kLabelsAcoustic};
-  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth, 4};
+  expert::SceneInput scene_{*this};
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
   expert::TickInput<task_stack_t> stack_{*this, channels::kTaskStack, 4};
   expert::OutputPort<dynamic_weights_t> dynamic_weights_out_{*this, channels::kDynamicWeights};

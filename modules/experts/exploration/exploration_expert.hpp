@@ -20,6 +20,7 @@
 
 #include "explorer.hpp"
 #include "expert.hpp"
+#include "scene_input.hpp"
 
 namespace beft::exploration {
 
@@ -56,7 +57,7 @@ class ExplorationExpert : public expert::Expert {
   expert::TickInput<dynamic_weights_t> weights_{*this, channels::kDynamicWeights, 4};
   expert::TickInput<obstacle_map_t> map_messages_{*this, channels::kObstacleMap, 2};
   expert::TickInput<task_stack_t> stack_{*this, channels::kTaskStack, 4};
-  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth, 2};
+  expert::SceneInput scene_{*this};
   expert::OutputPort<task_command_t> task_command_out_{*this, channels::kTaskCommand};
   expert::OutputPort<run_status_t> stop_request_out_{*this, channels::kStopRequest};
 };

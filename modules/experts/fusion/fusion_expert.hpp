@@ -14,6 +14,7 @@
 #include <beft/visual_percepts_t.hpp>
 
 #include "expert.hpp"
+#include "scene_input.hpp"
 #include "hypothesis_fusion.hpp"
 
 namespace beft::fusion {
@@ -34,7 +35,7 @@ class FusionExpert : public expert::Expert {
   HypothesisFusion fusion_;
   int64_t last_fused_tick_ = -1;
   std::optional<hypotheses_t> resume_;  // published before this process started
-  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::SceneInput scene_{*this};
   expert::TickInput<visual_percepts_t> vision_{*this, channels::kVision};
   expert::TickInput<labels_t> visual_labels_{*this, channels::kLabelsVisual};
   expert::TickInput<acoustic_percepts_t> audio_{*this, channels::kAudio};

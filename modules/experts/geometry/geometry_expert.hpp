@@ -6,6 +6,7 @@
 #include <beft/scene_objects_t.hpp>
 
 #include "expert.hpp"
+#include "scene_input.hpp"
 
 namespace beft::geometry {
 
@@ -17,7 +18,7 @@ class GeometryExpert : public expert::Expert {
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
  private:
-  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::SceneInput scene_{*this};
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
   expert::OutputPort<geometry_percepts_t> geometry_out_{*this, channels::kGeometry};
 };

@@ -15,6 +15,7 @@
 #include <beft/scene_objects_t.hpp>
 
 #include "expert.hpp"
+#include "scene_input.hpp"
 #include "helper_task.hpp"
 #include "obstacle_mapper.hpp"
 #include "ray_caster.hpp"
@@ -57,7 +58,7 @@ class VisionExpert : public expert::Expert {
   std::vector<int> expected_;          // expected pixels per object for the pose and solids below
   camera_frame_t expected_pose_{};     // header only: the pixels do not matter to it
   scene_objects_t expected_scene_{};
-  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::SceneInput scene_{*this};
   // Frames arrive compressed: unpacked (or refused, and counted) as they are kept.
   expert::TickInput<camera_frame_t> depth_{*this, channels::kCameraDepth, 4, unpackFrame};
   expert::TickInput<camera_frame_t> instance_{*this, channels::kCameraInstance, 4, unpackFrame};

@@ -7,6 +7,7 @@
 #include <beft/visual_percepts_t.hpp>
 
 #include "expert.hpp"
+#include "scene_input.hpp"
 #include "model.hpp"
 
 namespace beft::visual_labels {
@@ -23,7 +24,7 @@ class VisualLabelsExpert : public expert::Expert {
 
  private:
   model::Parameters model_;
-  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::SceneInput scene_{*this};
   expert::TickInput<geometry_percepts_t> geometry_{*this, channels::kGeometry};
   expert::TickInput<visual_percepts_t> vision_{*this, channels::kVision};
   expert::OutputPort<labels_t> labels_visual_out_{*this, channels::kLabelsVisual};

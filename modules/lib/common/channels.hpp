@@ -17,6 +17,7 @@
 #include <beft/binaural_block_t.hpp>
 #include <beft/camera_frame_t.hpp>
 #include <beft/contact_t.hpp>
+#include <beft/scene_version_t.hpp>
 #include <beft/done_t.hpp>
 #include <beft/dynamic_weights_t.hpp>
 #include <beft/fire_t.hpp>
@@ -70,7 +71,8 @@ std::ostream& operator<<(std::ostream& out, Channel<Message> channel) { return o
 // X(constant, name, type): the one list of the blackboard's channels.
 #define BEFT_CHANNELS(X)                                                                        \
   /* Sensor side (world process). */                                                         \
-  X(kGroundTruth, "GT_OBJECTS", scene_objects_t)                                              \
+  X(kGroundTruth, "GT_OBJECTS", scene_objects_t) /* when the scene changes, and keyframes */  \
+  X(kSceneVersion, "GT_VERSION", scene_version_t) /* every tick: which GT_OBJECTS holds */    \
   X(kRobotState, "ROBOT_STATE", robot_state_t)                                                \
   X(kContact, "CONTACT", contact_t)                                                           \
   X(kCameraColor, "CAMERA_COLOR", camera_frame_t)                                             \
@@ -133,7 +135,7 @@ inline const std::vector<ChannelEntry>& allChannels() {
 // left out). Runs are compared by these (tests, beft bench faults).
 inline bool isDataPlaneChannel(const std::string& channel) {
   static const std::set<std::string> names = {
-      kGroundTruth.name, kRobotState.name,  kContact.name,        kCameraColor.name,    kCameraDepth.name,    kCameraInstance.name,
+      kGroundTruth.name, kSceneVersion.name, kRobotState.name,  kContact.name,        kCameraColor.name,    kCameraDepth.name,    kCameraInstance.name,
       kEars.name,        kGeometry.name,    kVision.name,      kObstacleMap.name,    kAudio.name,          kLabelsVisual.name,
       kLabelsAcoustic.name, kHypotheses.name, kDynamicWeights.name, kTaskStack.name,   kTaskCommand.name,
       kRobotCommand.name,   kPlanRequest.name};

@@ -47,7 +47,7 @@ void Expert::startUp(const Parameters& given) {
 std::vector<std::string> Expert::inputsLacking(const Firing& firing) const {
   std::vector<std::string> lacking;
   for (const auto* port : inputs_)
-    if (port->lacksTick(firing.tick)) lacking.push_back(port->channel());
+    if (port->lacksTick(firing.tick)) lacking.push_back(port->lackingChannel(firing.tick));
   return lacking;
 }
 

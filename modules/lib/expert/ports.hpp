@@ -50,6 +50,11 @@ class InputPortBase {
     (void)tick;
     return false;
   }
+  // The channel to ask the blackboard for when lacksTick (usually its own).
+  virtual std::string lackingChannel(int64_t tick) const {
+    (void)tick;
+    return channel_;
+  }
 
  private:
   const char* channel_;

@@ -12,6 +12,7 @@
 #include "binaural_renderer.hpp"
 #include "ear_signals.hpp"
 #include "expert.hpp"
+#include "scene_input.hpp"
 #include "sound_bank.hpp"
 
 namespace beft::ears {
@@ -33,7 +34,7 @@ class EarsExpert : public expert::Expert {
   std::string hrirs_;      // "" = the KEMAR set (spherical head if missing), "spherical" = the model
   std::optional<hearing::BinauralRenderer> renderer_;
   std::unique_ptr<hearing::SoundBank> sounds_;
-  expert::TickInput<scene_objects_t> scene_{*this, channels::kGroundTruth};
+  expert::SceneInput scene_{*this};
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
   expert::OutputPort<binaural_block_t> ears_out_{*this, channels::kEars};
 };

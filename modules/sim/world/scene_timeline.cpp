@@ -118,7 +118,9 @@ bool SceneTimeline::advance() {
   ++tick_;
   changes_.clear();
   const bool moved_on_paths = movePaths();
+  const size_t events_before = next_event_;
   const bool moved_by_events = applyDueEvents();
+  if (moved_on_paths || next_event_ != events_before) last_change_tick_ = tick_;
   return moved_on_paths || moved_by_events;
 }
 

@@ -43,6 +43,8 @@ class SceneTimeline {
   bool advance();
 
   int64_t tick() const { return tick_; }
+  // The last tick at which an object moved or an event applied (0 at the start).
+  int64_t lastChangeTick() const { return last_change_tick_; }
   const std::vector<scenario::Object>& objects() const { return objects_; }
   // Lines describing what the last tick changed ("t=12.0 s: walker activity -> yelling").
   const std::vector<std::string>& changes() const { return changes_; }
@@ -60,6 +62,7 @@ class SceneTimeline {
   std::vector<int> event_object_; // object index of each event
   size_t next_event_ = 0;
   int64_t tick_ = 0;
+  int64_t last_change_tick_ = 0;
   std::vector<std::string> changes_, startup_notes_;
 };
 

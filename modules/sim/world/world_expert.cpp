@@ -23,6 +23,9 @@ void WorldExpert::declareParameters(DeclaredParameters& parameters) {
                      "depth noise: standard deviation depth_noise * depth^2 [m], seeded by --seed and the tick");
   parameters.declare("render_threads", options_.render_threads, 1, 16,
                      "threads the camera renders on; the images are the same for any count");
+  parameters.declare("scene_keyframe_ticks", options_.scene_keyframe_ticks, 1, 1000000,
+                     "GT_OBJECTS is published when the scene changes and every this many ticks (1: every tick); "
+                     "GT_VERSION says every tick which one holds");
 }
 
 void WorldExpert::onStartUp() {
@@ -81,7 +84,9 @@ void WorldExpert::publishState(beft::expert::Output& out) {
   beft::expert::WaitOnExit colour_packed(colour_packing_);  // also when a publish throws
   frame_compressor_.compress(camera_messages_.depth, packed_camera_.depth);
   frame_compressor_.compress(camera_messages_.instance, packed_camera_.instance);
-  ground_truth_out_.publish(out, simulation_->groundTruth());
+  const beft::scene_version_t version = simulation_->sceneVersion();
+  if (version.scene_tick == version.tick) ground_truth_out_.publish(out, simulation_->groundTruth());
+  scene_version_out_.publish(out, version);
   robot_state_out_.publish(out, simulation_->robotState());
   contact_out_.publish(out, simulation_->contact());
   depth_out_.publish(out, packed_camera_.depth);

@@ -61,6 +61,7 @@ class WorldExpert : public beft::expert::Expert {
   beft::expert::HandledInput<robot_command_t> commands_{
       *this, channels::kRobotCommand, [this](robot_command_t&& command) { onCommand(std::move(command)); }};
   beft::expert::OutputPort<scene_objects_t> ground_truth_out_{*this, channels::kGroundTruth};
+  beft::expert::OutputPort<scene_version_t> scene_version_out_{*this, channels::kSceneVersion};
   beft::expert::OutputPort<robot_state_t> robot_state_out_{*this, channels::kRobotState};
   beft::expert::OutputPort<contact_t> contact_out_{*this, channels::kContact};
   beft::expert::OutputPort<camera_frame_t> color_out_{*this, channels::kCameraColor};

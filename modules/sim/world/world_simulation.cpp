@@ -123,6 +123,20 @@ beft::scene_objects_t WorldSimulation::groundTruth() const {
   return message;
 }
 
+int64_t WorldSimulation::sceneTick() const {
+  const int64_t now = tick();
+  const int64_t keyframe = now - now % std::max(1, options_.scene_keyframe_ticks);
+  return std::max(timeline_->lastChangeTick(), keyframe);
+}
+
+beft::scene_version_t WorldSimulation::sceneVersion() const {
+  beft::scene_version_t version{};
+  version.utime = utime();
+  version.tick = tick();
+  version.scene_tick = sceneTick();
+  return version;
+}
+
 beft::robot_state_t WorldSimulation::robotState() const {
   beft::robot_state_t state{};
   state.utime = utime();

@@ -19,6 +19,7 @@
 #include <beft/contact_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
+#include <beft/scene_version_t.hpp>
 
 #include "camera_messages.hpp"
 #include "ray_caster.hpp"
@@ -37,6 +38,9 @@ struct WorldOptions {
   // Threads the camera renders on: the world steps while every expert waits
   // for it, so a second core is mostly free then.
   int render_threads = 2;
+  // GT_OBJECTS goes out when the scene changes and at every tick that is a
+  // multiple of this (a reader that joins late or a cut log finds one soon).
+  int scene_keyframe_ticks = 100;
 };
 
 class WorldSimulation {
@@ -53,6 +57,10 @@ class WorldSimulation {
   void step();
 
   int64_t tick() const { return timeline_->tick(); }
+  // The tick whose GT_OBJECTS holds now: the last change or keyframe
+  // (scene_version_t); GT_OBJECTS is published at the ticks where it is this one.
+  int64_t sceneTick() const;
+  beft::scene_version_t sceneVersion() const;
   double time() const { return tick() * scenario_.dt; }
   int64_t utime() const;
 

@@ -6,6 +6,7 @@
 
 #include "scene_builders.hpp"
 #include "expert.hpp"
+#include "scene_input.hpp"
 
 using namespace beft;
 
@@ -54,4 +55,63 @@ TEST(TickInput, ARepeatedTickGivesTheNewestCopy) {
   channel.store(test::robot(3, 0, 0, 0, 0, 3));
   ASSERT_NE(channel.ofTick(2), nullptr);
   EXPECT_DOUBLE_EQ(channel.ofTick(2)->x, 2);
+}
+
+namespace {
+template <typename Message>
+bool deliver(expert::Expert& owner, const char* channel, const Message& message) {
+  std::vector<uint8_t> bytes(message.getEncodedSize());
+  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  return owner.onMessage(channel, bytes.data(), static_cast<int>(bytes.size()));
+}
+scene_version_t version(int64_t tick, int64_t scene_tick) {
+  scene_version_t v{};
+  v.utime = tick * 100000;
+  v.tick = tick;
+  v.scene_tick = scene_tick;
+  return v;
+}
+}  // namespace
+
+TEST(SceneInput, TheGroundTruthInForceIsRestampedForEachTick) {
+  PortOwner owner;
+  expert::SceneInput scene(owner);
+  deliver(owner, channels::kGroundTruth.name, test::scene({test::pointObject("victim", "person", 1, 2)}, 0));
+  for (int64_t k = 0; k <= 3; ++k) ASSERT_TRUE(deliver(owner, channels::kSceneVersion.name, version(k, 0)));
+  for (int64_t k = 0; k <= 3; ++k) {
+    const scene_objects_t* truth = scene.ofTick(k);
+    ASSERT_NE(truth, nullptr) << k;
+    EXPECT_EQ(truth->tick, k);
+    EXPECT_EQ(truth->utime, k * 100000);
+    ASSERT_EQ(truth->num_objects, 1);
+    EXPECT_EQ(truth->objects[0].id, "victim");
+    EXPECT_FALSE(scene.lacksTick(k));
+  }
+  // Tick 4's version has not arrived: the blackboard is asked for GT_VERSION.
+  EXPECT_EQ(scene.ofTick(4), nullptr);
+  EXPECT_TRUE(scene.lacksTick(4));
+  EXPECT_EQ(scene.lackingChannel(4), channels::kSceneVersion.name);
+  // It says the scene changed at tick 4, whose GT_OBJECTS is still on its way: ask for that.
+  deliver(owner, channels::kSceneVersion.name, version(4, 4));
+  EXPECT_EQ(scene.ofTick(4), nullptr);
+  EXPECT_EQ(scene.lackingChannel(4), channels::kGroundTruth.name);
+  deliver(owner, channels::kGroundTruth.name, test::scene({test::pointObject("victim", "person", 5, 2)}, 4));
+  ASSERT_NE(scene.ofTick(4), nullptr);
+  EXPECT_DOUBLE_EQ(scene.ofTick(4)->objects[0].x, 5);
+  EXPECT_DOUBLE_EQ(scene.ofTick(3)->objects[0].x, 1);  // earlier ticks keep theirs
+}
+
+TEST(SceneInput, LogsFromBeforeVersionsGiveEachTicksOwnMessage) {
+  PortOwner owner;
+  expert::SceneInput scene(owner);
+  for (int64_t k = 0; k < 3; ++k)
+    deliver(owner, channels::kGroundTruth.name, test::scene({test::pointObject("p", "person", k, 0)}, k));
+  for (int64_t k = 0; k < 3; ++k) {
+    ASSERT_NE(scene.ofTick(k), nullptr) << k;
+    EXPECT_DOUBLE_EQ(scene.ofTick(k)->objects[0].x, k);
+  }
+  EXPECT_EQ(scene.ofTick(3), nullptr);
+  const uint8_t garbage[3] = {1, 2, 3};
+  EXPECT_FALSE(scene.receive(garbage, 3));
+  EXPECT_EQ(scene.latest()->tick, 2);
 }

@@ -292,6 +292,52 @@ TEST(SceneTimeline, EventsApplyAtTheirTicksInTimeOrder) {
   EXPECT_FALSE(world.groundTruth().objects[0].sound_active);
 }
 
+TEST(WorldSimulation, TheGroundTruthInForceIsTheLastChangeOrKeyframe) {
+  // Events at ticks 12 and 30, keyframes every 25 ticks: GT_OBJECTS goes out
+  // at 0, 12, 25, 30 and 50, and GT_VERSION names the one in force.
+  Scenario scenario = emptyYard();
+  scenario.objects.push_back(personObject("caller", 10.0, 5.0));
+  scenario.objects.back().acoustic = beft::scenario::Acoustic{};
+  scenario.objects.back().acoustic->sound = "sounds/help.wav";
+  scenario.objects.back().acoustic->active = false;
+  beft::scenario::Event calls, quiet;
+  calls.t = 1.2, calls.object = "caller", calls.active = true;
+  quiet.t = 3.0, quiet.object = "caller", quiet.active = false;
+  scenario.events = {calls, quiet};
+  WorldOptions options;
+  options.scene_keyframe_ticks = 25;
+  WorldSimulation world(scenario, options);
+  std::vector<int64_t> published;
+  bool sounding_before = false;
+  for (int64_t k = 0; k <= 55; ++k) {
+    if (k > 0) world.step();
+    const beft::scene_version_t version = world.sceneVersion();
+    EXPECT_EQ(version.tick, k);
+    EXPECT_EQ(version.utime, k * 100000);
+    EXPECT_LE(version.scene_tick, k);
+    if (version.scene_tick == k) published.push_back(k);
+    // Whatever tick it is, the ground truth in force says what the world does now.
+    const bool sounding = world.groundTruth().objects[0].sound_active;
+    if (version.scene_tick != k) EXPECT_EQ(sounding, sounding_before) << "tick " << k;
+    sounding_before = sounding;
+  }
+  EXPECT_EQ(published, (std::vector<int64_t>{0, 12, 25, 30, 50}));
+
+  // An object on its path changes the scene at every tick it moves.
+  Scenario walking = emptyYard();
+  walking.objects.push_back(personObject("walker", 10.0, 2.0));
+  beft::scenario::Path path;
+  path.object = "walker";
+  path.speed = 1.0;
+  path.waypoints = {{10, 2, 0}, {10, 3, 0}};  // 1 m: moves during ticks 1..10
+  walking.paths.push_back(path);
+  WorldSimulation walker(walking, options);
+  for (int k = 1; k <= 14; ++k) {
+    walker.step();
+    EXPECT_EQ(walker.sceneTick(), std::min(k, 10)) << "tick " << k;
+  }
+}
+
 TEST(WorldSimulation, GroundTruthDescribesTheScenario) {
   Scenario scenario = emptyYard();
   scenario.objects.push_back(boxObject("wall1", "wall", 10, 8, 90, 4, 0.2, 2.5));
