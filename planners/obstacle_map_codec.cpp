@@ -1,5 +1,7 @@
 #include "obstacle_map_codec.hpp"
 
+#include <zstd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -73,6 +75,35 @@ std::vector<uint8_t> decodeRle(const std::vector<uint8_t>& data, size_t expected
   return cells;
 }
 
+namespace {
+
+constexpr int kZstdLevel = 1;  // the fastest: a map is packed at every tick
+
+std::vector<uint8_t> compressZstd(const std::vector<uint8_t>& bytes) {
+  std::vector<uint8_t> packed(ZSTD_compressBound(bytes.size()));
+  const size_t size = ZSTD_compress(packed.data(), packed.size(), bytes.data(), bytes.size(), kZstdLevel);
+  if (ZSTD_isError(size)) throw ObstacleMapError(std::string("zstd: ") + ZSTD_getErrorName(size));
+  packed.resize(size);
+  return packed;
+}
+
+std::vector<uint8_t> decompressZstd(const std::vector<uint8_t>& packed, size_t max_bytes) {
+  const unsigned long long size = ZSTD_getFrameContentSize(packed.data(), packed.size());
+  if (size == ZSTD_CONTENTSIZE_ERROR || size == ZSTD_CONTENTSIZE_UNKNOWN)
+    throw ObstacleMapError("RLE_ZSTD data is not one zstd frame with its size");
+  if (size > max_bytes)
+    throw ObstacleMapError("RLE_ZSTD data unpacks to " + std::to_string(size) + " bytes, more than the " +
+                           std::to_string(max_bytes) + " the map's RLE can take");
+  std::vector<uint8_t> bytes(static_cast<size_t>(size));
+  const size_t got = ZSTD_decompress(bytes.data(), bytes.size(), packed.data(), packed.size());
+  if (ZSTD_isError(got) || got != bytes.size())
+    throw ObstacleMapError(std::string("RLE_ZSTD data does not unpack: ") +
+                           (ZSTD_isError(got) ? ZSTD_getErrorName(got) : "short frame"));
+  return bytes;
+}
+
+}  // namespace
+
 beft::obstacle_map_t makeObstacleMap(const ObstacleCells& map, int8_t encoding, int64_t utime,
                                      int64_t tick) {
   if (map.width <= 0 || map.height <= 0) throw ObstacleMapError("map size must be positive");
@@ -94,6 +125,8 @@ beft::obstacle_map_t makeObstacleMap(const ObstacleCells& map, int8_t encoding, 
     msg.data = map.cells;
   } else if (encoding == beft::obstacle_map_t::ENCODING_RLE) {
     msg.data = encodeRle(map.cells);
+  } else if (encoding == beft::obstacle_map_t::ENCODING_RLE_ZSTD) {
+    msg.data = compressZstd(encodeRle(map.cells));
   } else {
     throw ObstacleMapError("unknown encoding " + std::to_string(encoding));
   }
@@ -138,6 +171,9 @@ ObstacleCells decodeObstacleMap(const beft::obstacle_map_t& message) {
     map.cells = message.data;
   } else if (message.encoding == beft::obstacle_map_t::ENCODING_RLE) {
     map.cells = decodeRle(message.data, cell_count);
+  } else if (message.encoding == beft::obstacle_map_t::ENCODING_RLE_ZSTD) {
+    // RLE of n cells takes at most 2n bytes: a frame claiming more is refused before any allocation.
+    map.cells = decodeRle(decompressZstd(message.data, 2 * cell_count), cell_count);
   } else {
     throw ObstacleMapError("unknown encoding " + std::to_string(message.encoding));
   }

@@ -37,9 +37,10 @@ TEST(ObstacleMapCodec, RleSplitsRunsLongerThan255) {
   EXPECT_EQ(decodeRle(data, 600), cells);
 }
 
-TEST(ObstacleMapCodec, RoundTripBothEncodings) {
+TEST(ObstacleMapCodec, RoundTripEveryEncoding) {
   const ObstacleCells map = sampleMap();
-  for (int8_t encoding : {beft::obstacle_map_t::ENCODING_RAW, beft::obstacle_map_t::ENCODING_RLE}) {
+  for (int8_t encoding : {beft::obstacle_map_t::ENCODING_RAW, beft::obstacle_map_t::ENCODING_RLE,
+                          beft::obstacle_map_t::ENCODING_RLE_ZSTD}) {
     const auto msg = makeObstacleMap(map, encoding, 123, 4);
     EXPECT_EQ(msg.data_size, static_cast<int32_t>(msg.data.size()));
     EXPECT_EQ(msg.utime, 123);
@@ -89,6 +90,45 @@ TEST(ObstacleMapCodec, RleIsSmallForTypicalMaps) {
   for (int y = 50; y < 150; ++y) map.cells[y * 300 + 100] = kOccupied;
   const auto msg = makeObstacleMap(map, beft::obstacle_map_t::ENCODING_RLE);
   EXPECT_LT(msg.getEncodedSize(), 64 * 1024);
+}
+
+TEST(ObstacleMapCodec, ZstdPacksTheRleOfABigMapSmaller) {
+  // A 160 x 120 m world at 0.1 m: rooms of walls in free space, unknown beyond.
+  ObstacleCells map;
+  map.width = 1600;
+  map.height = 1200;
+  map.cells.assign(static_cast<size_t>(map.width) * map.height, kUnknown);
+  for (int y = 100; y < 700; ++y)
+    for (int x = 100; x < 900; ++x) map.cells[static_cast<size_t>(y) * map.width + x] = (x % 50 == 0 || y % 40 == 0) ? kOccupied : kFree;
+  const auto rle = makeObstacleMap(map, beft::obstacle_map_t::ENCODING_RLE);
+  const auto packed = makeObstacleMap(map, beft::obstacle_map_t::ENCODING_RLE_ZSTD);
+  EXPECT_LT(packed.data.size() * 4, rle.data.size());
+  EXPECT_EQ(decodeObstacleMap(packed).cells, map.cells);
+}
+
+TEST(ObstacleMapCodec, RejectsDamagedOrOversizedZstd) {
+  const ObstacleCells map = sampleMap();
+  auto msg = makeObstacleMap(map, beft::obstacle_map_t::ENCODING_RLE_ZSTD);
+  auto cut = msg;
+  cut.data.resize(cut.data.size() / 2);
+  cut.data_size = static_cast<int32_t>(cut.data.size());
+  EXPECT_THROW(decodeObstacleMap(cut), ObstacleMapError);
+  auto garbage = msg;
+  for (auto& byte : garbage.data) byte = 0x5a;
+  EXPECT_THROW(decodeObstacleMap(garbage), ObstacleMapError);
+  // A frame claiming more than the map's RLE could take is refused before it is unpacked.
+  ObstacleCells bigger = map;
+  bigger.width = 3000;
+  bigger.cells.assign(static_cast<size_t>(bigger.width) * bigger.height, kUnknown);
+  for (size_t i = 0; i < bigger.cells.size(); i += 2) bigger.cells[i] = kFree;  // RLE of 2 bytes per cell
+  auto claims = makeObstacleMap(bigger, beft::obstacle_map_t::ENCODING_RLE_ZSTD);
+  claims.width = map.width;
+  try {
+    decodeObstacleMap(claims);
+    FAIL() << "an oversized frame was unpacked";
+  } catch (const ObstacleMapError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ObstacleMapCodec, RejectsMalformedRle) {

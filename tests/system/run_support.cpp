@@ -1,5 +1,7 @@
 #include "run_support.hpp"
 
+#include "obstacle_map_codec.hpp"
+
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -137,6 +139,22 @@ std::vector<uint8_t> unpackedFrame(const std::vector<uint8_t>& data) {
   return bytes;
 }
 
+// An obstacle map as its cells, for the same reason (RLE_ZSTD).
+std::vector<uint8_t> unpackedMap(const std::vector<uint8_t>& data) {
+  beft::obstacle_map_t map{};
+  if (!wire::guardedDecode(data.data(), data.size(), map).ok()) return data;
+  try {
+    map.data = planners::makeObstacleMap(planners::decodeObstacleMap(map), beft::obstacle_map_t::ENCODING_RAW).data;
+  } catch (const planners::ObstacleMapError&) {
+    return data;
+  }
+  map.data_size = static_cast<int32_t>(map.data.size());
+  map.encoding = beft::obstacle_map_t::ENCODING_RAW;
+  std::vector<uint8_t> bytes(map.getEncodedSize());
+  map.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  return bytes;
+}
+
 }  // namespace
 
 std::map<std::string, ChannelDigest> dataDigests(const std::vector<LoggedMessage>& log) {
@@ -145,8 +163,10 @@ std::map<std::string, ChannelDigest> dataDigests(const std::vector<LoggedMessage
     const std::string& channel = std::get<0>(key);
     ChannelDigest& digest = digests[channel];
     ++digest.count;
-    const bool camera = channels::typeOfChannel(channel) == lcmTypeName<beft::camera_frame_t>();
-    for (const uint8_t byte : camera ? unpackedFrame(data) : data)
+    const std::string type = channels::typeOfChannel(channel);
+    const bool camera = type == lcmTypeName<beft::camera_frame_t>();
+    const bool map = type == lcmTypeName<beft::obstacle_map_t>();
+    for (const uint8_t byte : camera ? unpackedFrame(data) : map ? unpackedMap(data) : data)
       digest.hash = (digest.hash ^ byte) * 1099511628211ull;  // FNV-1a prime
   }
   return digests;

@@ -340,7 +340,7 @@ obstacle_map_t ObstacleMapper::toMessage(int64_t utime, int64_t tick) const {
   grid.resolution = config_.resolution;
   grid.cells = cells_;
   // RLE keeps a mostly uniform 60000-cell map at a few kB; raw bounds the worst case.
-  obstacle_map_t map = planners::makeObstacleMap(grid, obstacle_map_t::ENCODING_RLE, utime, tick);
+  obstacle_map_t map = planners::makeObstacleMap(grid, obstacle_map_t::ENCODING_RLE_ZSTD, utime, tick);
   if (map.data.size() >= cells_.size()) map = planners::makeObstacleMap(grid, obstacle_map_t::ENCODING_RAW, utime, tick);
   return map;
 }

@@ -196,7 +196,7 @@ TEST(ObstacleMapper, MessageOfAThirtyByTwentyWorldDecodesAndStaysUnder64KB) {
   EXPECT_EQ(message.width, 300);
   EXPECT_EQ(message.height, 200);
   EXPECT_EQ(message.tick, 5);
-  EXPECT_EQ(message.encoding, obstacle_map_t::ENCODING_RLE);
+  EXPECT_EQ(message.encoding, obstacle_map_t::ENCODING_RLE_ZSTD);
   EXPECT_LT(message.getEncodedSize(), 64 * 1024);
   const auto decoded = planners::decodeObstacleMap(message);
   EXPECT_EQ(decoded.cells, map.cells());
