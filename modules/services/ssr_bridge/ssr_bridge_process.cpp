@@ -1,6 +1,7 @@
 #include "ssr_bridge_process.hpp"
 
 #include <poll.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -8,12 +9,16 @@
 #include <thread>
 
 #include <CLI/CLI.hpp>
+#include <lcm/lcm-cpp.hpp>
+#include <beft/bb_query_t.hpp>
+#include <beft/bb_snapshot_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
 #include "channels.hpp"
 #include "guarded_decode.hpp"
 #include "log.hpp"
+#include "run_identity.hpp"
 
 namespace beft::ssr_bridge {
 
@@ -30,6 +35,10 @@ std::string SsrBridgeProcess::description() const {
 std::vector<service::Port> SsrBridgeProcess::reads() const {
   return {service::port(channels::kGroundTruth, "the acoustic objects: sound file, position, sounding, level"),
           service::port(channels::kRobotState, "the head's position and heading: SSR's listener")};
+}
+
+std::vector<service::Port> SsrBridgeProcess::writes() const {
+  return {service::port(channels::kBlackboardQuery, "until GT_OBJECTS is heard, once a second: the scene in force")};
 }
 
 void SsrBridgeProcess::addOptions(CLI::App& app) {
@@ -54,6 +63,18 @@ void SsrBridgeProcess::onStartUp() {
 void SsrBridgeProcess::onMessage(const transport::Message& message) {
   if (message.channel == channels::kGroundTruth.name) {
     newest_objects_.assign(message.data, message.data + message.size);
+    heard_objects_ = true;
+  } else if (message.channel == snapshot_channel_) {
+    beft::bb_snapshot_t snapshot{};
+    if (heard_objects_ || !wire::guardedDecode(message.data, static_cast<std::size_t>(message.size), snapshot).ok())
+      return;
+    for (const auto& entry : snapshot.entries)
+      if (entry.channel == channels::kGroundTruth.name && !entry.data.empty()) {
+        newest_objects_ = entry.data;
+        heard_objects_ = true;
+        log::info("the scene in force from the blackboard (its ground truth of t = ", entry.utime * 1e-6, " s)");
+      }
+    if (!heard_objects_) return;
   } else if (message.channel == channels::kRobotState.name) {
     newest_robot_.assign(message.data, message.data + message.size);
   } else {
@@ -97,14 +118,29 @@ void SsrBridgeProcess::readSsr(const std::vector<std::string>& messages, SceneMi
   }
 }
 
+void SsrBridgeProcess::askForTheScene(lcm::LCM& lcm) {
+  const auto now = std::chrono::steady_clock::now();
+  if (heard_objects_ || now < next_query_) return;
+  next_query_ = now + std::chrono::seconds(1);
+  beft::bb_query_t query{};
+  query.utime = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  query.requester = snapshot_channel_.substr(std::string(channels::kBlackboardSnapshotPrefix.name).size());
+  query.query_id = ++queries_;
+  query.channels = {channels::kGroundTruth.name};
+  query.num_channels = 1;
+  lcm.publish(wire::runChannel(channels::kBlackboardQuery.name), &query);
+}
+
 void SsrBridgeProcess::logWarnings(SceneMirror& mirror) {
   for (const auto& warning : mirror.takeWarnings()) log::warn(warning);
 }
 
 int SsrBridgeProcess::serve(service::Context& context) {
+  snapshot_channel_ = std::string(channels::kBlackboardSnapshotPrefix.name) + context.process_name + "_" +
+                     std::to_string(getpid());
   transport::Selection selection;
   selection.rules = {transport::channelRule(channels::kGroundTruth.name),
-                     transport::channelRule(channels::kRobotState.name)};
+                     transport::channelRule(channels::kRobotState.name), transport::channelRule(snapshot_channel_)};
   std::unique_ptr<transport::Receiver> receiver;
   try {
     receiver = transport::openReceiver(context.lcm, context.lcm_url, selection);
@@ -122,6 +158,7 @@ int SsrBridgeProcess::serve(service::Context& context) {
   const transport::Handler keep = [this](const transport::Message& m) { onMessage(m); };
   std::vector<std::string> from_ssr;
   while (!context.stop.any()) {
+    askForTheScene(context.lcm);
     pollfd fds[2] = {{receiver->fd(), POLLIN, 0}, {link.fd(), link.events(), 0}};
     const int until_attempt = link.millisecondsUntilAttempt();
     poll(fds, link.fd() >= 0 ? 2 : 1, until_attempt < 0 ? 100 : std::min(until_attempt, 100));

@@ -5,6 +5,7 @@
 // it; SSR missing or going away is said once and tried again every second.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -22,7 +23,7 @@ class SsrBridgeProcess : public service::Service {
   std::string name() const override { return "ssr_bridge"; }
   std::string description() const override;
   std::vector<service::Port> reads() const override;
-  std::vector<service::Port> writes() const override { return {}; }
+  std::vector<service::Port> writes() const override;
   void addOptions(CLI::App& app) override;
   void onStartUp() override;
   int serve(service::Context& context) override;
@@ -34,6 +35,10 @@ class SsrBridgeProcess : public service::Service {
   void tellSsr(SsrLink& link, SceneMirror& mirror);
   void readSsr(const std::vector<std::string>& messages, SceneMirror& mirror);
   void logWarnings(SceneMirror& mirror);
+  // Until the ground truth has been heard, asks the blackboard for it once a
+  // second: GT_OBJECTS goes out only when the scene changes, so a bridge
+  // that starts after it would otherwise wait for the next keyframe.
+  void askForTheScene(lcm::LCM& lcm);
 
   std::string ssr_host_ = "localhost";
   int ssr_port_ = 4711;
@@ -41,6 +46,10 @@ class SsrBridgeProcess : public service::Service {
   int batch_ms_ = 20;
   std::vector<uint8_t> newest_objects_, newest_robot_;
   bool heard_news_ = false;
+  bool heard_objects_ = false;
+  std::string snapshot_channel_;  // BB_SNAPSHOT_<name>_<pid>: the blackboard's answers
+  std::chrono::steady_clock::time_point next_query_{};
+  int64_t queries_ = 0;
   SsrScene ssr_scene_;  // SSR's own reports on this connection
   uint64_t unreadable_ = 0;
 };
