@@ -55,9 +55,11 @@ visual_percepts_t estimateVisualOcclusion(const scene_objects_t& scene, const st
     percept.expected_pixels = i < expected.size() ? expected[i] : 0;
     // Never more than expected: both come from the same rays.
     percept.visible_pixels = std::min(i < visible.size() ? visible[i] : 0, percept.expected_pixels);
-    percept.occlusion = percept.expected_pixels > 0
-                            ? 100.0 * (1.0 - static_cast<double>(percept.visible_pixels) / percept.expected_pixels)
-                            : 100.0;
+    // Out of the camera's view altogether (O_v 100, nothing expected): no
+    // entry, an absent object reads as that. At 450 objects these were most
+    // of the message; an object in view but hidden keeps its entry.
+    if (percept.expected_pixels <= 0) continue;
+    percept.occlusion = 100.0 * (1.0 - static_cast<double>(percept.visible_pixels) / percept.expected_pixels);
     out.percepts.push_back(percept);
   }
   out.num_percepts = static_cast<int32_t>(out.percepts.size());

@@ -21,8 +21,9 @@ namespace beft::vision {
 // list; ids not in the scene are ignored.
 std::vector<int> countVisiblePixels(const camera_frame_t& instance, const scene_objects_t& scene);
 
-// One percept per object with a visual, in scene order; stamped with the
-// scene's utime and tick. visible and expected are indexed like scene.objects.
+// One percept per object with a visual that the camera's view covers
+// (expected pixels > 0), in scene order; an object out of view has none (its
+// O_v is 100). Stamped with the scene's utime and tick. visible and expected are indexed like scene.objects.
 visual_percepts_t estimateVisualOcclusion(const scene_objects_t& scene, const std::vector<int>& visible,
                                           const std::vector<int>& expected);
 

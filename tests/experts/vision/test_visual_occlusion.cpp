@@ -47,18 +47,22 @@ TEST(VisualOcclusion, CountsPixelsOfATinyInstanceImageThroughItsIds) {
   EXPECT_EQ(visible[1], 2);  // wall
 }
 
-TEST(VisualOcclusion, HalfVisibleIsFiftyPercentAndOutOfViewIsHundred) {
+TEST(VisualOcclusion, HalfVisibleIsFiftyPercentAndOutOfViewHasNoEntry) {
   auto s = test::scene({test::cylinderObject("victim", "person", 5, 5, 0.3, 1.8),
                         test::boxObject("wall", "wall", 4, 5, 0, 0.2, 3, 2), test::pointObject("radio", "siren", 1, 1),
                         test::boxObject("car", "car", 20, 5, 0, 4, 2, 1.5)});
   const auto out = vision::estimateVisualOcclusion(s, {3, 2, 0, 0}, {6, 2, 0, 0});
-  ASSERT_EQ(out.num_percepts, 3);  // the radio has no visual
-  EXPECT_EQ(find(out, "radio"), nullptr);
+  ASSERT_EQ(out.num_percepts, 2);
+  EXPECT_EQ(find(out, "radio"), nullptr);  // no visual
   EXPECT_DOUBLE_EQ(find(out, "victim")->occlusion, 50.0);
   EXPECT_EQ(find(out, "victim")->visible_pixels, 3);
   EXPECT_EQ(find(out, "victim")->expected_pixels, 6);
   EXPECT_DOUBLE_EQ(find(out, "wall")->occlusion, 0.0);
-  EXPECT_DOUBLE_EQ(find(out, "car")->occlusion, 100.0);  // expected 0: out of view
+  EXPECT_EQ(find(out, "car"), nullptr);  // expected 0: out of view, O_v 100 by its absence
+  // In view but hidden: kept, at 100.
+  const auto hidden = vision::estimateVisualOcclusion(s, {3, 2, 0, 0}, {6, 2, 0, 5});
+  ASSERT_NE(find(hidden, "car"), nullptr);
+  EXPECT_DOUBLE_EQ(find(hidden, "car")->occlusion, 100.0);
 }
 
 TEST(VisualOcclusion, RefusesMalformedFrames) {
