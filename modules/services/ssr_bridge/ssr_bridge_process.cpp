@@ -38,7 +38,7 @@ std::vector<service::Port> SsrBridgeProcess::reads() const {
 }
 
 std::vector<service::Port> SsrBridgeProcess::writes() const {
-  return {service::port(channels::kBlackboardQuery, "until GT_OBJECTS is heard, once a second: the scene in force")};
+  return {service::port(channels::kBlackboardQuery, "until GT_OBJECTS is heard, every 0.2 s: the scene in force")};
 }
 
 void SsrBridgeProcess::addOptions(CLI::App& app) {
@@ -121,7 +121,7 @@ void SsrBridgeProcess::readSsr(const std::vector<std::string>& messages, SceneMi
 void SsrBridgeProcess::askForTheScene(lcm::LCM& lcm) {
   const auto now = std::chrono::steady_clock::now();
   if (heard_objects_ || now < next_query_) return;
-  next_query_ = now + std::chrono::seconds(1);
+  next_query_ = now + std::chrono::milliseconds(200);
   beft::bb_query_t query{};
   query.utime = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
   query.requester = snapshot_channel_.substr(std::string(channels::kBlackboardSnapshotPrefix.name).size());

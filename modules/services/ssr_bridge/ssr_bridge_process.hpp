@@ -35,9 +35,10 @@ class SsrBridgeProcess : public service::Service {
   void tellSsr(SsrLink& link, SceneMirror& mirror);
   void readSsr(const std::vector<std::string>& messages, SceneMirror& mirror);
   void logWarnings(SceneMirror& mirror);
-  // Until the ground truth has been heard, asks the blackboard for it once a
-  // second: GT_OBJECTS goes out only when the scene changes, so a bridge
-  // that starts after it would otherwise wait for the next keyframe.
+  // Until the ground truth has been heard, asks the blackboard for it every
+  // 0.2 s: GT_OBJECTS goes out only when the scene changes, so a bridge
+  // that starts after it would otherwise wait for the next keyframe (and a
+  // blackboard asked before it stored tick 0's has none yet).
   void askForTheScene(lcm::LCM& lcm);
 
   std::string ssr_host_ = "localhost";
