@@ -11,7 +11,11 @@
 #include <chrono>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <thread>
+
+#include <beft/scene_objects_t.hpp>
+#include <beft/scene_version_t.hpp>
 
 #include "run_support.hpp"
 
@@ -32,10 +36,10 @@ struct FaultRun {
   nlohmann::json report;
 };
 
-FaultRun runYard(const std::string& tag, const std::string& extra_args) {
+FaultRun runScenario(const std::string& tag, const std::string& scenario, const std::string& extra_args) {
   FaultRun run;
   run.dir = makeTempDir("faults_" + tag);
-  run.result = runCommand(kRecorderInFront + binDir() + "/beft-run " + sourceDir() + "/scenarios/yard.xml --max-ticks " +
+  run.result = runCommand(kRecorderInFront + binDir() + "/beft-run " + scenario + " --max-ticks " +
                               std::to_string(kTicks) + " --out " + run.dir + " " + extra_args,
                           600);
   try {
@@ -45,6 +49,10 @@ FaultRun runYard(const std::string& tag, const std::string& extra_args) {
     run.result.output += std::string("\n[test] ") + e.what();
   }
   return run;
+}
+
+FaultRun runYard(const std::string& tag, const std::string& extra_args) {
+  return runScenario(tag, sourceDir() + "/scenarios/yard.xml", extra_args);
 }
 
 const FaultRun& cleanRun() {
@@ -61,8 +69,7 @@ int ticksRun(const FaultRun& run) {
   return said.empty() ? -1 : std::stoi(said);
 }
 
-void expectSameDataMessages(const FaultRun& run) {
-  const FaultRun& clean = cleanRun();
+void expectSameDataMessages(const FaultRun& run, const FaultRun& clean = cleanRun()) {
   ASSERT_EQ(clean.result.exit_code, 0) << clean.result.output;
   const DataComparison comparison = compareDataMessages(clean.log, run.log);
   EXPECT_GT(comparison.expected, 1000u);
@@ -149,6 +156,50 @@ TEST_P(KilledProcess, ResumesFromTheLogAndTheRunWritesTheSameDataMessages) {
   }
   expectSameDataMessages(run);
   EXPECT_EQ(run.report["completed"], cleanRun().report["completed"]);
+}
+
+// Yard with the siren silenced at t = 10.5 s: the scene changes at tick 105,
+// after the keyframe of tick 100, so GT_VERSION names tick 105 until 200.
+std::string yardWithASilencedSiren() {
+  static const std::string path = [] {
+    const std::string dir = makeTempDir("faults_scene_change");
+    std::ifstream in(sourceDir() + "/scenarios/yard.xml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string yard = text.str();
+    const auto end = yard.rfind("</scenario>");
+    if (end == std::string::npos) return std::string();
+    yard.insert(end, "  <events>\n    <event t=\"10.5\" object=\"siren1\" active=\"0\"/>\n  </events>\n");
+    std::ofstream(dir + "/yard_siren_silenced.xml") << yard;
+    if (symlink((sourceDir() + "/scenarios/sounds").c_str(), (dir + "/sounds").c_str()) != 0) return std::string();
+    return dir + "/yard_siren_silenced.xml";
+  }();
+  return path;
+}
+
+TEST(KilledWorld, AfterASceneChangeItNamesTheSameGroundTruthAndTheRunWritesTheSameDataMessages) {
+  const std::string scenario = yardWithASilencedSiren();
+  ASSERT_FALSE(scenario.empty());
+  const FaultRun clean = runScenario("scene_change_clean", scenario, "");
+  ASSERT_EQ(clean.result.exit_code, 0) << clean.result.output;
+  // Killed between the change and the next keyframe: the restarted world
+  // must know the scene last changed at tick 105, not at the keyframe.
+  const FaultRun killed = runScenario("scene_change_killed", scenario, "--kill world@150");
+  ASSERT_EQ(killed.result.exit_code, 0) << killed.result.output << processLog(killed);
+  EXPECT_NE(processLog(killed).find("world killed by signal"), std::string::npos);
+  for (const FaultRun* run : {&clean, &killed}) {
+    std::map<int64_t, int64_t> scene_tick;
+    for (const auto& v : messagesOn<beft::scene_version_t>(run->log, "GT_VERSION")) scene_tick[v.tick] = v.scene_tick;
+    EXPECT_EQ(scene_tick[104], 100);
+    EXPECT_EQ(scene_tick[160], 105);
+    EXPECT_EQ(scene_tick[200], 200);
+    bool silenced = false;
+    for (const auto& truth : messagesOn<beft::scene_objects_t>(run->log, "GT_OBJECTS"))
+      if (truth.tick == 105)
+        for (const auto& o : truth.objects) silenced = silenced || (o.id == "siren1" && !o.sound_active);
+    EXPECT_TRUE(silenced) << "no GT_OBJECTS at tick 105 with the siren silent";
+  }
+  expectSameDataMessages(killed, clean);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryKindOfProcess, KilledProcess,

@@ -1,5 +1,7 @@
 #include "live_runner.hpp"
 
+#include "blackboard_query.hpp"
+
 #include <unistd.h>
 
 #include <atomic>
@@ -12,7 +14,6 @@
 #include <set>
 #include <unordered_map>
 
-#include <beft/bb_query_t.hpp>
 #include <beft/bb_snapshot_t.hpp>
 #include <beft/done_t.hpp>
 #include <beft/fire_t.hpp>
@@ -82,8 +83,7 @@ class Runner {
   int run() {
     for (const auto& spec : expert_.reads()) read_channels_.insert(spec.channel);
     if (options_.catch_up)
-      snapshot_channel_ = std::string(channels::kBlackboardSnapshotPrefix) + options_.process_name + "_" +
-                          std::to_string(getpid());
+      snapshot_channel_ = wire::blackboardAnswerChannel(options_.process_name);
     if (!openSources()) return 1;
     heartbeat_.emplace(lcm_, options_.process_name, options_.heartbeat_period_s);
     if (!options_.resume_log.empty()) {
@@ -317,14 +317,9 @@ class Runner {
   // the channels the firing lacks whose latest message differs from what
   // arrived live.
   void requestSnapshot(bool refill = false) {
-    beft::bb_query_t query{};
-    query.utime = wallMicros();
-    query.requester = snapshot_channel_.substr(std::string(channels::kBlackboardSnapshotPrefix).size());
-    query.query_id = ++snapshot_queries_;
     if (refill) refill_pending_ = true;
-    for (const auto& channel : read_channels_) query.channels.push_back(channel);
-    query.num_channels = static_cast<int32_t>(query.channels.size());
-    lcm_.publish(wire::runChannel(channels::kBlackboardQuery), &query);
+    wire::askBlackboard(lcm_, snapshot_channel_, ++snapshot_queries_,
+                        std::vector<std::string>(read_channels_.begin(), read_channels_.end()));
   }
 
   void onSnapshot(const beft::bb_snapshot_t& snapshot) {

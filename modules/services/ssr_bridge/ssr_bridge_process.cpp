@@ -1,7 +1,6 @@
 #include "ssr_bridge_process.hpp"
 
 #include <poll.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -9,8 +8,6 @@
 #include <thread>
 
 #include <CLI/CLI.hpp>
-#include <lcm/lcm-cpp.hpp>
-#include <beft/bb_query_t.hpp>
 #include <beft/bb_snapshot_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
@@ -18,7 +15,7 @@
 #include "channels.hpp"
 #include "guarded_decode.hpp"
 #include "log.hpp"
-#include "run_identity.hpp"
+#include "blackboard_query.hpp"
 
 namespace beft::ssr_bridge {
 
@@ -122,13 +119,7 @@ void SsrBridgeProcess::askForTheScene(lcm::LCM& lcm) {
   const auto now = std::chrono::steady_clock::now();
   if (heard_objects_ || now < next_query_) return;
   next_query_ = now + std::chrono::milliseconds(200);
-  beft::bb_query_t query{};
-  query.utime = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
-  query.requester = snapshot_channel_.substr(std::string(channels::kBlackboardSnapshotPrefix.name).size());
-  query.query_id = ++queries_;
-  query.channels = {channels::kGroundTruth.name};
-  query.num_channels = 1;
-  lcm.publish(wire::runChannel(channels::kBlackboardQuery.name), &query);
+  wire::askBlackboard(lcm, snapshot_channel_, ++queries_, {channels::kGroundTruth.name});
 }
 
 void SsrBridgeProcess::logWarnings(SceneMirror& mirror) {
@@ -136,8 +127,7 @@ void SsrBridgeProcess::logWarnings(SceneMirror& mirror) {
 }
 
 int SsrBridgeProcess::serve(service::Context& context) {
-  snapshot_channel_ = std::string(channels::kBlackboardSnapshotPrefix.name) + context.process_name + "_" +
-                     std::to_string(getpid());
+  snapshot_channel_ = wire::blackboardAnswerChannel(context.process_name);
   transport::Selection selection;
   selection.rules = {transport::channelRule(channels::kGroundTruth.name),
                      transport::channelRule(channels::kRobotState.name), transport::channelRule(snapshot_channel_)};
