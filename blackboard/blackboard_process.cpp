@@ -208,8 +208,8 @@ int BlackboardProcess::serve(service::Context& context) {
     // A query wakes it at once; stored traffic is read at least every batch.
     transport::waitReadable({sources.wake->fd(), sources.queued && !gather ? sources.queued->fd() : -1},
                             gather ? batch_ms_ : 200);
-    // Stored traffic first: a query is answered with everything sent before it.
-    if ((sources.queued && sources.queued->drain(handler) < 0) || sources.wake->drain(handler) < 0) {
+    // Stored traffic around the queries: a query is answered with everything sent before it.
+    if (transport::drainSplit(*sources.wake, sources.queued.get(), handler) < 0) {
       if (context.stop.any()) break;  // a signal interrupted the wait
       log::error("LCM failed while waiting for messages");
       return 1;

@@ -100,9 +100,10 @@ class Runner {
       const bool waiting_for_inputs = pending_ && !pending_fired_;
       transport::waitReadable({control_->fd(), inputs_ && waiting_for_inputs ? inputs_->fd() : -1},
                          waiting_for_inputs ? 5 : 100);
-      // Inputs first: what was published before a FIRE is then stored before
-      // the FIRE is served.
-      if ((inputs_ && inputs_->drain(handler) < 0) || control_->drain(handler) < 0) {
+      // Inputs around the control messages: what was published before a FIRE
+      // is stored before the FIRE is served, even what arrived while the
+      // FIRE was being read (a command sent just before it).
+      if (transport::drainSplit(*control_, inputs_.get(), handler) < 0) {
         if (g_stop_requested) break;  // the signal interrupted the wait
         log::error("LCM receive failed; stopping");
         return 1;

@@ -201,6 +201,17 @@ std::unique_ptr<Receiver> openReceiver(lcm::LCM& lcm, const std::string& url, co
   return std::make_unique<RunFilter>(std::move(receiver));
 }
 
+int drainSplit(Receiver& wake, Receiver* queued, const Handler& handler) {
+  int total = 0;
+  for (Receiver* source : {queued, &wake, queued}) {
+    if (source == nullptr) continue;
+    const int count = source->drain(handler);
+    if (count < 0) return -1;
+    total += count;
+  }
+  return total;
+}
+
 bool waitReadable(std::initializer_list<int> fds, int timeout_ms) { return udpm::waitReadable(fds, timeout_ms); }
 
 }  // namespace beft::transport

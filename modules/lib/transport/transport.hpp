@@ -110,6 +110,15 @@ SplitReceivers openSplitReceivers(lcm::LCM& lcm, const std::string& url, const S
                                   const Selection& queued, std::size_t queued_batch = 16,
                                   int lcm_queue_capacity = 10000);
 
+// One pass over a split pair before serving what `wake` brought (a FIRE, a
+// plan request, a query) with what `queued` holds (the inputs it needs):
+// queued, wake, then queued again. What was published before a wake message
+// is then handed over before the pass ends, even if it arrived while `wake`
+// was drained (draining `queued` only first would leave it for the next
+// pass, and the wake message would be served without it). `queued` may be
+// null. Returns how many messages were handed over, -1 if receiving failed.
+int drainSplit(Receiver& wake, Receiver* queued, const Handler& handler);
+
 // Whether a receiver with this kernel receive buffer (-1: LCM's own thread,
 // which queues in the process) may be read in batches: that needs room for a
 // few ticks of camera frames, 2 MiB. When not, says so in the log.

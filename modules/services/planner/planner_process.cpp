@@ -216,8 +216,8 @@ int PlannerProcess::serve(service::Context& context) {
     heartbeats.update(arbiter_waiting_);
     arbiter_waiting_ = false;
     transport::waitReadable({sources.wake->fd()}, 100);
-    // The maps first: a request sees the map sent before it.
-    if ((sources.queued && sources.queued->drain(to_inbox) < 0) || sources.wake->drain(to_inbox) < 0) {
+    // The maps around the requests: a request sees the map sent before it.
+    if (transport::drainSplit(*sources.wake, sources.queued.get(), to_inbox) < 0) {
       if (context.stop.any()) break;  // interrupted by the stop signal
       log::error("LCM receive failed");
       return 1;
