@@ -49,7 +49,7 @@ class ScenarioRun {
 
   hypothesis_t hypothesis(const std::string& id) const {
     hypotheses_t all{};
-    if (!chain_.latest(channels::kHypotheses, all)) throw std::runtime_error("no HYPOTHESES yet");
+    if (!chain_.latestHypotheses(all)) throw std::runtime_error("no HYPOTHESES yet");
     for (const auto& h : all.hypotheses)
       if (h.object_id == id) return h;
     throw std::runtime_error("no hypothesis for " + id);

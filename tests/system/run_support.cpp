@@ -20,6 +20,7 @@
 #include "channels.hpp"
 #include "frame_decoding.hpp"
 #include "guarded_decode.hpp"
+#include "hypothesis_changes.hpp"
 #include "log_reader.hpp"
 #include "message_check.hpp"
 #include "run_identity.hpp"
@@ -158,18 +159,60 @@ std::vector<uint8_t> unpackedMap(const std::vector<uint8_t>& data) {
 }  // namespace
 
 std::map<std::string, ChannelDigest> dataDigests(const std::vector<LoggedMessage>& log) {
+  const auto messages = dataMessages(log);
+  // With HYPOTHESIS_CHANGES, HYPOTHESES stands for the whole list of every
+  // tick, made from the keyframes and the changes: what it was when the
+  // whole list went out every tick.
+  bool changes_sent = false;
+  for (const auto& [key, data] : messages)
+    if (std::get<0>(key) == channels::kHypothesisChanges) changes_sent = true;
   std::map<std::string, ChannelDigest> digests;
-  for (const auto& [key, data] : dataMessages(log)) {
-    const std::string& channel = std::get<0>(key);
+  auto add = [&digests](const std::string& channel, const std::vector<uint8_t>& bytes) {
     ChannelDigest& digest = digests[channel];
     ++digest.count;
+    for (const uint8_t byte : bytes) digest.hash = (digest.hash ^ byte) * 1099511628211ull;  // FNV-1a prime
+  };
+  for (const auto& [key, data] : messages) {
+    const std::string& channel = std::get<0>(key);
+    if (changes_sent && channel == channels::kHypotheses) continue;
     const std::string type = channels::typeOfChannel(channel);
-    const bool camera = type == lcmTypeName<beft::camera_frame_t>();
-    const bool map = type == lcmTypeName<beft::obstacle_map_t>();
-    for (const uint8_t byte : camera ? unpackedFrame(data) : map ? unpackedMap(data) : data)
-      digest.hash = (digest.hash ^ byte) * 1099511628211ull;  // FNV-1a prime
+    if (type == lcmTypeName<beft::camera_frame_t>()) add(channel, unpackedFrame(data));
+    else if (type == lcmTypeName<beft::obstacle_map_t>()) add(channel, unpackedMap(data));
+    else add(channel, data);
+  }
+  if (changes_sent) {
+    for (const auto& whole : hypothesesOfEachTick(log)) {
+      std::vector<uint8_t> bytes(whole.getEncodedSize());
+      whole.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+      add(channels::kHypotheses.name, bytes);
+    }
   }
   return digests;
+}
+
+std::vector<beft::hypotheses_t> hypothesesOfEachTick(const std::vector<LoggedMessage>& log) {
+  std::map<int64_t, beft::hypotheses_t> keyframes, whole_of_tick;
+  std::vector<beft::hypothesis_changes_t> changes;
+  for (const auto& event : log) {
+    if (event.channel == channels::kHypotheses) {
+      beft::hypotheses_t keyframe{};
+      if (wire::guardedDecode(event.data.data(), event.data.size(), keyframe).ok())
+        keyframes[keyframe.tick] = std::move(keyframe);
+    } else if (event.channel == channels::kHypothesisChanges) {
+      beft::hypothesis_changes_t message{};
+      if (wire::guardedDecode(event.data.data(), event.data.size(), message).ok()) changes.push_back(std::move(message));
+    }
+  }
+  if (changes.empty()) whole_of_tick = keyframes;  // a log from before the changes
+  for (const auto& message : changes) {
+    const auto keyframe = keyframes.find(message.keyframe_tick);
+    beft::hypotheses_t whole{};
+    if (keyframe != keyframes.end() && wire::applyChanges(keyframe->second, message, whole))
+      whole_of_tick[whole.tick] = std::move(whole);
+  }
+  std::vector<beft::hypotheses_t> out;
+  for (auto& [tick, whole] : whole_of_tick) out.push_back(std::move(whole));
+  return out;
 }
 
 std::string lineAfter(const std::string& output, const std::string& prefix) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <lcm/lcm-cpp.hpp>
+#include <beft/hypotheses_t.hpp>
 #include <nlohmann/json.hpp>
 
 #include <map>
@@ -72,6 +73,11 @@ struct ChannelDigest {
   uint64_t hash = 1469598103934665603ull;  // FNV-1a offset basis
 };
 std::map<std::string, ChannelDigest> dataDigests(const std::vector<LoggedMessage>& log);
+
+// The whole list of hypotheses of every tick the log has one for, in tick
+// order: the HYPOTHESES keyframes with each tick's HYPOTHESIS_CHANGES applied
+// (a log from before the changes: its HYPOTHESES as they are).
+std::vector<beft::hypotheses_t> hypothesesOfEachTick(const std::vector<LoggedMessage>& log);
 
 // The first line of `output` that starts with `prefix`, without it; "" if none.
 std::string lineAfter(const std::string& output, const std::string& prefix);

@@ -116,7 +116,7 @@ TEST(MissionPeek, HiddenVictimIsHeardFirstThenVerifiedByGoingAround) {
   EXPECT_TRUE((*victim)["verified"].get<bool>());
   EXPECT_LE((*victim)["error_m"].get<double>(), 0.5);
   int64_t first_heard = -1, first_seen = -1;
-  for (const auto& hs : messagesOn<beft::hypotheses_t>(run.log, "HYPOTHESES"))
+  for (const auto& hs : hypothesesOfEachTick(run.log))
     for (const auto& h : hs.hypotheses)
       if (h.object_id == "victim") first_heard = h.first_heard_utime, first_seen = h.first_seen_utime;
   ASSERT_GE(first_heard, 0);

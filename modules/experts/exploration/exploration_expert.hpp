@@ -20,6 +20,7 @@
 
 #include "explorer.hpp"
 #include "expert.hpp"
+#include "hypotheses_input.hpp"
 #include "scene_input.hpp"
 
 namespace beft::exploration {
@@ -53,7 +54,7 @@ class ExplorationExpert : public expert::Expert {
   bool map_warned_ = false;
 
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
-  expert::TickInput<hypotheses_t> hypotheses_{*this, channels::kHypotheses, 4};
+  expert::HypothesesInput hypotheses_{*this};
   expert::TickInput<dynamic_weights_t> weights_{*this, channels::kDynamicWeights, 4};
   expert::TickInput<obstacle_map_t> map_messages_{*this, channels::kObstacleMap, 2};
   expert::TickInput<task_stack_t> stack_{*this, channels::kTaskStack, 4};

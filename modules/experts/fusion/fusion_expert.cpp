@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "channels.hpp"
+#include "hypothesis_changes.hpp"
 #include "log.hpp"
 
 namespace beft::fusion {
@@ -29,6 +30,9 @@ void FusionExpert::declareParameters(DeclaredParameters& parameters) {
                             {"clearest", FusionRule::Clearest}},
                            "how visual and acoustic label confidences combine (this project's rule): "
                            "perceptibility-weighted mean, plain mean, or the clearer modality's");
+  parameters.declare("keyframe_ticks", keyframe_ticks_, 1, 1000000,
+                     "HYPOTHESES (the whole list) is published at ticks that are multiples of this (1: every "
+                     "tick); HYPOTHESIS_CHANGES every tick carries what changed since");
 }
 
 void FusionExpert::onStartUp() { fusion_ = HypothesisFusion(config_); }
@@ -54,22 +58,43 @@ expert::Outcome FusionExpert::fire(const expert::Firing& firing, expert::Output&
   if (evidence.acoustic_labels == nullptr) missing += " LABELS_ACOUSTIC";
   if (!missing.empty()) log::warn("tick ", k, ": fusing without", missing);
 
-  // After a restart: the hypotheses published earlier in this run (a later
-  // tick than this one means an earlier run, the blackboard outlived it).
-  if (last_fused_tick_ < 0 && resume_) {
-    if (resume_->tick < k) {
-      fusion_.restore(*resume_);
-      log::info("resumed ", fusion_.size(), " hypotheses of tick ", resume_->tick, " from the blackboard");
-    }
-    resume_.reset();
-  }
+  if (last_fused_tick_ < 0) resumeFromBlackboard(k);
   // A tick is folded in once, even if its FIRE is re-run after a lost DONE.
   if (k != last_fused_tick_) {
     fusion_.update(evidence);
     last_fused_tick_ = k;
   }
-  hypotheses_out_.publish(out, fusion_.hypotheses(evidence.scene->utime, k));
+  publish(fusion_.hypotheses(evidence.scene->utime, k), out);
   return expert::Outcome::success();
+}
+
+// After a restart: the hypotheses published earlier in this run, the last
+// keyframe with the last changes when they belong to it (a later tick than
+// this one means an earlier run, the blackboard outlived it).
+void FusionExpert::resumeFromBlackboard(int64_t tick) {
+  if (resume_keyframe_ && resume_keyframe_->tick < tick) {
+    hypotheses_t whole = *resume_keyframe_;
+    if (resume_changes_ && resume_changes_->tick < tick && resume_changes_->tick > whole.tick &&
+        !wire::applyChanges(*resume_keyframe_, *resume_changes_, whole))
+      log::warn("the last HYPOTHESIS_CHANGES (tick ", resume_changes_->tick, ") do not apply to the last HYPOTHESES (tick ",
+                resume_keyframe_->tick, "): resuming from the keyframe");
+    fusion_.restore(whole);
+    keyframe_ = std::move(*resume_keyframe_);
+    log::info("resumed ", fusion_.size(), " hypotheses of tick ", whole.tick, " from the blackboard");
+  }
+  resume_keyframe_.reset();
+  resume_changes_.reset();
+}
+
+// The whole list at keyframe ticks (and when none is known yet), the
+// changes since the keyframe at every tick.
+void FusionExpert::publish(const hypotheses_t& whole, expert::Output& out) {
+  const bool keyframe_due = whole.tick % keyframe_ticks_ == 0 || !keyframe_ || keyframe_->tick > whole.tick;
+  if (keyframe_due) {
+    keyframe_ = whole;
+    hypotheses_out_.publish(out, whole);
+  }
+  changes_out_.publish(out, wire::changesSince(*keyframe_, whole));
 }
 
 }  // namespace beft::fusion

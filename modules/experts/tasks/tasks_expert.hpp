@@ -20,6 +20,7 @@
 
 #include "executor.hpp"
 #include "expert.hpp"
+#include "hypotheses_input.hpp"
 #include "task_stack.hpp"
 
 namespace beft::tasks {
@@ -55,7 +56,7 @@ class TasksExpert : public expert::Expert {
   expert::HandledInput<plan_result_t> plan_results_in_{
       *this, channels::kPlanResult, [this](plan_result_t&& result) { onPlanResult(std::move(result)); }};
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
-  expert::TickInput<hypotheses_t> hypotheses_{*this, channels::kHypotheses, 4};
+  expert::HypothesesInput hypotheses_{*this};
   expert::TickInput<acoustic_percepts_t> audio_{*this, channels::kAudio, 4};
   expert::TickInput<obstacle_map_t> map_{*this, channels::kObstacleMap, 2};
   int64_t map_utime_ = -1;  // the obstacle map last given to the executor

@@ -24,6 +24,7 @@
 #include <beft/geometry_percepts_t.hpp>
 #include <beft/heartbeat_t.hpp>
 #include <beft/hypotheses_t.hpp>
+#include <beft/hypothesis_changes_t.hpp>
 #include <beft/labels_t.hpp>
 #include <beft/marking_t.hpp>
 #include <beft/obstacle_map_t.hpp>
@@ -89,7 +90,8 @@ std::ostream& operator<<(std::ostream& out, Channel<Message> channel) { return o
   X(kLabelsVisual, "LABELS_VISUAL", labels_t)                                                 \
   X(kLabelsAcoustic, "LABELS_ACOUSTIC", labels_t)                                             \
   /* High-level experts. */                                                                  \
-  X(kHypotheses, "HYPOTHESES", hypotheses_t)                                                  \
+  X(kHypotheses, "HYPOTHESES", hypotheses_t) /* at keyframes: the whole list */              \
+  X(kHypothesisChanges, "HYPOTHESIS_CHANGES", hypothesis_changes_t) /* every tick */          \
   X(kDynamicWeights, "DYNAMIC_WEIGHTS", dynamic_weights_t)                                    \
   /* Tasks and planning. */                                                                  \
   X(kTaskStack, "TASK_STACK", task_stack_t)                                                   \
@@ -137,7 +139,7 @@ inline bool isDataPlaneChannel(const std::string& channel) {
   static const std::set<std::string> names = {
       kGroundTruth.name, kSceneVersion.name, kRobotState.name,  kContact.name,        kCameraColor.name,    kCameraDepth.name,    kCameraInstance.name,
       kEars.name,        kGeometry.name,    kVision.name,      kObstacleMap.name,    kAudio.name,          kLabelsVisual.name,
-      kLabelsAcoustic.name, kHypotheses.name, kDynamicWeights.name, kTaskStack.name,   kTaskCommand.name,
+      kLabelsAcoustic.name, kHypotheses.name, kHypothesisChanges.name, kDynamicWeights.name, kTaskStack.name,   kTaskCommand.name,
       kRobotCommand.name,   kPlanRequest.name};
   return names.count(channel) > 0;
 }

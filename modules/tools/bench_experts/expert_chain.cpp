@@ -7,6 +7,7 @@
 #include "audio_expert.hpp"
 #include "channels.hpp"
 #include "fusion_expert.hpp"
+#include "hypothesis_changes.hpp"
 #include "geometry_expert.hpp"
 #include "vision_expert.hpp"
 #include "visual_labels_expert.hpp"
@@ -44,6 +45,13 @@ ExpertChain::ExpertChain(const std::map<std::string, std::map<std::string, std::
 }
 
 ExpertChain::~ExpertChain() = default;
+
+bool ExpertChain::latestHypotheses(hypotheses_t& whole) const {
+  hypotheses_t keyframe{};
+  hypothesis_changes_t changes{};
+  return latest(channels::kHypotheses, keyframe) && latest(channels::kHypothesisChanges, changes) &&
+         wire::applyChanges(keyframe, changes, whole);
+}
 
 std::size_t ExpertChain::latestSize(const std::string& channel) const {
   const auto it = latest_.find(channel);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <beft/camera_frame_t.hpp>
+#include <beft/hypotheses_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
@@ -35,6 +36,9 @@ class ExpertChain {
     const auto it = latest_.find(channel);
     return it != latest_.end() && expert::decodeMessage(channel, it->second.data(), static_cast<int>(it->second.size()), message);
   }
+  // The whole list of hypotheses of the latest tick: the latest HYPOTHESES
+  // keyframe with the latest HYPOTHESIS_CHANGES applied; false if none.
+  bool latestHypotheses(hypotheses_t& whole) const;
   // Size of the latest message on a channel [bytes], 0 if none.
   std::size_t latestSize(const std::string& channel) const;
 

@@ -2,11 +2,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 
 #include <beft/acoustic_percepts_t.hpp>
 #include <beft/dynamic_weights_t.hpp>
 #include <beft/hypotheses_t.hpp>
+#include <beft/hypothesis_changes_t.hpp>
 #include <beft/obstacle_map_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/run_status_t.hpp>
@@ -15,6 +17,7 @@
 
 #include "channels.hpp"
 #include "guarded_decode.hpp"
+#include "hypothesis_changes.hpp"
 #include "log_reader.hpp"
 #include "run_identity.hpp"
 #include "run_record.hpp"
@@ -74,6 +77,7 @@ class RecordBuilder {
     if (channel == channels::kGroundTruth) ok = addGroundTruth(event);
     else if (channel == channels::kRobotState) ok = addRobotState(event);
     else if (channel == channels::kHypotheses) ok = addHypotheses(event);
+    else if (channel == channels::kHypothesisChanges) ok = addHypothesisChanges(event);
     else if (channel == channels::kAudio) ok = addAudio(event);
     else if (channel == channels::kDynamicWeights) ok = addWeights(event);
     else if (channel == channels::kTaskStack) ok = addTaskStack(event);
@@ -146,9 +150,28 @@ class RecordBuilder {
     return true;
   }
 
+  // A keyframe: the whole list of its tick.
   bool addHypotheses(const wire::LogEvent& event) {
     hypotheses_t message{};
     if (!decode(event, message)) return false;
+    addHypothesesSample(message);
+    keyframe_ = std::move(message);
+    return true;
+  }
+
+  // The changes of a tick since the last keyframe (wire/hypothesis_changes.hpp);
+  // those of the keyframe's own tick add nothing to it.
+  bool addHypothesisChanges(const wire::LogEvent& event) {
+    hypothesis_changes_t message{};
+    if (!decode(event, message)) return false;
+    if (!keyframe_ || message.keyframe_tick == message.tick) return true;
+    hypotheses_t whole{};
+    if (!wire::applyChanges(*keyframe_, message, whole)) return false;
+    addHypothesesSample(whole);
+    return true;
+  }
+
+  void addHypothesesSample(const hypotheses_t& message) {
     HypothesesSample sample;
     sample.t = seconds(message.utime);
     for (const auto& h : message.hypotheses) {
@@ -170,7 +193,6 @@ class RecordBuilder {
       sample.hypotheses.push_back(std::move(state));
     }
     record_.hypotheses.push_back(std::move(sample));
-    return true;
   }
 
   bool addWeights(const wire::LogEvent& event) {
@@ -218,6 +240,7 @@ class RecordBuilder {
   }
 
   RunRecord& record_;
+  std::optional<hypotheses_t> keyframe_;  // the last HYPOTHESES
 };
 
 }  // namespace

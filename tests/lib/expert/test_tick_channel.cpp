@@ -6,6 +6,8 @@
 
 #include "scene_builders.hpp"
 #include "expert.hpp"
+#include "hypotheses_input.hpp"
+#include "hypothesis_changes.hpp"
 #include "scene_input.hpp"
 
 using namespace beft;
@@ -114,4 +116,74 @@ TEST(SceneInput, LogsFromBeforeVersionsGiveEachTicksOwnMessage) {
   const uint8_t garbage[3] = {1, 2, 3};
   EXPECT_FALSE(scene.receive(garbage, 3));
   EXPECT_EQ(scene.latest()->tick, 2);
+}
+
+namespace {
+hypotheses_t hypothesesOf(int64_t tick, const std::vector<std::pair<std::string, double>>& positions) {
+  hypotheses_t all{};
+  all.utime = tick * 100000;
+  all.tick = tick;
+  for (const auto& [id, x] : positions) {
+    hypothesis_t h{};
+    h.object_id = id;
+    h.x = x;
+    all.hypotheses.push_back(h);
+  }
+  all.num_hypotheses = static_cast<int32_t>(all.hypotheses.size());
+  return all;
+}
+}  // namespace
+
+TEST(HypothesesInput, AKeyframeAndEachTicksChangesGiveThatTicksWholeList) {
+  PortOwner owner;
+  expert::HypothesesInput hypotheses(owner);
+  EXPECT_TRUE(hypotheses.empty());
+  const hypotheses_t keyframe = hypothesesOf(0, {{"a", 1}});
+  ASSERT_TRUE(deliver(owner, channels::kHypotheses.name, keyframe));
+  ASSERT_TRUE(deliver(owner, channels::kHypothesisChanges.name, wire::changesSince(keyframe, keyframe)));
+  ASSERT_TRUE(deliver(owner, channels::kHypothesisChanges.name,
+                      wire::changesSince(keyframe, hypothesesOf(1, {{"a", 2}}))));
+  ASSERT_TRUE(deliver(owner, channels::kHypothesisChanges.name,
+                      wire::changesSince(keyframe, hypothesesOf(2, {{"a", 2}, {"b", 5}}))));
+  ASSERT_NE(hypotheses.ofTick(0), nullptr);
+  EXPECT_DOUBLE_EQ(hypotheses.ofTick(0)->hypotheses[0].x, 1);
+  const hypotheses_t* second = hypotheses.ofTick(2);
+  ASSERT_NE(second, nullptr);
+  EXPECT_EQ(second->tick, 2);
+  EXPECT_EQ(second->utime, 200000);
+  ASSERT_EQ(second->num_hypotheses, 2);
+  EXPECT_DOUBLE_EQ(second->hypotheses[0].x, 2);
+  EXPECT_EQ(second->hypotheses[1].object_id, "b");
+  EXPECT_EQ(hypotheses.ofTick(1)->num_hypotheses, 1);
+  EXPECT_EQ(hypotheses.latest()->tick, 2);
+
+  // Tick 3's changes are missing: ask for them; they name keyframe 3, which is
+  // still on its way: ask for HYPOTHESES.
+  EXPECT_TRUE(hypotheses.lacksTick(3));
+  EXPECT_EQ(hypotheses.lackingChannel(3), channels::kHypothesisChanges.name);
+  const hypotheses_t keyframe3 = hypothesesOf(3, {{"a", 7}, {"b", 5}});
+  deliver(owner, channels::kHypothesisChanges.name, wire::changesSince(keyframe3, keyframe3));
+  EXPECT_EQ(hypotheses.ofTick(3), nullptr);
+  EXPECT_EQ(hypotheses.lackingChannel(3), channels::kHypotheses.name);
+  EXPECT_EQ(hypotheses.latest()->tick, 0);  // the newest list it can make: the keyframe before
+  deliver(owner, channels::kHypotheses.name, keyframe3);
+  ASSERT_NE(hypotheses.ofTick(3), nullptr);
+  EXPECT_DOUBLE_EQ(hypotheses.ofTick(3)->hypotheses[0].x, 7);
+  EXPECT_DOUBLE_EQ(hypotheses.ofTick(1)->hypotheses[0].x, 2);  // earlier ticks keep theirs
+  EXPECT_FALSE(hypotheses.lacksTick(3));
+}
+
+TEST(HypothesesInput, LogsFromBeforeChangesGiveEachTicksOwnList) {
+  PortOwner owner;
+  expert::HypothesesInput hypotheses(owner);
+  for (int64_t k = 0; k < 3; ++k) deliver(owner, channels::kHypotheses.name, hypothesesOf(k, {{"a", double(k)}}));
+  for (int64_t k = 0; k < 3; ++k) {
+    ASSERT_NE(hypotheses.ofTick(k), nullptr) << k;
+    EXPECT_DOUBLE_EQ(hypotheses.ofTick(k)->hypotheses[0].x, k);
+  }
+  EXPECT_TRUE(hypotheses.lacksTick(3));
+  EXPECT_EQ(hypotheses.lackingChannel(3), channels::kHypotheses.name);
+  const uint8_t garbage[3] = {1, 2, 3};
+  EXPECT_FALSE(hypotheses.receive(garbage, 3));
+  EXPECT_EQ(hypotheses.latest()->tick, 2);
 }

@@ -16,12 +16,14 @@
 #include <beft/dynamic_weights_t.hpp>
 #include <beft/fire_t.hpp>
 #include <beft/hypotheses_t.hpp>
+#include <beft/hypothesis_changes_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/run_status_t.hpp>
 #include <beft/scene_objects_t.hpp>
 #include <beft/task_stack_t.hpp>
 
 #include "channels.hpp"
+#include "hypothesis_changes.hpp"
 #include "map_picture.hpp"
 #include "obstacle_map_codec.hpp"
 #include "report_files.hpp"
@@ -94,9 +96,12 @@ hypothesis_t hypothesis(const std::string& id, double x, double y, const std::st
 // A 6 s run in a 30 x 20 m yard: victim1 (behind wall1) is heard at 1 s and
 // seen (verified) at 3 s; the radio sounds like a person and is seen as a
 // siren at 4 s (falsified); victim2 is never perceived; the robot drives
-// 0.1 m per tick along +x; DW weights and the task over time.
-void writeRunLog(const std::string& path) {
+// 0.1 m per tick along +x; DW weights and the task over time. With
+// keyframe_ticks > 0 the hypotheses go out as fusion sends them now: the
+// whole list every keyframe_ticks ticks, the changes since at every tick.
+void writeRunLog(const std::string& path, int keyframe_ticks = 0) {
   lcm::LogFile log(path, "w");
+  hypotheses_t keyframe{};
   ASSERT_TRUE(log.good());
   const int64_t wall0 = 1'700'000'000'000'000;
   for (int k = 0; k < kTicks; ++k) {
@@ -159,7 +164,11 @@ void writeRunLog(const std::string& path) {
       hypotheses.hypotheses.push_back(r);
     }
     hypotheses.num_hypotheses = static_cast<int32_t>(hypotheses.hypotheses.size());
-    write(log, channels::kHypotheses, hypotheses, stamp + 2);
+    if (keyframe_ticks <= 0 || k % keyframe_ticks == 0) {
+      write(log, channels::kHypotheses, hypotheses, stamp + 2);
+      keyframe = hypotheses;
+    }
+    if (keyframe_ticks > 0) write(log, channels::kHypothesisChanges, wire::changesSince(keyframe, hypotheses), stamp + 2);
 
     dynamic_weights_t weights{};
     weights.utime = utime;
@@ -223,6 +232,33 @@ TEST_F(ReportFromLog, ReadsWhatTheRunRecorded) {
   EXPECT_EQ(record.weights.size(), static_cast<size_t>(kTicks));
   EXPECT_TRUE(record.rejected.empty());
   EXPECT_EQ(record.log_damage, "");
+}
+
+TEST_F(ReportFromLog, HypothesesSentAsKeyframesAndChangesReadAsTheWholeListOfEveryTick) {
+  const std::string changes_path = (dir / "changes.lcmlog").string();
+  writeRunLog(changes_path, 20);
+  const RunRecord whole = readRunLog(log_path);
+  const RunRecord changes = readRunLog(changes_path);
+  EXPECT_TRUE(changes.rejected.empty());
+  ASSERT_EQ(changes.hypotheses.size(), whole.hypotheses.size());
+  for (std::size_t i = 0; i < whole.hypotheses.size(); ++i) {
+    EXPECT_DOUBLE_EQ(changes.hypotheses[i].t, whole.hypotheses[i].t);
+    ASSERT_EQ(changes.hypotheses[i].hypotheses.size(), whole.hypotheses[i].hypotheses.size()) << i;
+    for (std::size_t j = 0; j < whole.hypotheses[i].hypotheses.size(); ++j) {
+      const auto& a = whole.hypotheses[i].hypotheses[j];
+      const auto& b = changes.hypotheses[i].hypotheses[j];
+      EXPECT_EQ(b.object_id, a.object_id);
+      EXPECT_EQ(b.best_category, a.best_category);
+      EXPECT_EQ(b.verified, a.verified);
+      EXPECT_EQ(b.falsified, a.falsified);
+      EXPECT_DOUBLE_EQ(b.confidence, a.confidence);
+      EXPECT_DOUBLE_EQ(b.settled_s, a.settled_s);
+    }
+  }
+  const RunReport report = scoreRun(changes, ScoringOptions{});
+  ASSERT_EQ(report.victims.size(), 1u);
+  EXPECT_NEAR(report.victims[0].found_at_s, 3.0, 1e-6);
+  ASSERT_EQ(report.falsified.size(), 1u);
 }
 
 TEST_F(ReportFromLog, ScoresVictimsFalsifiedAndMissed) {
