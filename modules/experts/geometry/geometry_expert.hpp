@@ -17,7 +17,11 @@ class GeometryExpert : public expert::Expert {
   bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override;
+
  private:
+  bool every_object_ = false;
   expert::SceneInput scene_{*this};
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
   expert::OutputPort<geometry_percepts_t> geometry_out_{*this, channels::kGeometry};
