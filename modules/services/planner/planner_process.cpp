@@ -83,8 +83,12 @@ void PlannerProcess::onMessage(const transport::Message& message) {
   const std::string channel(message.channel);
   if (channel == channels::kObstacleMap) {
     if (!wire::validFrom<beft::obstacle_map_t>(channel, message.data, message.size)) return;
-    latest_map_.assign(message.data, message.data + message.size);
-    has_map_ = true;
+    // utime, the first field, right after the 8-byte fingerprint (big-endian).
+    int64_t utime = 0;
+    for (std::size_t i = 8; i < 16; ++i) utime = static_cast<int64_t>((static_cast<uint64_t>(utime) << 8) | message.data[i]);
+    while (!recent_maps_.empty() && recent_maps_.back().first >= utime) recent_maps_.pop_back();  // a tick sent again
+    recent_maps_.emplace_back(utime, std::vector<uint8_t>(message.data, message.data + message.size));
+    if (recent_maps_.size() > kMapsKept) recent_maps_.pop_front();
   } else if (channel == channels::kPlanRequest) {
     beft::plan_request_t request{};
     if (wire::decodeFrom(channel, message.data, message.size, request)) requests_.push_back(std::move(request));
@@ -96,41 +100,53 @@ void PlannerProcess::onMessage(const transport::Message& message) {
   }
 }
 
+const std::vector<uint8_t>* PlannerProcess::mapFor(const beft::plan_request_t& request) const {
+  if (recent_maps_.empty()) return nullptr;
+  for (auto it = recent_maps_.rbegin(); it != recent_maps_.rend(); ++it)
+    if (it->first <= request.utime) return &it->second;
+  return &recent_maps_.front().second;
+}
+
 // Decoded only when a request needs it: the map arrives every tick, requests rarely.
-void PlannerProcess::takeNewestMap() {
-  if (!has_map_ || requests_.empty()) return;
+void PlannerProcess::useMap(const std::vector<uint8_t>& encoded) {
+  if (encoded == map_in_use_bytes_) return;
+  map_in_use_bytes_ = encoded;
   try {
     beft::obstacle_map_t map{};
-    if (!wire::guardedDecode(latest_map_.data(), latest_map_.size(), map).ok())
+    if (!wire::guardedDecode(encoded.data(), encoded.size(), map).ok())
       throw std::invalid_argument("not an obstacle_map_t");
     planner_->setObstacleMap(map);
   } catch (const std::exception& e) {
     log::warn("ignoring a malformed obstacle map: ", e.what());
   }
-  has_map_ = false;
 }
 
 void PlannerProcess::answerRequests(lcm::LCM& lcm) {
   while (!requests_.empty()) {
     const beft::plan_request_t request = requests_.front();
     requests_.pop_front();
-    try {
-      auto result = planner_->handle(request, wallMicros());
-      if (!result) {
-        log::debug("request ", request.request_id, " was answered before; ignored");
-        continue;
-      }
-      lcm.publish(wire::runChannel(channels::kPlanResult), &*result);
-      ++answered_;
-      if (result->success)
-        log::info("request ", request.request_id, " (", result->planner, "): ", result->num_waypoints,
-                  " waypoints, ", result->length, " m, ", 1000 * result->planning_time, " ms",
-                  result->message.empty() ? "" : " - " + result->message);
-      else
-        log::warn("request ", request.request_id, " (", result->planner, ") failed: ", result->message);
-    } catch (const std::exception& e) {
-      log::error("request ", request.request_id, ": ", e.what());
+    if (const std::vector<uint8_t>* map = mapFor(request)) useMap(*map);
+    answerOne(lcm, request);
+  }
+}
+
+void PlannerProcess::answerOne(lcm::LCM& lcm, const beft::plan_request_t& request) {
+  try {
+    auto result = planner_->handle(request, wallMicros());
+    if (!result) {
+      log::debug("request ", request.request_id, " was answered before; ignored");
+      return;
     }
+    lcm.publish(wire::runChannel(channels::kPlanResult), &*result);
+    ++answered_;
+    if (result->success)
+      log::info("request ", request.request_id, " (", result->planner, "): ", result->num_waypoints,
+                " waypoints, ", result->length, " m, ", 1000 * result->planning_time, " ms",
+                result->message.empty() ? "" : " - " + result->message);
+    else
+      log::warn("request ", request.request_id, " (", result->planner, ") failed: ", result->message);
+  } catch (const std::exception& e) {
+    log::error("request ", request.request_id, ": ", e.what());
   }
 }
 
@@ -152,7 +168,10 @@ void PlannerProcess::resumeFromLog(const std::string& log_path, int64_t live_sin
     } else if (event.channel == channels::kPlanRequest) {
       beft::plan_request_t request{};
       if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), request))
-        unanswered.emplace(request.request_id, UnansweredRequest{request, latest_map_});
+        if (const std::vector<uint8_t>* map = mapFor(request))
+          unanswered.emplace(request.request_id, UnansweredRequest{request, *map});
+        else
+          unanswered.emplace(request.request_id, UnansweredRequest{request, {}});
     } else if (event.channel == channels::kPlanResult) {
       beft::plan_result_t result{};
       if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), result)) {
@@ -163,23 +182,16 @@ void PlannerProcess::resumeFromLog(const std::string& log_path, int64_t live_sin
   }
   for (auto& [id, request] : unanswered) unanswered_.push_back(std::move(request));
   log::info("resumed from ", log_path, ": ", unanswered_.size(), " request(s) to answer",
-            has_map_ ? ", with the newest map" : ", no map yet",
+            recent_maps_.empty() ? ", no map yet" : ", each with the map of its tick",
             log.damage().any() ? " (log: " + log.damage().summary() + ")" : "");
 }
 
 void PlannerProcess::answerUnanswered(lcm::LCM& lcm) {
-  const std::vector<uint8_t> newest_map = latest_map_;
-  const bool had_map = has_map_;
   for (auto& unanswered : unanswered_) {
-    latest_map_ = std::move(unanswered.map);
-    has_map_ = !latest_map_.empty();
-    requests_.push_back(std::move(unanswered.request));
-    takeNewestMap();
-    answerRequests(lcm);
+    if (!unanswered.map.empty()) useMap(unanswered.map);
+    answerOne(lcm, unanswered.request);
   }
   unanswered_.clear();
-  latest_map_ = newest_map;
-  has_map_ = had_map;
 }
 
 int PlannerProcess::serve(service::Context& context) {
@@ -222,7 +234,6 @@ int PlannerProcess::serve(service::Context& context) {
       log::error("LCM receive failed");
       return 1;
     }
-    takeNewestMap();
     answerRequests(context.lcm);
   }
   log::info("stopping after ", answered_, " answers");

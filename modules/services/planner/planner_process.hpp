@@ -27,14 +27,21 @@ class PlannerProcess : public service::Service {
   int serve(service::Context& context) override;
 
  private:
-  // Store only: the newest map as bytes (decoded when a request needs it),
+  // Store only: the recent maps as bytes (decoded when a request needs one),
   // requests in arrival order, whether an arbiter waits.
   void onMessage(const transport::Message& message);
-  void takeNewestMap();
+  // The map a request is planned on: the newest kept whose simulated time is
+  // not after the request's (the map of the tick that sent it; a later one
+  // may already have arrived when the planner gets to the request, and which
+  // one would depend on the machine's load), else the oldest kept; null if none.
+  const std::vector<uint8_t>* mapFor(const beft::plan_request_t& request) const;
+  // Gives the planner this map unless it has it already.
+  void useMap(const std::vector<uint8_t>& encoded);
   void answerRequests(lcm::LCM& lcm);
-  // After a crash: the newest map and the requests not yet answered, from the run's log.
+  void answerOne(lcm::LCM& lcm, const beft::plan_request_t& request);
+  // After a crash: the maps and the requests not yet answered, from the run's log.
   void resumeFromLog(const std::string& log_path, int64_t live_since_us);
-  // Answers them, each on the map that was newest when it was sent.
+  // Answers them, each on its map.
   void answerUnanswered(lcm::LCM& lcm);
 
   struct UnansweredRequest {
@@ -46,8 +53,9 @@ class PlannerProcess : public service::Service {
   ServiceConfig config_;
   std::vector<std::string> pf_params_;
   std::unique_ptr<PlannerService> planner_;
-  std::vector<uint8_t> latest_map_;
-  bool has_map_ = false;
+  static constexpr std::size_t kMapsKept = 64;  // a few seconds of ticks
+  std::deque<std::pair<int64_t, std::vector<uint8_t>>> recent_maps_;  // by simulated time [us], oldest first
+  std::vector<uint8_t> map_in_use_bytes_;  // the last one given to the planner
   bool arbiter_waiting_ = false;
   std::deque<beft::plan_request_t> requests_;
   int64_t answered_ = 0;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <map>
 #include <cmath>
 #include <csignal>
 #include <string>
@@ -232,6 +233,58 @@ TEST(PlannerServiceProcess, AnswersARequestOverLcm) {
   EXPECT_NEAR(result.waypoints.back().x, 5.5, 1e-9);
   expectCollisionFree(wallWorld(), result, 0.35);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+}
+
+// A request is planned on the map of its tick, even when a newer one has
+// arrived by the time the planner gets to it (in lockstep the next ticks
+// run on while the request waits: which map would be newest then depends on
+// the machine's load).
+TEST(PlannerServiceProcess, PlansEachRequestOnTheMapOfItsTime) {
+  const int port = 40000 + static_cast<int>((getpid() + 7919) % 20000);
+  const std::string url = "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0";
+  lcm::LCM lcm(url);
+  ASSERT_TRUE(lcm.good());
+  struct Results {
+    std::map<int64_t, beft::plan_result_t> received;
+    void on(const lcm::ReceiveBuffer*, const std::string&, const beft::plan_result_t* msg) {
+      received[msg->request_id] = *msg;
+    }
+  } results;
+  lcm.subscribe("PLAN_RESULT", &Results::on, &results);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    execl(BEFT_PLANNER_BINARY, BEFT_PLANNER_BINARY, "--lcm-url", url.c_str(), "--planner", "astar",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Tick 10: the wall; tick 20: the wall gone.
+  bp::ObstacleCells open = wallWorld();
+  for (auto& cell : open.cells) cell = kFree;
+  const auto walled_map = bp::makeObstacleMap(wallWorld(), beft::obstacle_map_t::ENCODING_RLE, 1'000'000, 10);
+  const auto open_map = bp::makeObstacleMap(open, beft::obstacle_map_t::ENCODING_RLE, 2'000'000, 20);
+  auto at_tick_10 = request(21, 0.0, 3.0, 5.5, 3.0);
+  at_tick_10.utime = 1'000'000;
+  auto at_tick_20 = request(22, 0.0, 3.0, 5.5, 3.0);
+  at_tick_20.utime = 2'000'000;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (results.received.size() < 2 && std::chrono::steady_clock::now() < deadline) {
+    lcm.publish("OBSTACLE_MAP", &walled_map);
+    lcm.publish("OBSTACLE_MAP", &open_map);
+    lcm.publish("PLAN_REQUEST", &at_tick_10);
+    lcm.publish("PLAN_REQUEST", &at_tick_20);
+    lcm.handleTimeout(300);
+  }
+  kill(child, SIGTERM);
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_EQ(results.received.size(), 2u);
+  const auto& around = results.received.at(21);
+  const auto& straight = results.received.at(22);
+  ASSERT_TRUE(around.success && straight.success) << around.message << straight.message;
+  EXPECT_NEAR(straight.length, 5.5, 0.05);
+  EXPECT_GT(around.length, 8.0);  // over the wall's end at y = 5.5 m and back
+  expectCollisionFree(wallWorld(), around, 0.35);
 }
 
 }  // namespace
