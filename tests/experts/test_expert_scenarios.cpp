@@ -63,9 +63,9 @@ class ScenarioRun {
     }
   }
   planners::ObstacleCells obstacleMap() const {
-    obstacle_map_t map{};
-    if (!chain_.latest(channels::kObstacleMap, map)) throw std::runtime_error("no OBSTACLE_MAP yet");
-    return planners::decodeObstacleMap(map);
+    const auto map = chain_.latestObstacleMap();
+    if (map == nullptr) throw std::runtime_error("no OBSTACLE_MAP yet");
+    return *map;
   }
   int64_t utime() const { return world_.utime(); }
   const std::vector<std::string>& failures() const { return failures_; }

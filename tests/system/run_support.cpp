@@ -1,5 +1,6 @@
 #include "run_support.hpp"
 
+#include "obstacle_map_changes.hpp"
 #include "obstacle_map_codec.hpp"
 
 #include <signal.h>
@@ -163,9 +164,12 @@ std::map<std::string, ChannelDigest> dataDigests(const std::vector<LoggedMessage
   // With HYPOTHESIS_CHANGES, HYPOTHESES stands for the whole list of every
   // tick, made from the keyframes and the changes: what it was when the
   // whole list went out every tick.
-  bool changes_sent = false;
-  for (const auto& [key, data] : messages)
+  // Likewise OBSTACLE_MAP with OBSTACLE_MAP_CHANGES: the map of every tick.
+  bool changes_sent = false, map_changes_sent = false;
+  for (const auto& [key, data] : messages) {
     if (std::get<0>(key) == channels::kHypothesisChanges) changes_sent = true;
+    if (std::get<0>(key) == channels::kObstacleMapChanges) map_changes_sent = true;
+  }
   std::map<std::string, ChannelDigest> digests;
   auto add = [&digests](const std::string& channel, const std::vector<uint8_t>& bytes) {
     ChannelDigest& digest = digests[channel];
@@ -175,10 +179,42 @@ std::map<std::string, ChannelDigest> dataDigests(const std::vector<LoggedMessage
   for (const auto& [key, data] : messages) {
     const std::string& channel = std::get<0>(key);
     if (changes_sent && channel == channels::kHypotheses) continue;
+    if (map_changes_sent && channel == channels::kObstacleMap) continue;
     const std::string type = channels::typeOfChannel(channel);
     if (type == lcmTypeName<beft::camera_frame_t>()) add(channel, unpackedFrame(data));
     else if (type == lcmTypeName<beft::obstacle_map_t>()) add(channel, unpackedMap(data));
     else add(channel, data);
+  }
+  if (map_changes_sent) {
+    std::map<int64_t, beft::obstacle_map_t> keyframes;
+    std::map<int64_t, beft::obstacle_map_changes_t> changes_of_tick;
+    for (const auto& [key, data] : messages) {
+      if (std::get<0>(key) == channels::kObstacleMap) {
+        beft::obstacle_map_t keyframe{};
+        if (wire::guardedDecode(data.data(), data.size(), keyframe).ok()) keyframes[keyframe.tick] = keyframe;
+      } else if (std::get<0>(key) == channels::kObstacleMapChanges) {
+        beft::obstacle_map_changes_t changes{};
+        if (wire::guardedDecode(data.data(), data.size(), changes).ok()) changes_of_tick[changes.tick] = changes;
+      }
+    }
+    planners::ObstacleMapAssembler assembler;
+    for (const auto& [tick, changes] : changes_of_tick) {
+      const auto keyframe = keyframes.find(changes.keyframe_tick);
+      if (keyframe == keyframes.end()) continue;
+      beft::obstacle_map_t whole = keyframe->second;  // as a map of every tick was sent: raw, its tick's time
+      try {
+        whole.data = assembler.mapOf(keyframe->second, &changes)->cells;
+      } catch (const planners::ObstacleMapError&) {
+        continue;
+      }
+      whole.utime = changes.utime;
+      whole.tick = changes.tick;
+      whole.encoding = beft::obstacle_map_t::ENCODING_RAW;
+      whole.data_size = static_cast<int32_t>(whole.data.size());
+      std::vector<uint8_t> bytes(whole.getEncodedSize());
+      whole.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+      add(channels::kObstacleMap.name, bytes);
+    }
   }
   if (changes_sent) {
     for (const auto& whole : hypothesesOfEachTick(log)) {

@@ -156,15 +156,13 @@ Observation ExplorationExpert::observe(const expert::Firing& firing) {
   if (hypotheses != nullptr)
     for (const auto& h : hypotheses->hypotheses) o.hypotheses.push_back(viewOf(h, weights));
 
-  const auto* map = map_messages_.ofTick(firing.tick);
-  if (map == nullptr) map = map_messages_.latest();
-  // Decoded only when the explorer will look at it this step.
-  if (map != nullptr && map->utime != map_utime_ && explorer_->wantsMap(o.t)) {
-    map_utime_ = map->utime;
+  // Made only when the explorer will look at it this step.
+  if (explorer_->wantsMap(o.t)) {
     try {
-      if (!last_map_ || !planners::sameEncodedMap(*map, *last_map_)) {  // unchanged: nothing to redo
-        map_ = std::make_shared<const planners::ObstacleCells>(planners::decodeObstacleMap(*map));
-        last_map_ = *map;
+      auto map = map_messages_.ofTick(firing.tick);
+      if (map == nullptr) map = map_messages_.latest();
+      if (map != nullptr && map != map_) {  // unchanged: the same map, nothing to redo
+        map_ = std::move(map);
         ++map_version_;
       }
     } catch (const std::exception& e) {

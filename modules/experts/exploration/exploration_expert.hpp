@@ -21,6 +21,7 @@
 #include "explorer.hpp"
 #include "expert.hpp"
 #include "hypotheses_input.hpp"
+#include "obstacle_map_input.hpp"
 #include "scene_input.hpp"
 
 namespace beft::exploration {
@@ -47,16 +48,14 @@ class ExplorationExpert : public expert::Expert {
   ExplorerParameters parameters_;
   std::unique_ptr<Explorer> explorer_;
   int64_t next_command_id_ = 1;
-  int64_t map_utime_ = -1;  // the obstacle map message last looked at
-  int64_t map_version_ = 0;  // counts the different maps decoded
-  std::optional<obstacle_map_t> last_map_;  // as last decoded
+  int64_t map_version_ = 0;  // counts the different maps taken
   std::shared_ptr<const planners::ObstacleCells> map_;
   bool map_warned_ = false;
 
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
   expert::HypothesesInput hypotheses_{*this};
   expert::TickInput<dynamic_weights_t> weights_{*this, channels::kDynamicWeights, 4};
-  expert::TickInput<obstacle_map_t> map_messages_{*this, channels::kObstacleMap, 2};
+  expert::ObstacleMapInput map_messages_{*this};
   expert::TickInput<task_stack_t> stack_{*this, channels::kTaskStack, 4};
   expert::SceneInput scene_{*this};
   expert::OutputPort<task_command_t> task_command_out_{*this, channels::kTaskCommand};

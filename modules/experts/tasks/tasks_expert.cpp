@@ -135,17 +135,15 @@ void TasksExpert::updateExecutorInputs(const expert::Firing& firing) {
     for (const auto& h : hypotheses->hypotheses) positions[h.object_id] = {h.x, h.y};
   executor_->setObjectPositions(std::move(positions));
 
-  if (const auto* map = map_.latest(); map != nullptr && map->utime != map_utime_) {
-    map_utime_ = map->utime;
-    try {
-      if (!last_map_ || !planners::sameEncodedMap(*map, *last_map_)) {  // unchanged: nothing to decode
-        executor_->setObstacleMap(planners::decodeObstacleMap(*map));
-        last_map_ = *map;
-      }
-    } catch (const std::exception& e) {
-      if (!map_warned_) log::warn("OBSTACLE_MAP ignored: ", e.what());
-      map_warned_ = true;
+  try {
+    // Decoded once per change: an unchanged map keeps its version.
+    if (const auto map = map_.latest(); map != nullptr && map_.version() != map_version_) {
+      map_version_ = map_.version();
+      executor_->setObstacleMap(*map);
     }
+  } catch (const std::exception& e) {
+    if (!map_warned_) log::warn("OBSTACLE_MAP ignored: ", e.what());
+    map_warned_ = true;
   }
 
   const int64_t awaited = executor_->awaitedRequest();

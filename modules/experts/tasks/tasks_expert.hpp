@@ -21,6 +21,7 @@
 #include "executor.hpp"
 #include "expert.hpp"
 #include "hypotheses_input.hpp"
+#include "obstacle_map_input.hpp"
 #include "task_stack.hpp"
 
 namespace beft::tasks {
@@ -58,9 +59,8 @@ class TasksExpert : public expert::Expert {
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
   expert::HypothesesInput hypotheses_{*this};
   expert::TickInput<acoustic_percepts_t> audio_{*this, channels::kAudio, 4};
-  expert::TickInput<obstacle_map_t> map_{*this, channels::kObstacleMap, 2};
-  int64_t map_utime_ = -1;  // the obstacle map last given to the executor
-  std::optional<obstacle_map_t> last_map_;  // as last decoded
+  expert::ObstacleMapInput map_{*this};
+  uint64_t map_version_ = 0;  // the obstacle map last given to the executor
   bool map_warned_ = false;
   expert::OutputPort<robot_command_t> robot_command_out_{*this, channels::kRobotCommand};
   expert::OutputPort<task_stack_t> task_stack_out_{*this, channels::kTaskStack};

@@ -331,6 +331,11 @@ void ObstacleMapper::restoreCells(const std::vector<uint8_t>& cells) {
       throw std::invalid_argument("cannot restore a cell of value " + std::to_string(c));
   cells_ = cells;
   ++version_;
+  changed_ = {};
+}
+
+obstacle_map_changes_t ObstacleMapper::changesMessage(int64_t keyframe_tick, int64_t utime, int64_t tick) const {
+  return planners::makeMapChanges(cells_, width_, height_, changed_, keyframe_tick, utime, tick);
 }
 
 obstacle_map_t ObstacleMapper::toMessage(int64_t utime, int64_t tick) const {

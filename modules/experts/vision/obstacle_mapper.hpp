@@ -27,7 +27,10 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <beft/obstacle_map_changes_t.hpp>
 #include <beft/obstacle_map_t.hpp>
+
+#include "obstacle_map_changes.hpp"
 
 namespace beft::vision {
 
@@ -95,6 +98,14 @@ class ObstacleMapper {
   // The whole map as a message (RLE, or raw when that is smaller).
   obstacle_map_t toMessage(int64_t utime, int64_t tick) const;
 
+  // The rectangle of every cell changed since the last markKeyframe() (the
+  // map was then published whole), and those cells as a changes message.
+  const planners::CellRect& changedSinceKeyframe() const { return changed_; }
+  void markKeyframe() { changed_ = {}; }
+  // After a restart from a keyframe and its changes: what had changed since.
+  void restoreChanged(const planners::CellRect& changed) { changed_ = changed; }
+  obstacle_map_changes_t changesMessage(int64_t keyframe_tick, int64_t utime, int64_t tick) const;
+
  private:
   bool cellOf(double x, double y, int& column, int& row) const;
   // Both integrate()s: ray_at(u, v) gives pixel (u, v)'s DepthRay; it is
@@ -112,6 +123,7 @@ class ObstacleMapper {
     if (cells_[index] != value) {
       cells_[index] = value;
       ++version_;
+      changed_.include(static_cast<int>(index % width_), static_cast<int>(index / width_));
     }
   }
   // A floor return of an image column: its ray is asked again by row when
@@ -140,6 +152,7 @@ class ObstacleMapper {
   // (cleared again at its end through obstacle_cells_).
   std::vector<uint8_t> hit_this_frame_;
   uint64_t version_ = 0;
+  planners::CellRect changed_;  // cells changed since the last keyframe
   // Scratch, kept between frames.
   struct ColumnScan {
     int farthest_v = -1;  // row of the farthest-reaching return, -1: none

@@ -35,6 +35,9 @@ void VisionExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("resolution", map_config_.resolution, 0, DeclaredParameters::kNoLimit, "obstacle map cell edge [m]", true);
   parameters.declare("obstacle_min_height", map_config_.obstacle_min_height, 0, DeclaredParameters::kNoLimit,
                      "depth returns above this height are obstacles [m]");
+  parameters.declare("map_keyframe_ticks", map_keyframe_ticks_, 1, 1000000,
+                     "OBSTACLE_MAP (the whole map) is published at ticks that are multiples of this (1: every "
+                     "tick); OBSTACLE_MAP_CHANGES every tick carries the rectangle changed since");
   parameters.declare("contact_radius", contact_radius_, 0, 2,
                      "a contact of the platform marks the map's cells within this of the touching segment [m]");
   parameters.declare("contact_width", contact_width_, 0, 5,
@@ -127,27 +130,42 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     });
     expert::WaitOnExit perceived(percepting_);  // also when the map throws
     updateMap(*scene, *depth, contact, firing.tick);
-    // Re-encoded only when a cell changed (a robot standing still sees no change).
-    if (map_message_version_ == 0 || mapper_->version() != map_message_version_) {
-      map_message_ = mapper_->toMessage(scene->utime, firing.tick);
-      map_message_version_ = mapper_->version();
-    }
-    map_message_.utime = scene->utime;
-    map_message_.tick = firing.tick;
     percepting_.wait();  // an error of the percepts ends up below
     // Both at the end: a publish wakes the readers, who would take the cores from the work.
     vision_out_.publish(out, percepts);
-    obstacle_map_out_.publish(out, map_message_);
+    publishMap(*scene, firing.tick, out);
   } catch (const std::exception& e) {
     return expert::Outcome::failure("tick " + std::to_string(firing.tick) + ": " + e.what());
   }
   return expert::Outcome::success();
 }
 
+// The whole map at keyframe ticks (and when none was published yet), and at
+// every tick the rectangle changed since the keyframe, re-encoded only when a
+// cell changed (a robot standing still sees no change).
+void VisionExpert::publishMap(const scene_objects_t& scene, int64_t tick, expert::Output& out) {
+  const bool keyframe_due = tick % map_keyframe_ticks_ == 0 || !map_keyframe_ || map_keyframe_->tick > tick;
+  if (keyframe_due && !(map_keyframe_ && map_keyframe_->tick == tick)) {
+    map_keyframe_ = mapper_->toMessage(scene.utime, tick);
+    mapper_->markKeyframe();
+    changes_message_version_ = 0;
+  }
+  if (map_keyframe_->tick == tick) obstacle_map_out_.publish(out, *map_keyframe_);
+  if (changes_message_version_ == 0 || mapper_->version() != changes_message_version_) {
+    changes_message_ = mapper_->changesMessage(map_keyframe_->tick, scene.utime, tick);
+    changes_message_version_ = mapper_->version();
+  }
+  changes_message_.utime = scene.utime;
+  changes_message_.tick = tick;
+  map_changes_out_.publish(out, changes_message_);
+}
+
 // Starts from the map this expert published before a restart, if it covers
 // the same grid. A map of a later tick than the first one fired belongs to an
 // earlier run (the blackboard outlived it), not to this one.
 void VisionExpert::resumeMap(int64_t first_tick) {
+  std::optional<obstacle_map_changes_t> changes = std::move(resume_changes_);
+  resume_changes_.reset();
   if (!resume_map_) return;
   const obstacle_map_t map = std::move(*resume_map_);
   resume_map_.reset();
@@ -161,8 +179,14 @@ void VisionExpert::resumeMap(int64_t first_tick) {
     return;
   }
   try {
-    mapper_->restoreCells(planners::decodeObstacleMap(map).cells);
-    log::info("resumed the obstacle map of tick ", map.tick, " from the blackboard");
+    planners::ObstacleCells cells = planners::decodeObstacleMap(map);
+    // The changes since that keyframe, when they belong to it and to this run.
+    const bool with_changes = changes && changes->keyframe_tick == map.tick && changes->tick < first_tick;
+    if (with_changes) planners::applyMapChanges(*changes, cells);
+    mapper_->restoreCells(cells.cells);
+    if (with_changes) mapper_->restoreChanged({changes->x0, changes->y0, changes->width, changes->height});
+    map_keyframe_ = map;
+    log::info("resumed the obstacle map of tick ", with_changes ? changes->tick : map.tick, " from the blackboard");
   } catch (const std::exception& e) {
     log::warn("obstacle map of tick ", map.tick, " on the blackboard is unusable (", e.what(), "): starting empty");
   }
@@ -173,12 +197,13 @@ void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t&
   if (!mapper_ || scene.world_width != mapped_world_width_ || scene.world_height != mapped_world_height_) {
     if (mapper_) log::warn("world size changed: obstacle map restarted");
     mapper_ = std::make_unique<ObstacleMapper>(scene.world_width, scene.world_height, map_config_);
+    map_keyframe_.reset();
+    changes_message_version_ = 0;
     resumeMap(tick);
     mapped_world_width_ = scene.world_width;
     mapped_world_height_ = scene.world_height;
     last_mapped_tick_ = -1;
     last_depth_ = camera_frame_t{};
-    map_message_version_ = 0;
   }
   if (tick == last_mapped_tick_) return;  // a re-sent FIRE: this frame is in the map already
   last_mapped_tick_ = tick;

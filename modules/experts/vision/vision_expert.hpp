@@ -50,10 +50,14 @@ class VisionExpert : public expert::Expert {
   std::unique_ptr<ObstacleMapper> mapper_;
   double mapped_world_width_ = 0, mapped_world_height_ = 0;
   int64_t last_mapped_tick_ = -1;
-  std::optional<obstacle_map_t> resume_map_;  // a map published before this process started
+  // Published before this process started: the last keyframe and changes.
+  std::optional<obstacle_map_t> resume_map_;
+  std::optional<obstacle_map_changes_t> resume_changes_;
   camera_frame_t last_depth_{};        // the depth frame last added to the map
-  obstacle_map_t map_message_{};         // the map as last encoded
-  uint64_t map_message_version_ = 0;   // mapper version it encodes (0: none yet)
+  int64_t map_keyframe_ticks_ = 100;   // OBSTACLE_MAP at multiples of this, OBSTACLE_MAP_CHANGES every tick
+  std::optional<obstacle_map_t> map_keyframe_;  // the whole map last published
+  obstacle_map_changes_t changes_message_{};    // the changes as last encoded
+  uint64_t changes_message_version_ = 0;        // mapper version they encode (0: none yet)
   camera::RayCaster ray_caster_;
   std::vector<int> expected_;          // expected pixels per object for the pose and solids below
   camera_frame_t expected_pose_{};     // header only: the pixels do not matter to it
@@ -70,8 +74,15 @@ class VisionExpert : public expert::Expert {
   expert::HandledInput<obstacle_map_t> previous_map_{
       *this, channels::kObstacleMap, [this](obstacle_map_t&& map) { resume_map_ = std::move(map); },
       [this] { return mapper_ == nullptr; }};
+  expert::HandledInput<obstacle_map_changes_t> previous_changes_{
+      *this, channels::kObstacleMapChanges,
+      [this](obstacle_map_changes_t&& changes) { resume_changes_ = std::move(changes); },
+      [this] { return mapper_ == nullptr; }};
   expert::OutputPort<visual_percepts_t> vision_out_{*this, channels::kVision};
   expert::OutputPort<obstacle_map_t> obstacle_map_out_{*this, channels::kObstacleMap};
+  expert::OutputPort<obstacle_map_changes_t> map_changes_out_{*this, channels::kObstacleMapChanges};
+
+  void publishMap(const scene_objects_t& scene, int64_t tick, expert::Output& out);
 };
 
 }  // namespace beft::vision

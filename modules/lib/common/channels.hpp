@@ -27,6 +27,7 @@
 #include <beft/hypothesis_changes_t.hpp>
 #include <beft/labels_t.hpp>
 #include <beft/marking_t.hpp>
+#include <beft/obstacle_map_changes_t.hpp>
 #include <beft/obstacle_map_t.hpp>
 #include <beft/plan_request_t.hpp>
 #include <beft/plan_result_t.hpp>
@@ -84,7 +85,8 @@ std::ostream& operator<<(std::ostream& out, Channel<Message> channel) { return o
   /* Low-level experts. */                                                                   \
   X(kGeometry, "GEOMETRY", geometry_percepts_t)                                               \
   X(kVision, "VISION", visual_percepts_t)                                                     \
-  X(kObstacleMap, "OBSTACLE_MAP", obstacle_map_t)                                             \
+  X(kObstacleMap, "OBSTACLE_MAP", obstacle_map_t) /* at keyframes: the whole map */          \
+  X(kObstacleMapChanges, "OBSTACLE_MAP_CHANGES", obstacle_map_changes_t) /* every tick */      \
   X(kAudio, "AUDIO", acoustic_percepts_t)                                                     \
   /* Mid-level experts. */                                                                   \
   X(kLabelsVisual, "LABELS_VISUAL", labels_t)                                                 \
@@ -138,7 +140,7 @@ inline const std::vector<ChannelEntry>& allChannels() {
 inline bool isDataPlaneChannel(const std::string& channel) {
   static const std::set<std::string> names = {
       kGroundTruth.name, kSceneVersion.name, kRobotState.name,  kContact.name,        kCameraColor.name,    kCameraDepth.name,    kCameraInstance.name,
-      kEars.name,        kGeometry.name,    kVision.name,      kObstacleMap.name,    kAudio.name,          kLabelsVisual.name,
+      kEars.name,        kGeometry.name,    kVision.name,      kObstacleMap.name, kObstacleMapChanges.name, kAudio.name,          kLabelsVisual.name,
       kLabelsAcoustic.name, kHypotheses.name, kHypothesisChanges.name, kDynamicWeights.name, kTaskStack.name,   kTaskCommand.name,
       kRobotCommand.name,   kPlanRequest.name};
   return names.count(channel) > 0;

@@ -43,7 +43,8 @@ std::string PlannerProcess::description() const {
 }
 
 std::vector<service::Port> PlannerProcess::reads() const {
-  return {service::port(channels::kObstacleMap, "the newest is planned on"),
+  return {service::port(channels::kObstacleMap, "keyframes: the whole map"),
+          service::port(channels::kObstacleMapChanges, "a request is planned on the map of its tick"),
           service::port(channels::kPlanRequest, "each answered once"),
           service::port(channels::kRunStatus, "an arbiter waiting for heartbeats is answered at once")};
 }
@@ -81,14 +82,18 @@ void PlannerProcess::onStartUp() {
 
 void PlannerProcess::onMessage(const transport::Message& message) {
   const std::string channel(message.channel);
-  if (channel == channels::kObstacleMap) {
-    if (!wire::validFrom<beft::obstacle_map_t>(channel, message.data, message.size)) return;
-    // utime, the first field, right after the 8-byte fingerprint (big-endian).
+  const bool keyframe = channel == channels::kObstacleMap, changes = channel == channels::kObstacleMapChanges;
+  if (keyframe || changes) {
+    if (keyframe ? !wire::validFrom<beft::obstacle_map_t>(channel, message.data, message.size)
+                 : !wire::validFrom<beft::obstacle_map_changes_t>(channel, message.data, message.size))
+      return;
+    // utime, the first field of both, right after the 8-byte fingerprint (big-endian).
     int64_t utime = 0;
     for (std::size_t i = 8; i < 16; ++i) utime = static_cast<int64_t>((static_cast<uint64_t>(utime) << 8) | message.data[i]);
-    while (!recent_maps_.empty() && recent_maps_.back().first >= utime) recent_maps_.pop_back();  // a tick sent again
-    recent_maps_.emplace_back(utime, std::vector<uint8_t>(message.data, message.data + message.size));
-    if (recent_maps_.size() > kMapsKept) recent_maps_.pop_front();
+    auto& kept = keyframe ? recent_keyframes_ : recent_changes_;
+    while (!kept.empty() && kept.back().first >= utime) kept.pop_back();  // a tick sent again
+    kept.emplace_back(utime, std::vector<uint8_t>(message.data, message.data + message.size));
+    if (kept.size() > (keyframe ? kKeyframesKept : kChangesKept)) kept.pop_front();
   } else if (channel == channels::kPlanRequest) {
     beft::plan_request_t request{};
     if (wire::decodeFrom(channel, message.data, message.size, request)) requests_.push_back(std::move(request));
@@ -100,32 +105,51 @@ void PlannerProcess::onMessage(const transport::Message& message) {
   }
 }
 
-const std::vector<uint8_t>* PlannerProcess::mapFor(const beft::plan_request_t& request) const {
-  if (recent_maps_.empty()) return nullptr;
-  for (auto it = recent_maps_.rbegin(); it != recent_maps_.rend(); ++it)
-    if (it->first <= request.utime) return &it->second;
-  return &recent_maps_.front().second;
+std::shared_ptr<const planners::ObstacleCells> PlannerProcess::mapFor(const beft::plan_request_t& request) {
+  // Of the newest tick not after the request (or the oldest kept): the
+  // changes of that tick on their keyframe, or a keyframe of that tick.
+  auto newestUpTo = [&request](const auto& kept) -> const std::pair<int64_t, std::vector<uint8_t>>* {
+    if (kept.empty()) return nullptr;
+    for (auto it = kept.rbegin(); it != kept.rend(); ++it)
+      if (it->first <= request.utime) return &*it;
+    return &kept.front();
+  };
+  const auto* changes_bytes = newestUpTo(recent_changes_);
+  const auto* keyframe_bytes = newestUpTo(recent_keyframes_);
+  if (keyframe_bytes == nullptr) return nullptr;
+  beft::obstacle_map_t keyframe{};
+  if (changes_bytes != nullptr && changes_bytes->first >= keyframe_bytes->first) {
+    beft::obstacle_map_changes_t changes{};
+    if (!wire::guardedDecode(changes_bytes->second.data(), changes_bytes->second.size(), changes).ok())
+      throw planners::ObstacleMapError("not an obstacle_map_changes_t");
+    for (const auto& [utime, bytes] : recent_keyframes_) {
+      beft::obstacle_map_t candidate{};
+      if (wire::guardedDecode(bytes.data(), bytes.size(), candidate).ok() && candidate.tick == changes.keyframe_tick)
+        return assembler_.mapOf(candidate, &changes);
+    }
+    throw planners::ObstacleMapError("no keyframe of tick " + std::to_string(changes.keyframe_tick) +
+                                     " for the changes of tick " + std::to_string(changes.tick));
+  }
+  if (!wire::guardedDecode(keyframe_bytes->second.data(), keyframe_bytes->second.size(), keyframe).ok())
+    throw planners::ObstacleMapError("not an obstacle_map_t");
+  return assembler_.mapOf(keyframe, nullptr);
 }
 
-// Decoded only when a request needs it: the map arrives every tick, requests rarely.
-void PlannerProcess::useMap(const std::vector<uint8_t>& encoded) {
-  if (encoded == map_in_use_bytes_) return;
-  map_in_use_bytes_ = encoded;
-  try {
-    beft::obstacle_map_t map{};
-    if (!wire::guardedDecode(encoded.data(), encoded.size(), map).ok())
-      throw std::invalid_argument("not an obstacle_map_t");
-    planner_->setObstacleMap(map);
-  } catch (const std::exception& e) {
-    log::warn("ignoring a malformed obstacle map: ", e.what());
-  }
+void PlannerProcess::useMap(const std::shared_ptr<const planners::ObstacleCells>& map) {
+  if (map == nullptr || map == map_in_use_) return;
+  map_in_use_ = map;
+  planner_->setObstacleMap(*map);
 }
 
 void PlannerProcess::answerRequests(lcm::LCM& lcm) {
   while (!requests_.empty()) {
     const beft::plan_request_t request = requests_.front();
     requests_.pop_front();
-    if (const std::vector<uint8_t>* map = mapFor(request)) useMap(*map);
+    try {
+      useMap(mapFor(request));
+    } catch (const std::exception& e) {
+      log::warn("ignoring a malformed obstacle map: ", e.what());
+    }
     answerOne(lcm, request);
   }
 }
@@ -163,15 +187,19 @@ void PlannerProcess::resumeFromLog(const std::string& log_path, int64_t live_sin
   wire::LogEvent event;
   while (log.nextOfRun(event, wire::runId())) {
     transport::Message message{event.channel.c_str(), event.data.data(), event.data.size()};
-    if (event.channel == channels::kObstacleMap) {
+    if (event.channel == channels::kObstacleMap || event.channel == channels::kObstacleMapChanges) {
       onMessage(message);
     } else if (event.channel == channels::kPlanRequest) {
       beft::plan_request_t request{};
-      if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), request))
-        if (const std::vector<uint8_t>* map = mapFor(request))
-          unanswered.emplace(request.request_id, UnansweredRequest{request, *map});
-        else
-          unanswered.emplace(request.request_id, UnansweredRequest{request, {}});
+      if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), request)) {
+        std::shared_ptr<const planners::ObstacleCells> map;
+        try {
+          map = mapFor(request);
+        } catch (const std::exception& e) {
+          log::warn("ignoring a malformed obstacle map: ", e.what());
+        }
+        unanswered.emplace(request.request_id, UnansweredRequest{request, map});
+      }
     } else if (event.channel == channels::kPlanResult) {
       beft::plan_result_t result{};
       if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), result)) {
@@ -182,13 +210,13 @@ void PlannerProcess::resumeFromLog(const std::string& log_path, int64_t live_sin
   }
   for (auto& [id, request] : unanswered) unanswered_.push_back(std::move(request));
   log::info("resumed from ", log_path, ": ", unanswered_.size(), " request(s) to answer",
-            recent_maps_.empty() ? ", no map yet" : ", each with the map of its tick",
+            recent_keyframes_.empty() ? ", no map yet" : ", each with the map of its tick",
             log.damage().any() ? " (log: " + log.damage().summary() + ")" : "");
 }
 
 void PlannerProcess::answerUnanswered(lcm::LCM& lcm) {
   for (auto& unanswered : unanswered_) {
-    if (!unanswered.map.empty()) useMap(unanswered.map);
+    useMap(unanswered.map);
     answerOne(lcm, unanswered.request);
   }
   unanswered_.clear();
@@ -198,7 +226,7 @@ int PlannerProcess::serve(service::Context& context) {
   // On udpm the maps (one a tick) queue on a socket nothing waits on and are
   // read when a request comes; requests wake the process.
   transport::Selection maps, requests;
-  maps.rules = {transport::channelRule(channels::kObstacleMap)};
+  maps.rules = {transport::channelRule(channels::kObstacleMap), transport::channelRule(channels::kObstacleMapChanges)};
   requests.rules = {transport::channelRule(channels::kPlanRequest),
                     control::runStatusIn(beft::run_status_t::STATE_WAITING, "an arbiter waiting for heartbeats")};
   transport::SplitReceivers sources;

@@ -10,6 +10,7 @@
 
 #include <beft/plan_request_t.hpp>
 
+#include "obstacle_map_changes.hpp"
 #include "planner_service.hpp"
 #include "service.hpp"
 #include "transport.hpp"
@@ -30,13 +31,15 @@ class PlannerProcess : public service::Service {
   // Store only: the recent maps as bytes (decoded when a request needs one),
   // requests in arrival order, whether an arbiter waits.
   void onMessage(const transport::Message& message);
-  // The map a request is planned on: the newest kept whose simulated time is
-  // not after the request's (the map of the tick that sent it; a later one
-  // may already have arrived when the planner gets to the request, and which
-  // one would depend on the machine's load), else the oldest kept; null if none.
-  const std::vector<uint8_t>* mapFor(const beft::plan_request_t& request) const;
+  // The map a request is planned on: that of the newest tick kept whose
+  // simulated time is not after the request's (the map of the tick that sent
+  // it; a later one may already have arrived when the planner gets to the
+  // request, and which one would depend on the machine's load), made from its
+  // keyframe and changes; else of the oldest tick kept; null if none. Throws
+  // planners::ObstacleMapError if the messages do not make a map.
+  std::shared_ptr<const planners::ObstacleCells> mapFor(const beft::plan_request_t& request);
   // Gives the planner this map unless it has it already.
-  void useMap(const std::vector<uint8_t>& encoded);
+  void useMap(const std::shared_ptr<const planners::ObstacleCells>& map);
   void answerRequests(lcm::LCM& lcm);
   void answerOne(lcm::LCM& lcm, const beft::plan_request_t& request);
   // After a crash: the maps and the requests not yet answered, from the run's log.
@@ -46,16 +49,20 @@ class PlannerProcess : public service::Service {
 
   struct UnansweredRequest {
     beft::plan_request_t request;
-    std::vector<uint8_t> map;  // encoded obstacle_map_t, or empty
+    std::shared_ptr<const planners::ObstacleCells> map;  // or null
   };
   std::vector<UnansweredRequest> unanswered_;
 
   ServiceConfig config_;
   std::vector<std::string> pf_params_;
   std::unique_ptr<PlannerService> planner_;
-  static constexpr std::size_t kMapsKept = 64;  // a few seconds of ticks
-  std::deque<std::pair<int64_t, std::vector<uint8_t>>> recent_maps_;  // by simulated time [us], oldest first
-  std::vector<uint8_t> map_in_use_bytes_;  // the last one given to the planner
+  // Received as bytes, decoded when a request needs them; oldest first.
+  static constexpr std::size_t kChangesKept = 64;  // a few seconds of ticks
+  static constexpr std::size_t kKeyframesKept = 4;
+  std::deque<std::pair<int64_t, std::vector<uint8_t>>> recent_keyframes_;  // OBSTACLE_MAP by simulated time [us]
+  std::deque<std::pair<int64_t, std::vector<uint8_t>>> recent_changes_;    // OBSTACLE_MAP_CHANGES by simulated time
+  planners::ObstacleMapAssembler assembler_;
+  std::shared_ptr<const planners::ObstacleCells> map_in_use_;  // the last one given to the planner
   bool arbiter_waiting_ = false;
   std::deque<beft::plan_request_t> requests_;
   int64_t answered_ = 0;

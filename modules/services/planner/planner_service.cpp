@@ -60,7 +60,11 @@ PlannerService::PlannerService(ServiceConfig config) : config_(std::move(config)
 }
 
 void PlannerService::setObstacleMap(const beft::obstacle_map_t& message) {
-  auto cells = std::make_shared<bp::ObstacleCells>(bp::decodeObstacleMap(message));
+  setObstacleMap(bp::decodeObstacleMap(message));
+}
+
+void PlannerService::setObstacleMap(const bp::ObstacleCells& map) {
+  auto cells = std::make_shared<bp::ObstacleCells>(map);
   const bool same = cells_ && cells_->width == cells->width && cells_->height == cells->height &&
                     cells_->resolution == cells->resolution && cells_->origin_x == cells->origin_x &&
                     cells_->origin_y == cells->origin_y && cells_->cells == cells->cells;

@@ -56,6 +56,7 @@ class PlannerService {
 
   // Keeps the newest map; throws planners::ObstacleMapError when malformed.
   void setObstacleMap(const beft::obstacle_map_t& message);
+  void setObstacleMap(const planners::ObstacleCells& cells);
   bool hasMap() const { return cells_ != nullptr; }
   int64_t mapVersion() const { return map_version_; }
 

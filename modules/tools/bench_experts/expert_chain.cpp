@@ -53,6 +53,14 @@ bool ExpertChain::latestHypotheses(hypotheses_t& whole) const {
          wire::applyChanges(keyframe, changes, whole);
 }
 
+std::shared_ptr<const planners::ObstacleCells> ExpertChain::latestObstacleMap() const {
+  obstacle_map_t keyframe{};
+  obstacle_map_changes_t changes{};
+  if (!latest(channels::kObstacleMap, keyframe)) return nullptr;
+  const bool with_changes = latest(channels::kObstacleMapChanges, changes);
+  return planners::ObstacleMapAssembler().mapOf(keyframe, with_changes ? &changes : nullptr);
+}
+
 std::size_t ExpertChain::latestSize(const std::string& channel) const {
   const auto it = latest_.find(channel);
   return it == latest_.end() ? 0 : it->second.size();

@@ -16,6 +16,7 @@
 #include <beft/scene_objects_t.hpp>
 
 #include "expert.hpp"
+#include "obstacle_map_changes.hpp"
 
 namespace beft::bench {
 
@@ -39,6 +40,9 @@ class ExpertChain {
   // The whole list of hypotheses of the latest tick: the latest HYPOTHESES
   // keyframe with the latest HYPOTHESIS_CHANGES applied; false if none.
   bool latestHypotheses(hypotheses_t& whole) const;
+  // The obstacle map of the latest tick: the latest OBSTACLE_MAP keyframe
+  // with the latest OBSTACLE_MAP_CHANGES written over it; null if none.
+  std::shared_ptr<const planners::ObstacleCells> latestObstacleMap() const;
   // Size of the latest message on a channel [bytes], 0 if none.
   std::size_t latestSize(const std::string& channel) const;
 

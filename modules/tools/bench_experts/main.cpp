@@ -122,9 +122,10 @@ void printTimings(const Options& o, const beft::scenario::Scenario& scenario, co
   const double mean_chain = summarise(t.chain_seconds).mean;
   std::printf("  expert hierarchy alone: %.0f ticks/s (%.0fx real time at dt = %.2f s)\n", 1.0 / mean_chain,
               1.0 / mean_chain * scenario.dt, scenario.dt);
-  std::printf("  message sizes [bytes]: OBSTACLE_MAP %zu, VISION %zu, LABELS_VISUAL %zu, HYPOTHESES %zu (last keyframe), "
+  std::printf("  message sizes [bytes]: OBSTACLE_MAP %zu (last keyframe), OBSTACLE_MAP_CHANGES %zu, VISION %zu, LABELS_VISUAL %zu, HYPOTHESES %zu (last keyframe), "
               "HYPOTHESIS_CHANGES %zu\n",
-              chain.latestSize(beft::channels::kObstacleMap), chain.latestSize(beft::channels::kVision),
+              chain.latestSize(beft::channels::kObstacleMap), chain.latestSize(beft::channels::kObstacleMapChanges),
+              chain.latestSize(beft::channels::kVision),
               chain.latestSize(beft::channels::kLabelsVisual), chain.latestSize(beft::channels::kHypotheses),
               chain.latestSize(beft::channels::kHypothesisChanges));
   if (t.failures > 0) std::printf("  %zu firing failures (first ones above)\n", t.failures);

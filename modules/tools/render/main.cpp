@@ -24,6 +24,7 @@
 #include "drawing.hpp"
 #include "frame_decoding.hpp"
 #include "map_picture.hpp"
+#include "obstacle_map_changes.hpp"
 #include "run_identity.hpp"
 #include "run_record.hpp"
 #include "run_scoring.hpp"
@@ -36,7 +37,8 @@ using namespace beft;
 // (as logged, compressed: unpacked when drawn) and obstacle maps, by tick.
 struct TickImages {
   std::map<int64_t, beft::camera_frame_t> camera;
-  std::map<int64_t, beft::obstacle_map_t> maps;
+  std::map<int64_t, beft::obstacle_map_t> maps;  // keyframes (every tick in logs from before the changes)
+  std::map<int64_t, beft::obstacle_map_changes_t> map_changes;
 };
 
 // Damaged records are skipped (the run record reports them). The run's
@@ -55,6 +57,10 @@ TickImages readTickImages(const std::string& path) {
     } else if (event.channel == channels::kObstacleMap) {
       beft::obstacle_map_t map{};
       if (wire::guardedDecode(event.data.data(), event.data.size(), map).ok()) images.maps[map.tick] = std::move(map);
+    } else if (event.channel == channels::kObstacleMapChanges) {
+      beft::obstacle_map_changes_t changes{};
+      if (wire::guardedDecode(event.data.data(), event.data.size(), changes).ok())
+        images.map_changes[changes.tick] = std::move(changes);
     }
   }
   return images;
@@ -74,12 +80,22 @@ report::RunRecord recordUpTo(const report::RunRecord& full, int64_t tick, double
   keepUntil(part.weights);
   keepUntil(part.tasks);
   part.obstacle_map.reset();
+  // The map of the tick: its keyframe with its changes, or the newest map before.
+  auto changes_it = images.map_changes.upper_bound(tick);
   auto map_it = images.maps.upper_bound(tick);
-  if (map_it != images.maps.begin()) {
-    try {
-      part.obstacle_map = planners::decodeObstacleMap(std::prev(map_it)->second);
-    } catch (const std::exception&) {
+  try {
+    if (changes_it != images.map_changes.begin()) {
+      const auto& changes = std::prev(changes_it)->second;
+      const auto keyframe = images.maps.find(changes.keyframe_tick);
+      if (keyframe != images.maps.end()) {
+        part.obstacle_map = keyframe->second.tick == changes.tick
+                                ? planners::decodeObstacleMap(keyframe->second)
+                                : *planners::ObstacleMapAssembler().mapOf(keyframe->second, &changes);
+        return part;
+      }
     }
+    if (map_it != images.maps.begin()) part.obstacle_map = planners::decodeObstacleMap(std::prev(map_it)->second);
+  } catch (const std::exception&) {
   }
   return part;
 }

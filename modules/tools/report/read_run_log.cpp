@@ -2,6 +2,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 
 
@@ -9,6 +10,7 @@
 #include <beft/dynamic_weights_t.hpp>
 #include <beft/hypotheses_t.hpp>
 #include <beft/hypothesis_changes_t.hpp>
+#include <beft/obstacle_map_changes_t.hpp>
 #include <beft/obstacle_map_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/run_status_t.hpp>
@@ -19,6 +21,7 @@
 #include "guarded_decode.hpp"
 #include "hypothesis_changes.hpp"
 #include "log_reader.hpp"
+#include "obstacle_map_changes.hpp"
 #include "run_identity.hpp"
 #include "run_record.hpp"
 
@@ -82,12 +85,14 @@ class RecordBuilder {
     else if (channel == channels::kDynamicWeights) ok = addWeights(event);
     else if (channel == channels::kTaskStack) ok = addTaskStack(event);
     else if (channel == channels::kObstacleMap) ok = addObstacleMap(event);
+    else if (channel == channels::kObstacleMapChanges) ok = addObstacleMapChanges(event);
     else if (channel == channels::kStopRequest) ok = addStatus(event, record_.stop_reason);
     else if (channel == channels::kRunStatus) ok = addStatus(event, record_.run_status);
     if (!ok) ++record_.rejected[channel];
   }
 
   void finish() {
+    finishObstacleMap();
     // Ticks in order, the last message of a tick wins (a re-sent tick).
     std::stable_sort(record_.robot.begin(), record_.robot.end(),
                      [](const RobotSample& a, const RobotSample& b) { return a.tick < b.tick; });
@@ -221,15 +226,34 @@ class RecordBuilder {
     return true;
   }
 
+  // The map is made once, at the end: the last keyframe with the last changes.
   bool addObstacleMap(const wire::LogEvent& event) {
     obstacle_map_t message{};
     if (!decode(event, message)) return false;
-    try {
-      record_.obstacle_map = planners::decodeObstacleMap(message);
-    } catch (const planners::ObstacleMapError&) {
-      return false;
-    }
+    const int64_t tick = message.tick;
+    map_keyframes_[tick] = std::move(message);
+    if (map_keyframes_.size() > 4) map_keyframes_.erase(map_keyframes_.begin());
     return true;
+  }
+  bool addObstacleMapChanges(const wire::LogEvent& event) {
+    obstacle_map_changes_t message{};
+    if (!decode(event, message)) return false;
+    last_map_changes_ = std::move(message);
+    return true;
+  }
+  void finishObstacleMap() {
+    if (map_keyframes_.empty()) return;
+    const obstacle_map_t& newest = map_keyframes_.rbegin()->second;
+    try {
+      const auto keyframe = last_map_changes_ ? map_keyframes_.find(last_map_changes_->keyframe_tick)
+                                              : map_keyframes_.end();
+      if (keyframe != map_keyframes_.end() && last_map_changes_->tick >= newest.tick)
+        record_.obstacle_map = *planners::ObstacleMapAssembler().mapOf(keyframe->second, &*last_map_changes_);
+      else
+        record_.obstacle_map = planners::decodeObstacleMap(newest);
+    } catch (const planners::ObstacleMapError&) {
+      ++record_.rejected[channels::kObstacleMap.name];
+    }
   }
 
   bool addStatus(const wire::LogEvent& event, std::string& into) {
@@ -241,6 +265,8 @@ class RecordBuilder {
 
   RunRecord& record_;
   std::optional<hypotheses_t> keyframe_;  // the last HYPOTHESES
+  std::map<int64_t, obstacle_map_t> map_keyframes_;  // the last OBSTACLE_MAPs by tick
+  std::optional<obstacle_map_changes_t> last_map_changes_;
 };
 
 }  // namespace

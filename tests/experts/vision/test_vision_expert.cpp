@@ -18,6 +18,7 @@
 #include "ray_caster.hpp"
 #include "scene_builders.hpp"
 #include "scene_geometry.hpp"
+#include "obstacle_map_changes.hpp"
 #include "vision_expert.hpp"
 
 using namespace beft;
@@ -26,8 +27,10 @@ namespace {
 
 struct Collected : expert::Output {
   std::map<std::string, std::vector<uint8_t>> latest;
+  std::optional<obstacle_map_t> keyframe;  // the last whole map published
   void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
     latest[channel] = bytes;
+    if (channel == channels::kObstacleMap) keyframe = get<obstacle_map_t>(channel);
   }
   template <typename Message>
   Message get(const std::string& channel) const {
@@ -37,6 +40,16 @@ struct Collected : expert::Output {
     return m;
   }
 };
+
+// The map of the tick last fired: the last keyframe published (or, when the
+// expert resumed, the one it resumed from) with the changes of the tick.
+planners::ObstacleCells publishedMap(const Collected& out, const obstacle_map_t* resumed_from = nullptr) {
+  const auto changes = out.get<obstacle_map_changes_t>(channels::kObstacleMapChanges);
+  const obstacle_map_t* keyframe = out.keyframe ? &*out.keyframe : resumed_from;
+  if (keyframe == nullptr || keyframe->tick != changes.keyframe_tick)
+    throw std::runtime_error("no keyframe of tick " + std::to_string(changes.keyframe_tick));
+  return *planners::ObstacleMapAssembler().mapOf(*keyframe, &changes);
+}
 
 template <typename Message>
 bool feed(expert::Expert& e, const std::string& channel, const Message& m) {
@@ -101,7 +114,7 @@ TEST(VisionExpert, FiresOnlyWithTheInputsOfItsTick) {
   const auto percepts = out.get<visual_percepts_t>(channels::kVision);
   ASSERT_EQ(percepts.num_percepts, 1);
   EXPECT_DOUBLE_EQ(percepts.percepts[0].occlusion, 0.0);
-  const auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  const auto map = publishedMap(out);
   EXPECT_EQ(map.width, 200);
   EXPECT_EQ(map.height, 100);
 }
@@ -122,7 +135,8 @@ TEST(VisionExpert, ResumesTheMapOfAPreviousRunAndIgnoresItsOwnEcho) {
   feedTick(vision, 42);
   Collected out;
   ASSERT_TRUE(vision.fire(firingFor(42, 1), out).ok);
-  auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  EXPECT_EQ(out.latest.count(channels::kObstacleMap), 0u);  // the resumed keyframe still holds
+  auto map = publishedMap(out, &previous);
   EXPECT_EQ(map.at(150, 20), obstacle_map_t::CELL_OCCUPIED);  // remembered
   int person_cells = 0;  // its near side, x = 5.7
   for (int row = 47; row <= 53; ++row) person_cells += map.at(57, row) == obstacle_map_t::CELL_OCCUPIED;
@@ -133,7 +147,7 @@ TEST(VisionExpert, ResumesTheMapOfAPreviousRunAndIgnoresItsOwnEcho) {
   ASSERT_TRUE(feed(vision, channels::kObstacleMap, planners::makeObstacleMap(before, obstacle_map_t::ENCODING_RLE)));
   feedTick(vision, 43);
   ASSERT_TRUE(vision.fire(firingFor(43, 2), out).ok);
-  map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  map = publishedMap(out, &previous);
   EXPECT_EQ(map.at(10, 90), obstacle_map_t::CELL_UNKNOWN);
 }
 
@@ -151,7 +165,7 @@ TEST(VisionExpert, AMapFromAnEarlierRunIsNotResumed) {
   feedTick(vision, 0);
   Collected out;
   ASSERT_TRUE(vision.fire(firingFor(0, 1), out).ok);
-  const auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  const auto map = publishedMap(out);
   EXPECT_EQ(map.at(10, 90), obstacle_map_t::CELL_UNKNOWN);
 }
 
@@ -167,7 +181,7 @@ TEST(VisionExpert, AMapForAnotherGridIsNotResumed) {
   feedTick(vision, 5);
   Collected out;
   ASSERT_TRUE(vision.fire(firingFor(5, 1), out).ok);
-  const auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  const auto map = publishedMap(out);
   EXPECT_EQ(map.width, 200);
   EXPECT_EQ(map.at(10, 90), obstacle_map_t::CELL_UNKNOWN);
 }
@@ -194,7 +208,7 @@ TEST(VisionExpert, ABadDepthFrameFailsTheFiringAndTheNextTickWorks) {
   feedTick(vision, 1);
   ASSERT_TRUE(vision.fire(firingFor(1, 2), out).ok);
   EXPECT_EQ(out.get<visual_percepts_t>(channels::kVision).num_percepts, 1);
-  EXPECT_EQ(planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap)).width, 200);
+  EXPECT_EQ(publishedMap(out).width, 200);
 }
 
 // A contact of the platform enters the map like a bumper: the touched cells
@@ -207,14 +221,14 @@ TEST(VisionExpert, AContactEntersTheMapAndNoViewClearsIt) {
   feedTick(vision, 0, false, false, std::make_pair(4.0, 5.0));
   Collected out;
   ASSERT_TRUE(vision.fire(firingFor(0, 1), out).ok);
-  auto map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  auto map = publishedMap(out);
   EXPECT_EQ(map.at(40, 50), obstacle_map_t::CELL_OCCUPIED);  // (4.05, 5.05): touched
   // Ticks later, no contact, the same floor in view: still occupied.
   for (int64_t tick = 1; tick <= 3; ++tick) {
     feedTick(vision, tick);
     ASSERT_TRUE(vision.fire(firingFor(tick, tick + 1), out).ok);
   }
-  map = planners::decodeObstacleMap(out.get<obstacle_map_t>(channels::kObstacleMap));
+  map = publishedMap(out);
   EXPECT_EQ(map.at(40, 50), obstacle_map_t::CELL_OCCUPIED);
   EXPECT_EQ(map.at(39, 49), obstacle_map_t::CELL_OCCUPIED);  // (3.95, 4.95): within 0.15 m too
   EXPECT_EQ(map.at(40, 52), obstacle_map_t::CELL_OCCUPIED);  // (4.05, 5.25): across the motion, within 0.25 m
@@ -251,7 +265,7 @@ TEST(VisionExpert, CompressedFramesGiveTheOutputsOfRawOnes) {
     Collected raw_out, compressed_out;
     ASSERT_TRUE(from_raw.fire(firingFor(tick, tick + 1), raw_out).ok);
     ASSERT_TRUE(from_compressed.fire(firingFor(tick, tick + 1), compressed_out).ok);
-    ASSERT_EQ(raw_out.latest.size(), 2u);
+    ASSERT_EQ(raw_out.latest.size(), tick == 0 ? 3u : 2u);  // and the whole map at tick 0
     EXPECT_EQ(compressed_out.latest, raw_out.latest) << "tick " << tick;
   }
 }
@@ -292,4 +306,42 @@ TEST(VisionExpert, ADamagedCompressedFrameIsRefusedAndCountedAndTheTickWaits) {
   Collected out;
   ASSERT_TRUE(vision.fire(firingFor(3, 1), out).ok);
   EXPECT_EQ(out.get<visual_percepts_t>(channels::kVision).num_percepts, 1);
+}
+
+// The whole map at keyframe ticks, at every tick the rectangle changed since;
+// the two give, at every tick, the map an expert sending the whole map every
+// tick sends. A restart from the keyframe and the changes goes on as if
+// nothing had happened.
+TEST(VisionExpert, KeyframesAndChangesGiveTheMapOfEveryTick) {
+  vision::VisionExpert every_tick, keyframes, restarted;
+  every_tick.startUp({{"map_keyframe_ticks", "1"}});
+  keyframes.startUp({{"map_keyframe_ticks", "4"}});
+  restarted.startUp({{"map_keyframe_ticks", "4"}});
+  Collected whole, changed, after_restart;
+  for (int64_t tick = 0; tick < 11; ++tick) {
+    feedTick(every_tick, tick, true);
+    feedTick(keyframes, tick, true);
+    whole.latest.clear();
+    changed.latest.clear();
+    ASSERT_TRUE(every_tick.fire(firingFor(tick, tick + 1), whole).ok);
+    ASSERT_TRUE(keyframes.fire(firingFor(tick, tick + 1), changed).ok);
+    EXPECT_EQ(changed.latest.count(channels::kObstacleMap), tick % 4 == 0 ? 1u : 0u) << tick;
+    const auto changes = changed.get<obstacle_map_changes_t>(channels::kObstacleMapChanges);
+    EXPECT_EQ(changes.keyframe_tick, tick - tick % 4);
+    if (tick % 4 == 0) EXPECT_EQ(changes.width, 0);  // nothing changed since its own keyframe
+    EXPECT_EQ(publishedMap(changed).cells, publishedMap(whole).cells) << "tick " << tick;
+    if (tick == 6) {
+      // Killed after tick 6: restarted from the blackboard's keyframe (tick 4) and changes (tick 6).
+      ASSERT_TRUE(feed(restarted, channels::kObstacleMap, *changed.keyframe));
+      ASSERT_TRUE(feed(restarted, channels::kObstacleMapChanges, changes));
+    }
+    if (tick > 6) {
+      feedTick(restarted, tick, true);
+      after_restart.latest.clear();
+      ASSERT_TRUE(restarted.fire(firingFor(tick, tick + 1), after_restart).ok);
+      EXPECT_EQ(after_restart.latest.at(channels::kObstacleMapChanges),
+                changed.latest.at(channels::kObstacleMapChanges)) << "tick " << tick;
+      if (tick % 4 == 0) EXPECT_EQ(after_restart.latest.at(channels::kObstacleMap), changed.latest.at(channels::kObstacleMap));
+    }
+  }
 }

@@ -8,6 +8,7 @@
 #include "expert.hpp"
 #include "hypotheses_input.hpp"
 #include "hypothesis_changes.hpp"
+#include "obstacle_map_input.hpp"
 #include "scene_input.hpp"
 
 using namespace beft;
@@ -186,4 +187,40 @@ TEST(HypothesesInput, LogsFromBeforeChangesGiveEachTicksOwnList) {
   const uint8_t garbage[3] = {1, 2, 3};
   EXPECT_FALSE(hypotheses.receive(garbage, 3));
   EXPECT_EQ(hypotheses.latest()->tick, 2);
+}
+
+TEST(ObstacleMapInput, TheKeyframeWithEachTicksChangesIsThatTicksMap) {
+  PortOwner owner;
+  expert::ObstacleMapInput map(owner);
+  EXPECT_TRUE(map.empty());
+  planners::ObstacleCells cells;
+  cells.width = 20;
+  cells.height = 10;
+  cells.cells.assign(200, obstacle_map_t::CELL_UNKNOWN);
+  const obstacle_map_t keyframe = planners::makeObstacleMap(cells, obstacle_map_t::ENCODING_RLE_ZSTD, 0, 0);
+  ASSERT_TRUE(deliver(owner, channels::kObstacleMap.name, keyframe));
+  planners::CellRect changed;
+  ASSERT_TRUE(deliver(owner, channels::kObstacleMapChanges.name,
+                      planners::makeMapChanges(cells.cells, 20, 10, changed, 0, 0, 0)));
+  cells.cells[3 * 20 + 7] = obstacle_map_t::CELL_OCCUPIED;
+  changed.include(7, 3);
+  ASSERT_TRUE(deliver(owner, channels::kObstacleMapChanges.name,
+                      planners::makeMapChanges(cells.cells, 20, 10, changed, 0, 100000, 1)));
+  const auto at_0 = map.ofTick(0);
+  ASSERT_NE(at_0, nullptr);
+  EXPECT_EQ(at_0->at(7, 3), obstacle_map_t::CELL_UNKNOWN);
+  const auto at_1 = map.ofTick(1);
+  ASSERT_NE(at_1, nullptr);
+  EXPECT_EQ(at_1->cells, cells.cells);
+  const uint64_t version = map.version();
+  EXPECT_EQ(map.latest(), at_1);  // the same map, not made again
+  EXPECT_EQ(map.version(), version);
+  // Tick 2's changes are missing: ask for them.
+  EXPECT_TRUE(map.lacksTick(2));
+  EXPECT_EQ(map.lackingChannel(2), channels::kObstacleMapChanges.name);
+  // Changes that do not fit the map are refused with what is wrong.
+  auto bad = planners::makeMapChanges(cells.cells, 20, 10, changed, 0, 200000, 2);
+  bad.x0 = 20;  // one column past the map
+  ASSERT_TRUE(deliver(owner, channels::kObstacleMapChanges.name, bad));
+  EXPECT_THROW(map.ofTick(2), planners::ObstacleMapError);
 }
