@@ -32,12 +32,16 @@ Executor::Executor(ExecutorParameters parameters)
     : parameters_(std::move(parameters)), next_request_id_(parameters_.first_request_id) {}
 
 void Executor::setObstacleMap(planners::ObstacleCells map) {
-  if (map_ && map_->width == map.width && map_->height == map.height &&
-      map_->resolution == map.resolution && map_->origin_x == map.origin_x &&
-      map_->origin_y == map.origin_y && map_->cells == map.cells)
-    return;
-  map_ = std::move(map);
-  map_changed_ = true;
+  setObstacleMap(std::make_shared<const planners::ObstacleCells>(std::move(map)));
+}
+
+void Executor::setObstacleMap(std::shared_ptr<const planners::ObstacleCells> map) {
+  if (map == nullptr || map == map_) return;
+  const bool same = map_ && map_->width == map->width && map_->height == map->height &&
+                    map_->resolution == map->resolution && map_->origin_x == map->origin_x &&
+                    map_->origin_y == map->origin_y && map_->cells == map->cells;
+  map_ = std::move(map);  // the same cells: kept all the same, so the next one compares at once
+  if (!same) map_changed_ = true;
 }
 
 void Executor::onPlanResult(const beft::plan_result_t& result) {

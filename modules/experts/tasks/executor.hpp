@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,6 +64,8 @@ class Executor {
   }
   // The latest obstacle map; a change that blocks the current path replans.
   void setObstacleMap(planners::ObstacleCells map);
+  // The same, shared: a map of two million cells is not copied.
+  void setObstacleMap(std::shared_ptr<const planners::ObstacleCells> map);
   // An answer of the planner service; kept only if it answers the request in flight.
   void onPlanResult(const beft::plan_result_t& result);
 
@@ -140,7 +143,7 @@ class Executor {
   ExecutorParameters parameters_;
   std::optional<beft::robot_state_t> robot_;
   std::map<std::string, std::pair<double, double>> object_positions_;
-  std::optional<planners::ObstacleCells> map_;
+  std::shared_ptr<const planners::ObstacleCells> map_;
   bool map_changed_ = false;
   std::map<int64_t, Run> runs_;
   int64_t next_request_id_;

@@ -139,7 +139,7 @@ void TasksExpert::updateExecutorInputs(const expert::Firing& firing) {
     // Decoded once per change: an unchanged map keeps its version.
     if (const auto map = map_.latest(); map != nullptr && map_.version() != map_version_) {
       map_version_ = map_.version();
-      executor_->setObstacleMap(*map);
+      executor_->setObstacleMap(map);
     }
   } catch (const std::exception& e) {
     if (!map_warned_) log::warn("OBSTACLE_MAP ignored: ", e.what());
