@@ -206,7 +206,9 @@ INSTANTIATE_TEST_SUITE_P(EveryKindOfProcess, KilledProcess,
                          ::testing::Values(std::make_pair("fusion", 120), std::make_pair("exploration", 150),
                                            std::make_pair("world", 90), std::make_pair("arbiter", 170),
                                            std::make_pair("planner", 60), std::make_pair("blackboard", 100),
-                                           std::make_pair("tasks", 200)),
+                                           std::make_pair("tasks", 200),
+                                           // Between keyframes: it resumes the map's changes since tick 100.
+                                           std::make_pair("vision", 150)),
                          [](const auto& info) { return std::string(info.param.first); });
 
 TEST(KilledRecorder, StopsTheRunAndMarksItsLogIncomplete) {

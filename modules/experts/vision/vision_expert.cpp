@@ -110,18 +110,9 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
       // Expected pixels only change with the camera or the objects' shapes and poses.
       if (expected_pose_.width == 0 || !samePose(*instance, expected_pose_) || !sameSolids(*scene, expected_scene_)) {
         const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
-        // Counted without the image's borders and range: what falls outside
-        // them counts as occluded (spec/model.md, O_v).
-        // Objects the real image cannot show at all (outside it on the
-        // wider plane) are out of view: 0 expected, O_v = 100, not counted.
-        const camera::Camera real = camera::cameraOfFrame(*instance);
-        const camera::Camera wide = camera::withoutViewLimits(real);
-        camera::RayCaster::PixelRect image;
-        image.u0 = (wide.intrinsics.width - real.intrinsics.width) / 2;
-        image.v0 = (wide.intrinsics.height - real.intrinsics.height) / 2;
-        image.u1 = image.u0 + real.intrinsics.width - 1;
-        image.v1 = image.v0 + real.intrinsics.height - 1;
-        expected_ = ray_caster_.expectedPixelsPerObject(solids, wide, &image);
+        // Objects the real image cannot show at all are out of view: 0
+        // expected, O_v = 100, not counted.
+        expected_ = ray_caster_.expectedPixelsInView(solids, camera::cameraOfFrame(*instance));
         expected_pose_ = poseOf(*instance);
         expected_scene_ = *scene;
       }

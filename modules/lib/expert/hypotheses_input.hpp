@@ -11,17 +11,16 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 
-#include "ports.hpp"
+#include "keyframed_input.hpp"
 
 namespace beft::expert {
 
-class HypothesesInput : public InputPortBase {
+class HypothesesInput
+    : public KeyframedInput<hypotheses_t, hypothesis_changes_t, &hypothesis_changes_t::keyframe_tick> {
  public:
-  explicit HypothesesInput(Expert& owner, std::size_t capacity = 4);
-
-  bool receive(const void* data, int size) override;  // a HYPOTHESES message
+  explicit HypothesesInput(Expert& owner, std::size_t capacity = 4)
+      : KeyframedInput(owner, channels::kHypotheses, channels::kHypothesisChanges, capacity) {}
 
   // The whole list of tick k, or null if what makes it has not arrived. The
   // pointer holds until the next call.
@@ -29,22 +28,14 @@ class HypothesesInput : public InputPortBase {
   bool has(int64_t tick) const { return ofTick(tick) != nullptr; }
   // The whole list of the newest tick that can be made, or null.
   const hypotheses_t* latest() const;
-  bool empty() const { return keyframes_.empty() && changes_.empty(); }
 
   bool lacksTick(int64_t tick) const override { return !empty() && !has(tick); }
-  // HYPOTHESIS_CHANGES while the changes of the tick are missing, else HYPOTHESES.
-  std::string lackingChannel(int64_t tick) const override;
 
  private:
-  const blackboard::ChannelHistory<hypotheses_t>::Entry* keyframeOfTick(int64_t tick) const;
-
-  blackboard::ChannelHistory<hypotheses_t> keyframes_;
   // The list last made: made again only for another tick or keyframe.
   mutable hypotheses_t whole_{};
   mutable int64_t whole_tick_ = -1;
   mutable uint64_t whole_keyframe_sequence_ = 0;
-  // Never lacking on its own: this port says when changes are missing.
-  TickInput<hypothesis_changes_t> changes_;
 };
 
 }  // namespace beft::expert

@@ -12,18 +12,17 @@
 
 #include <cstdint>
 #include <memory>
-#include <string>
 
+#include "keyframed_input.hpp"
 #include "obstacle_map_changes.hpp"
-#include "ports.hpp"
 
 namespace beft::expert {
 
-class ObstacleMapInput : public InputPortBase {
+class ObstacleMapInput
+    : public KeyframedInput<obstacle_map_t, obstacle_map_changes_t, &obstacle_map_changes_t::keyframe_tick> {
  public:
-  explicit ObstacleMapInput(Expert& owner, std::size_t capacity = 2);
-
-  bool receive(const void* data, int size) override;  // an OBSTACLE_MAP message
+  explicit ObstacleMapInput(Expert& owner, std::size_t capacity = 2)
+      : KeyframedInput(owner, channels::kObstacleMap, channels::kObstacleMapChanges, capacity) {}
 
   // The map of tick k, or null if what makes it has not arrived. Throws
   // planners::ObstacleMapError if the messages do not make a map.
@@ -32,25 +31,17 @@ class ObstacleMapInput : public InputPortBase {
   std::shared_ptr<const planners::ObstacleCells> latest() const;
   // Grows whenever the map last returned differs from the one before.
   uint64_t version() const { return version_; }
-  bool has(int64_t tick) const;
-  bool empty() const { return keyframes_.empty() && changes_.empty(); }
+  bool has(int64_t tick) const { return partsOfTick(tick).keyframe != nullptr; }
 
   bool lacksTick(int64_t tick) const override { return !empty() && !has(tick); }
-  // OBSTACLE_MAP_CHANGES while the changes of the tick are missing, else OBSTACLE_MAP.
-  std::string lackingChannel(int64_t tick) const override;
 
  private:
-  const blackboard::ChannelHistory<obstacle_map_t>::Entry* keyframeOfTick(int64_t tick) const;
-
-  blackboard::ChannelHistory<obstacle_map_t> keyframes_;
   mutable planners::ObstacleMapAssembler assembler_;
   // The map last made, and what it was made of.
   mutable std::shared_ptr<const planners::ObstacleCells> made_;
   mutable uint64_t made_from_keyframe_ = 0;  // entry sequence
   mutable obstacle_map_changes_t made_from_changes_{};
   mutable uint64_t version_ = 0;
-  // Never lacking on its own: this port says when changes are missing.
-  TickInput<obstacle_map_changes_t> changes_;
 };
 
 }  // namespace beft::expert

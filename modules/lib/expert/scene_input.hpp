@@ -11,17 +11,15 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 
-#include "ports.hpp"
+#include "keyframed_input.hpp"
 
 namespace beft::expert {
 
-class SceneInput : public InputPortBase {
+class SceneInput : public KeyframedInput<scene_objects_t, scene_version_t, &scene_version_t::scene_tick> {
  public:
-  explicit SceneInput(Expert& owner, std::size_t capacity = 4);
-
-  bool receive(const void* data, int size) override;  // a GT_OBJECTS message
+  explicit SceneInput(Expert& owner, std::size_t capacity = 4)
+      : KeyframedInput(owner, channels::kGroundTruth, channels::kSceneVersion, capacity) {}
 
   // The ground truth in force at tick k, or null if it has not arrived. Its
   // utime and tick are tick k's (the objects keep the time they were last
@@ -31,23 +29,16 @@ class SceneInput : public InputPortBase {
   bool has(int64_t tick) const { return ofTick(tick) != nullptr; }
   // The newest GT_OBJECTS message kept, or null.
   const scene_objects_t* latest() const;
-  bool empty() const { return scenes_.empty(); }
 
+  // The ground truth is needed from the first tick on.
   bool lacksTick(int64_t tick) const override { return !has(tick); }
-  // GT_VERSION while the version of the tick is unknown, else GT_OBJECTS.
-  std::string lackingChannel(int64_t tick) const override;
 
  private:
-  const blackboard::ChannelHistory<scene_objects_t>::Entry* entryOfTick(int64_t tick) const;
-
-  blackboard::ChannelHistory<scene_objects_t> scenes_;
   // The message in force restamped for a later tick: copied once per
   // message, restamped per tick.
   mutable scene_objects_t restamped_{};
   mutable int64_t restamped_from_tick_ = -1;
   mutable uint64_t restamped_from_sequence_ = 0;
-  // Never lacking on its own: this port says when a version is missing.
-  TickInput<scene_version_t> versions_;
 };
 
 }  // namespace beft::expert

@@ -11,6 +11,7 @@
 
 #include "channels.hpp"
 #include "control_messages.hpp"
+#include "encoded_stamp.hpp"
 #include "guarded_decode.hpp"
 #include "log.hpp"
 #include "log_reader.hpp"
@@ -87,12 +88,12 @@ void PlannerProcess::onMessage(const transport::Message& message) {
     if (keyframe ? !wire::validFrom<beft::obstacle_map_t>(channel, message.data, message.size)
                  : !wire::validFrom<beft::obstacle_map_changes_t>(channel, message.data, message.size))
       return;
-    // utime, the first field of both, right after the 8-byte fingerprint (big-endian).
-    int64_t utime = 0;
-    for (std::size_t i = 8; i < 16; ++i) utime = static_cast<int64_t>((static_cast<uint64_t>(utime) << 8) | message.data[i]);
+    KeptMessage kept_message{0, 0, std::vector<uint8_t>(message.data, message.data + message.size)};
+    wire::encodedUtime(message.data, message.size, kept_message.utime);
+    wire::encodedTick(message.data, message.size, kept_message.tick);
     auto& kept = keyframe ? recent_keyframes_ : recent_changes_;
-    while (!kept.empty() && kept.back().first >= utime) kept.pop_back();  // a tick sent again
-    kept.emplace_back(utime, std::vector<uint8_t>(message.data, message.data + message.size));
+    while (!kept.empty() && kept.back().utime >= kept_message.utime) kept.pop_back();  // a tick sent again
+    kept.push_back(std::move(kept_message));
     if (kept.size() > (keyframe ? kKeyframesKept : kChangesKept)) kept.pop_front();
   } else if (channel == channels::kPlanRequest) {
     beft::plan_request_t request{};
@@ -108,31 +109,31 @@ void PlannerProcess::onMessage(const transport::Message& message) {
 std::shared_ptr<const planners::ObstacleCells> PlannerProcess::mapFor(const beft::plan_request_t& request) {
   // Of the newest tick not after the request (or the oldest kept): the
   // changes of that tick on their keyframe, or a keyframe of that tick.
-  auto newestUpTo = [&request](const auto& kept) -> const std::pair<int64_t, std::vector<uint8_t>>* {
+  auto newestUpTo = [&request](const std::deque<KeptMessage>& kept) -> const KeptMessage* {
     if (kept.empty()) return nullptr;
     for (auto it = kept.rbegin(); it != kept.rend(); ++it)
-      if (it->first <= request.utime) return &*it;
+      if (it->utime <= request.utime) return &*it;
     return &kept.front();
   };
-  const auto* changes_bytes = newestUpTo(recent_changes_);
-  const auto* keyframe_bytes = newestUpTo(recent_keyframes_);
+  const KeptMessage* changes_bytes = newestUpTo(recent_changes_);
+  const KeptMessage* keyframe_bytes = newestUpTo(recent_keyframes_);
   if (keyframe_bytes == nullptr) return nullptr;
-  beft::obstacle_map_t keyframe{};
-  if (changes_bytes != nullptr && changes_bytes->first >= keyframe_bytes->first) {
-    beft::obstacle_map_changes_t changes{};
-    if (!wire::guardedDecode(changes_bytes->second.data(), changes_bytes->second.size(), changes).ok())
+  beft::obstacle_map_changes_t changes{};
+  const bool with_changes = changes_bytes != nullptr && changes_bytes->utime >= keyframe_bytes->utime;
+  if (with_changes) {
+    if (!wire::guardedDecode(changes_bytes->bytes.data(), changes_bytes->bytes.size(), changes).ok())
       throw planners::ObstacleMapError("not an obstacle_map_changes_t");
-    for (const auto& [utime, bytes] : recent_keyframes_) {
-      beft::obstacle_map_t candidate{};
-      if (wire::guardedDecode(bytes.data(), bytes.size(), candidate).ok() && candidate.tick == changes.keyframe_tick)
-        return assembler_.mapOf(candidate, &changes);
-    }
-    throw planners::ObstacleMapError("no keyframe of tick " + std::to_string(changes.keyframe_tick) +
-                                     " for the changes of tick " + std::to_string(changes.tick));
+    keyframe_bytes = nullptr;
+    for (const auto& kept : recent_keyframes_)
+      if (kept.tick == changes.keyframe_tick) keyframe_bytes = &kept;
+    if (keyframe_bytes == nullptr)
+      throw planners::ObstacleMapError("no keyframe of tick " + std::to_string(changes.keyframe_tick) +
+                                       " for the changes of tick " + std::to_string(changes.tick));
   }
-  if (!wire::guardedDecode(keyframe_bytes->second.data(), keyframe_bytes->second.size(), keyframe).ok())
+  beft::obstacle_map_t keyframe{};
+  if (!wire::guardedDecode(keyframe_bytes->bytes.data(), keyframe_bytes->bytes.size(), keyframe).ok())
     throw planners::ObstacleMapError("not an obstacle_map_t");
-  return assembler_.mapOf(keyframe, nullptr);
+  return assembler_.mapOf(keyframe, with_changes ? &changes : nullptr);
 }
 
 void PlannerProcess::useMap(const std::shared_ptr<const planners::ObstacleCells>& map) {

@@ -59,8 +59,13 @@ class PlannerProcess : public service::Service {
   // Received as bytes, decoded when a request needs them; oldest first.
   static constexpr std::size_t kChangesKept = 64;  // a few seconds of ticks
   static constexpr std::size_t kKeyframesKept = 4;
-  std::deque<std::pair<int64_t, std::vector<uint8_t>>> recent_keyframes_;  // OBSTACLE_MAP by simulated time [us]
-  std::deque<std::pair<int64_t, std::vector<uint8_t>>> recent_changes_;    // OBSTACLE_MAP_CHANGES by simulated time
+  struct KeptMessage {
+    int64_t utime;  // simulated time [us]
+    int64_t tick;
+    std::vector<uint8_t> bytes;
+  };
+  std::deque<KeptMessage> recent_keyframes_;  // OBSTACLE_MAP
+  std::deque<KeptMessage> recent_changes_;    // OBSTACLE_MAP_CHANGES
   planners::ObstacleMapAssembler assembler_;
   std::shared_ptr<const planners::ObstacleCells> map_in_use_;  // the last one given to the planner
   bool arbiter_waiting_ = false;

@@ -5,6 +5,7 @@
 #include <beft/camera_frame_t.hpp>
 
 #include "channels.hpp"
+#include "encoded_stamp.hpp"
 #include "run_identity.hpp"
 
 namespace beft::record {
@@ -13,14 +14,11 @@ namespace {
 
 // The tick of an encoded camera_frame_t: after its fingerprint and utime.
 bool tickOfFrame(const uint8_t* data, std::size_t size, int64_t& tick) {
-  constexpr std::size_t kTickEnd = 8 + 8 + 8;
-  if (data == nullptr || size < kTickEnd) return false;
-  uint64_t fingerprint = 0, value = 0;
+  if (data == nullptr || size < 8) return false;
+  uint64_t fingerprint = 0;
   for (std::size_t i = 0; i < 8; ++i) fingerprint = (fingerprint << 8) | data[i];
   if (fingerprint != static_cast<uint64_t>(beft::camera_frame_t::getHash())) return false;
-  for (std::size_t i = 16; i < kTickEnd; ++i) value = (value << 8) | data[i];
-  tick = static_cast<int64_t>(value);
-  return true;
+  return wire::encodedTick(data, size, tick);
 }
 
 }  // namespace

@@ -451,6 +451,16 @@ std::vector<int> RayCaster::expectedPixelsPerObject(const SceneGeometry& scene, 
   return counts;
 }
 
+std::vector<int> RayCaster::expectedPixelsInView(const SceneGeometry& scene, const Camera& real) {
+  const Camera wide = withoutViewLimits(real);
+  PixelRect image;  // the real image on the wider plane
+  image.u0 = (wide.intrinsics.width - real.intrinsics.width) / 2;
+  image.v0 = (wide.intrinsics.height - real.intrinsics.height) / 2;
+  image.u1 = image.u0 + real.intrinsics.width - 1;
+  image.v1 = image.v0 + real.intrinsics.height - 1;
+  return expectedPixelsPerObject(scene, wide, &image);
+}
+
 RenderedFrame renderFrame(const SceneGeometry& scene, const Camera& camera, RenderMethod method) {
   RayCaster caster;
   RenderedFrame frame;

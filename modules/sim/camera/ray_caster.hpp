@@ -76,6 +76,10 @@ class RayCaster {
   };
   std::vector<int> expectedPixelsPerObject(const SceneGeometry& scene, const Camera& camera,
                                            const PixelRect* only_touching = nullptr);
+  // The same as the vision expert counts them (spec/model.md, O_v): without
+  // the image's borders and range (what falls outside them counts as
+  // occluded), and 0 for the objects the real image cannot show at all.
+  std::vector<int> expectedPixelsInView(const SceneGeometry& scene, const Camera& real);
 
  private:
   struct SolidFootprint;  // a solid's covered pixel rectangle and nearest depth

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "channels.hpp"
+#include "encoded_stamp.hpp"
 #include "log_reader.hpp"
 #include "message_check.hpp"
 
@@ -18,8 +19,8 @@ std::map<DataKey, std::vector<uint8_t>> dataMessages(const std::string& log_path
     if (!channels::isDataPlaneChannel(event.channel) ||
         !wire::MessageRules::beftTypes().checkForChannel(event.channel, event.data.data(), event.data.size()).ok())
       continue;
-    int64_t utime = 0;  // the first field after the 8-byte fingerprint
-    for (int i = 8; i < 16; ++i) utime = (utime << 8) | event.data[static_cast<std::size_t>(i)];
+    int64_t utime = 0;
+    wire::encodedUtime(event.data.data(), event.data.size(), utime);
     const int order = count[{event.channel, utime}]++;
     messages[{event.channel, utime, order}] = event.data;
   }

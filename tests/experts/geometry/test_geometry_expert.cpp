@@ -136,16 +136,9 @@ TEST(GeometryExpert, EveryObjectVisionCanReportHasAPercept) {
                                    uniform(-40, 30));
     camera::CameraIntrinsics intrinsics;
     intrinsics.fov_deg = trial % 3 == 0 ? 170 : 90;
-    const camera::Camera real = camera::cameraOnRobot(robot, intrinsics);
-    const camera::Camera wide = camera::withoutViewLimits(real);
-    camera::RayCaster::PixelRect image;
-    image.u0 = (wide.intrinsics.width - real.intrinsics.width) / 2;
-    image.v0 = (wide.intrinsics.height - real.intrinsics.height) / 2;
-    image.u1 = image.u0 + real.intrinsics.width - 1;
-    image.v1 = image.v0 + real.intrinsics.height - 1;
     camera::RayCaster caster;
     const std::vector<int> expected =
-        caster.expectedPixelsPerObject(camera::SceneGeometry::fromMessage(s), wide, &image);
+        caster.expectedPixelsInView(camera::SceneGeometry::fromMessage(s), camera::cameraOnRobot(robot, intrinsics));
     const auto out = geometry::estimateGeometry(s, robot);
     std::set<std::string> kept;
     for (const auto& p : out.percepts) kept.insert(p.object_id);
