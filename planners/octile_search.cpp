@@ -87,75 +87,107 @@ OctileSearchResult octileAStar(const GridMap& grid, GridCell start, GridCell goa
   return result;
 }
 
+OctileWavefront::OctileWavefront(const GridMap& grid, GridCell goal)
+    : width_(grid.width()), height_(grid.height()), padded_width_(grid.width() + 2) {
+  const size_t padded_cells = static_cast<size_t>(padded_width_) * (height_ + 2);
+  field_.assign(padded_cells, kInfinity);
+  done_.assign(padded_cells, 0);
+  if (grid.blocked(goal.x, goal.y)) return;  // nothing reachable: exhausted from the start
+  // The wavefront runs on a copy framed by a ring of blocked cells: no bounds
+  // check in the inner loop, and a move is a fixed index offset.
+  open_.assign(padded_cells, 0);
+  const std::vector<uint8_t>& cells = grid.cells();
+  for (int y = 0; y < height_; ++y) {
+    const uint8_t* row = cells.data() + static_cast<size_t>(y) * width_;
+    uint8_t* out = open_.data() + padded(0, y);
+    for (int x = 0; x < width_; ++x) out[x] = row[x] == 0;
+  }
+  for (int m = 0; m < 8; ++m) {
+    offset_[m] = kMoves[m].dx + kMoves[m].dy * padded_width_;
+    // A diagonal passes between the cells beside it; a straight move checks its target twice.
+    const bool diagonal = kMoves[m].dy != 0 && kMoves[m].dx != 0;
+    side_x_[m] = diagonal ? kMoves[m].dx : offset_[m];
+    side_y_[m] = diagonal ? kMoves[m].dy * padded_width_ : offset_[m];
+  }
+  const int32_t goal_index = padded(goal.x, goal.y);
+  field_[goal_index] = 0;
+  ring_[0].push_back(goal_index);
+  queued_ = 1;
+}
+
+// Every step costs at least 1, so expanding bucket k only fills later buckets
+// and the labels in bucket k are final when it is expanded.
+void OctileWavefront::expandNextBucket() {
+  const int64_t k = next_bucket_++;
+  std::vector<int32_t>& bucket = ring_[k & (kRing - 1)];
+  for (size_t i = 0; i < bucket.size(); ++i) {
+    const int32_t index = bucket[i];
+    // Skip cells finished already or since moved to an earlier bucket.
+    if (done_[index] || static_cast<int64_t>(field_[index]) != k) continue;
+    done_[index] = 1;
+    for (int m = 0; m < 8; ++m) {
+      // Moves are symmetric, so distances to the goal equal distances from it.
+      const int32_t next = index + offset_[m];
+      if (!(open_[next] & open_[index + side_x_[m]] & open_[index + side_y_[m]])) continue;
+      const double cost = field_[index] + kMoves[m].cost;
+      if (cost < field_[next]) {
+        field_[next] = cost;
+        ring_[static_cast<int64_t>(cost) & (kRing - 1)].push_back(next);
+        ++queued_;
+      }
+    }
+  }
+  queued_ -= bucket.size();
+  bucket.clear();
+}
+
+void OctileWavefront::growThroughBucket(int64_t last) {
+  while (queued_ > 0 && next_bucket_ <= last) expandNextBucket();
+}
+
+void OctileWavefront::growUntilFinal(GridCell cell) {
+  if (cell.x < 0 || cell.y < 0 || cell.x >= width_ || cell.y >= height_) {
+    growThroughBucket(std::numeric_limits<int64_t>::max());  // never reached
+    return;
+  }
+  const int32_t index = padded(cell.x, cell.y);
+  while (queued_ > 0 && !done_[index]) expandNextBucket();
+}
+
+bool OctileWavefront::isFinal(int x, int y) const {
+  if (x < 0 || y < 0 || x >= width_ || y >= height_) return false;
+  return done_[padded(x, y)] != 0 || queued_ == 0;
+}
+
+double OctileWavefront::value(int x, int y) const {
+  if (x < 0 || y < 0 || x >= width_ || y >= height_) return kInfinity;
+  return field_[padded(x, y)];
+}
+
+std::vector<double> OctileWavefront::values() const {
+  std::vector<double> out(static_cast<size_t>(width_) * height_);
+  for (int y = 0; y < height_; ++y)
+    std::copy_n(field_.data() + padded(0, y), width_, out.data() + static_cast<size_t>(y) * width_);
+  return out;
+}
+
 std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal) {
-  return octileDistanceField(grid, goal, GridCell{-1, -1}, kInfinity, kInfinity);  // no start: no bound
+  OctileWavefront wavefront(grid, goal);
+  wavefront.growThroughBucket(std::numeric_limits<int64_t>::max());
+  return wavefront.values();
 }
 
 std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal, GridCell start, double slack,
                                         double margin) {
-  const int w = grid.width();
-  const int h = grid.height();
-  std::vector<double> dist(static_cast<size_t>(w) * h, kInfinity);
-  if (grid.blocked(goal.x, goal.y)) return dist;
-  // The wavefront runs on a copy framed by a ring of blocked cells: no
-  // bounds check in the inner loop, and a move is a fixed index offset.
-  const int pw = w + 2;
-  const size_t padded_cells = static_cast<size_t>(pw) * (h + 2);
-  const auto padded = [pw](int x, int y) { return static_cast<int32_t>((y + 1) * pw + x + 1); };
-  std::vector<uint8_t> open(padded_cells, 0);  // 1 = free
-  const std::vector<uint8_t>& cells = grid.cells();
-  for (int y = 0; y < h; ++y) {
-    const uint8_t* row = cells.data() + static_cast<size_t>(y) * w;
-    uint8_t* out = open.data() + padded(0, y);
-    for (int x = 0; x < w; ++x) out[x] = row[x] == 0;
+  OctileWavefront wavefront(grid, goal);
+  wavefront.growUntilFinal(start);  // unreachable or outside: the whole field
+  const double to_start = wavefront.value(start.x, start.y);
+  if (std::isfinite(to_start) && wavefront.isFinal(start.x, start.y)) {
+    const double limit = slack * to_start + margin;
+    wavefront.growThroughBucket(limit >= 9e18 ? std::numeric_limits<int64_t>::max()
+                                              : static_cast<int64_t>(std::floor(limit)));
   }
-  int32_t offset[8], side_x[8], side_y[8];
-  for (int m = 0; m < 8; ++m) {
-    offset[m] = kMoves[m].dx + kMoves[m].dy * pw;
-    // A diagonal passes between the cells beside it; a straight move checks its target twice.
-    side_x[m] = kMoves[m].dy != 0 && kMoves[m].dx != 0 ? kMoves[m].dx : offset[m];
-    side_y[m] = kMoves[m].dy != 0 && kMoves[m].dx != 0 ? kMoves[m].dy * pw : offset[m];
-  }
-  std::vector<double> field(padded_cells, kInfinity);
-  // Dial's algorithm: buckets one cell wide. Every step costs at least 1, so
-  // expanding bucket k only fills later buckets and the labels in bucket k
-  // are final when it is expanded. A label lies within sqrt(2) of its
-  // parent's, so a ring of 4 buckets suffices.
-  constexpr int kRing = 4;
-  std::vector<std::vector<int32_t>> ring(kRing);
-  std::vector<uint8_t> done(padded_cells, 0);
-  const int32_t goal_index = padded(goal.x, goal.y);
-  field[goal_index] = 0;
-  ring[0].push_back(goal_index);
-  size_t queued = 1;
-  const int32_t start_index = grid.inside(start.x, start.y) ? padded(start.x, start.y) : -1;
-  double limit = kInfinity;
-  for (int64_t k = 0; queued > 0 && k <= limit; ++k) {
-    std::vector<int32_t>& bucket = ring[k & (kRing - 1)];
-    for (size_t i = 0; i < bucket.size(); ++i) {
-      const int32_t index = bucket[i];
-      // Skip cells finished already or since moved to an earlier bucket.
-      if (done[index] || static_cast<int64_t>(field[index]) != k) continue;
-      done[index] = 1;
-      if (index == start_index) limit = slack * field[index] + margin;
-      for (int m = 0; m < 8; ++m) {
-        // Moves are symmetric, so distances to the goal equal distances from it.
-        const int32_t next = index + offset[m];
-        if (!(open[next] & open[index + side_x[m]] & open[index + side_y[m]])) continue;
-        const double cost = field[index] + kMoves[m].cost;
-        if (cost < field[next]) {
-          field[next] = cost;
-          ring[static_cast<int64_t>(cost) & (kRing - 1)].push_back(next);
-          ++queued;
-        }
-      }
-    }
-    queued -= bucket.size();
-    bucket.clear();
-  }
-  for (int y = 0; y < h; ++y)
-    std::copy_n(field.data() + padded(0, y), w, dist.data() + static_cast<size_t>(y) * w);
-  return dist;
+  return wavefront.values();
 }
 
 }  // namespace beft::planners

@@ -40,6 +40,44 @@ std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal);
 std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal, GridCell start, double slack,
                                         double margin);
 
+// The wavefront behind octileDistanceField, grown on demand: Dial's algorithm
+// with buckets one cell wide, bucket k holding the cells whose distance from
+// `goal` lies in [k, k + 1). Growing it bucket by bucket finishes the cells in
+// order of distance, so a caller that needs only the near part of the field
+// (the cells within some travel, or until one cell is reached) pays for that
+// part only; grown to the end it is octileDistanceField.
+class OctileWavefront {
+ public:
+  OctileWavefront(const GridMap& grid, GridCell goal);
+
+  // Finishes every bucket up to `last`: every cell nearer than last + 1 is final.
+  void growThroughBucket(int64_t last);
+  // Grows until the cell is final, or to the end when it is unreachable.
+  void growUntilFinal(GridCell cell);
+  bool exhausted() const { return queued_ == 0; }
+
+  bool isFinal(int x, int y) const;
+  // The cell's distance [cells]: final once isFinal, else the best found so
+  // far (+infinity when none yet).
+  double value(int x, int y) const;
+  // Every cell's value, row-major.
+  std::vector<double> values() const;
+
+ private:
+  static constexpr int kRing = 4;  // a label lies within sqrt(2) of its parent's
+  int32_t padded(int x, int y) const { return static_cast<int32_t>((y + 1) * padded_width_ + x + 1); }
+  void expandNextBucket();
+
+  int width_ = 0, height_ = 0, padded_width_ = 0;
+  std::vector<uint8_t> open_;   // 1 = free; a ring of blocked cells frames the grid
+  std::vector<double> field_;
+  std::vector<uint8_t> done_;
+  std::vector<int32_t> ring_[kRing];
+  int32_t offset_[8], side_x_[8], side_y_[8];
+  size_t queued_ = 0;
+  int64_t next_bucket_ = 0;
+};
+
 // Octile distance on an empty grid: the A* heuristic.
 double octileHeuristic(GridCell a, GridCell b);
 

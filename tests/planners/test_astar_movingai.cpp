@@ -197,6 +197,39 @@ TEST(OctileSearch, BoundedFieldIsTheFullFieldWithinItsLimit) {
   EXPECT_GT(beyond, 0) << "the bound cut nothing off";
 }
 
+TEST(OctileWavefront, GrownBucketByBucketFinishesCellsInOrderOfDistance) {
+  std::mt19937 rng(11);
+  GridMap grid(90, 60);
+  for (int i = 0; i < 1500; ++i) grid.setBlocked(rng() % 90, rng() % 60);
+  const GridCell goal{20, 30};
+  grid.setBlocked(goal.x, goal.y, false);
+  const auto full = octileDistanceField(grid, goal);
+  OctileWavefront wavefront(grid, goal);
+  int checked_final = 0;
+  for (int64_t bucket = 0; !wavefront.exhausted(); bucket += 7) {
+    wavefront.growThroughBucket(bucket);
+    for (int y = 0; y < grid.height(); ++y)
+      for (int x = 0; x < grid.width(); ++x) {
+        const double expected = full[grid.index(x, y)];
+        if (wavefront.exhausted()) {
+          ASSERT_EQ(wavefront.value(x, y), expected);
+        } else if (expected < bucket + 1) {
+          ASSERT_TRUE(wavefront.isFinal(x, y)) << x << "," << y << " at bucket " << bucket;
+          ASSERT_EQ(wavefront.value(x, y), expected);
+          ++checked_final;
+        } else {
+          ASSERT_FALSE(wavefront.isFinal(x, y)) << x << "," << y << " at bucket " << bucket;
+        }
+      }
+  }
+  EXPECT_GT(checked_final, 10000);
+  // Grown until one cell is final: that cell's distance is the full field's.
+  OctileWavefront to_one(grid, goal);
+  to_one.growUntilFinal({85, 5});
+  EXPECT_TRUE(to_one.isFinal(85, 5));
+  EXPECT_EQ(to_one.value(85, 5), full[grid.index(85, 5)]);
+}
+
 class MovingAiFiles : public ::testing::Test {
  protected:
   void SetUp() override {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace beft::exploration {
 namespace {
@@ -422,43 +423,87 @@ void Explorer::decide(const Observation& o, Decision& d) {
 bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
   const KnownMap* map = knownMap(o);
   if (map == nullptr) return false;
-  std::optional<TravelField> travel;
-  const HypothesisView* best = nullptr;
+  // The hypotheses to try, each with the least score a viewpoint of it can
+  // have: no viewpoint lies nearer the robot than the target less
+  // max_distance, travel between cell centres is never shorter than the
+  // straight line less a cell's diagonal, and penalties only add.
+  struct Candidate {
+    const HypothesisView* hypothesis;
+    size_t order;         // in the hypothesis list: the first of equal scores wins
+    double gain;          // what its DW weight is worth [m]
+    double least_score;
+    bool found = false;   // its best viewpoint is known
+  };
+  std::vector<Candidate> candidates;
+  for (size_t i = 0; i < o.hypotheses.size(); ++i) {
+    const HypothesisView& h = o.hypotheses[i];
+    if (!(inspect ? wantsInspect(h) : wantsVerify(h))) continue;
+    const TargetMemory& memory = targets_[h.object_id];
+    if (memory.given_up || o.t < memory.retry_t) continue;
+    const double gain = parameters_.weight_gain_m * std::max(0.0, h.weight);
+    const double least_travel = std::hypot(h.x - o.robot_x, h.y - o.robot_y) -
+                                parameters_.viewpoints.max_distance_m - 1.5 * map->resolution();
+    candidates.push_back({&h, i, gain, std::max(0.0, least_travel) - gain});
+  }
+  if (candidates.empty()) return false;
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.least_score < b.least_score; });
+
+  // Rounds of growing reach. Round R looks, for every hypothesis that may
+  // score at most R, for a viewpoint scoring at most R: the best found beats
+  // every hypothesis without one (they score more than R), so the first round
+  // that finds one ends the search, and the travel field is grown only as far
+  // as that round's reach. The last round has no limit; only there is a
+  // hypothesis without any viewpoint known to have none.
+  const TravelField travel(*map, o.robot_x, o.robot_y,
+                           o.robot_radius + parameters_.safety_margin_m + map->resolution());
+  constexpr double kFirstReach = 16.0, kLastFiniteReach = 256.0;  // [m]
+  const Candidate* best = nullptr;
   Viewpoint best_viewpoint;
   double best_score = 0;
-  for (const auto& h : o.hypotheses) {
-    if (!(inspect ? wantsInspect(h) : wantsVerify(h))) continue;
-    TargetMemory& memory = targets_[h.object_id];
-    if (memory.given_up || o.t < memory.retry_t) continue;
-    if (!travel) travel.emplace(*map, o.robot_x, o.robot_y, o.robot_radius + parameters_.safety_margin_m + map->resolution());
-    const auto viewpoint = chooseViewpoint(*map, *travel, h.x, h.y, memory.tried, parameters_.viewpoints);
-    if (!viewpoint) {
-      if (!memory.no_viewpoint) d.log.push_back(h.object_id + ": no reachable viewpoint on the known map");
-      memory.no_viewpoint = true;
-      memory.retry_t = o.t + parameters_.retry_after_s;
-      continue;
+  for (double reach = kFirstReach; best == nullptr; reach *= 2) {
+    const bool last = reach > kLastFiniteReach;
+    if (last) reach = std::numeric_limits<double>::infinity();
+    for (Candidate& c : candidates) {
+      if (c.least_score > reach) break;
+      if (c.found) continue;
+      const HypothesisView& h = *c.hypothesis;
+      TargetMemory& memory = targets_[h.object_id];
+      const auto viewpoint =
+          chooseViewpoint(*map, travel, h.x, h.y, memory.tried, parameters_.viewpoints, reach + c.gain);
+      if (!viewpoint) {
+        if (last && !memory.no_viewpoint) d.log.push_back(h.object_id + ": no reachable viewpoint on the known map");
+        if (last) {
+          memory.no_viewpoint = true;
+          memory.retry_t = o.t + parameters_.retry_after_s;
+        }
+        continue;
+      }
+      c.found = true;
+      memory.no_viewpoint = false;
+      const double score = viewpoint->cost - c.gain;
+      if (best == nullptr || score < best_score || (score == best_score && c.order < best->order)) {
+        best = &c;
+        best_viewpoint = *viewpoint;
+        best_score = score;
+      }
     }
-    memory.no_viewpoint = false;
-    const double score = viewpoint->cost - parameters_.weight_gain_m * std::max(0.0, h.weight);
-    if (best == nullptr || score < best_score) {
-      best = &h;
-      best_viewpoint = *viewpoint;
-      best_score = score;
-    }
+    if (last) break;
   }
   if (best == nullptr) return false;
+  const HypothesisView* target = best->hypothesis;
   Job job;
   job.kind = inspect ? JobKind::Inspect : JobKind::Verify;
-  job.object_id = best->object_id;
+  job.object_id = target->object_id;
   job.x = best_viewpoint.x;
   job.y = best_viewpoint.y;
   job.yaw = best_viewpoint.yaw;
   job.sub_tasks.push_back(subTask("goto", job.x, job.y, job.yaw, "",
-                                  "go to a viewpoint of " + best->object_id));
-  job.sub_tasks.push_back(subTask("look_at", best->x, best->y, 0, best->object_id, "look at " + best->object_id));
+                                  "go to a viewpoint of " + target->object_id));
+  job.sub_tasks.push_back(subTask("look_at", target->x, target->y, 0, target->object_id, "look at " + target->object_id));
   job.deadline_t = o.t + parameters_.attempt_timeout_s + best_viewpoint.travel_m / parameters_.nominal_speed;
-  const std::string note = std::string(inspect ? "inspect " : "verify ") + best->object_id + " at " +
-                           at(best->x, best->y) + " from " + at(job.x, job.y) + ", travel " +
+  const std::string note = std::string(inspect ? "inspect " : "verify ") + target->object_id + " at " +
+                           at(target->x, target->y) + " from " + at(job.x, job.y) + ", travel " +
                            fixed(best_viewpoint.travel_m) + " m";
   startJob(std::move(job), note, parameters_.verify_priority, o, d);
   return true;

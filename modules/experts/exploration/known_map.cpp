@@ -6,7 +6,6 @@
 
 #include <beft/obstacle_map_t.hpp>
 
-#include "octile_search.hpp"
 
 namespace beft::exploration {
 namespace {
@@ -110,10 +109,7 @@ SightLine KnownMap::sight(double ax, double ay, double bx, double by, double ign
 TravelField::TravelField(const KnownMap& map, double robot_x, double robot_y, double escape_radius)
     : width_(map.width()), height_(map.height()), resolution_(map.resolution()) {
   Cell start;
-  if (!map.cellOf(robot_x, robot_y, start)) {
-    cells_.assign(static_cast<size_t>(width_) * height_, kInfinity);
-    return;
-  }
+  if (!map.cellOf(robot_x, robot_y, start)) return;
   planners::GridMap grid = map.standing();
   // Let a robot that stands (or believes it stands) too close to an obstacle
   // drive away from it: free the inflated, not occupied, cells around it.
@@ -125,14 +121,26 @@ TravelField::TravelField(const KnownMap& map, double robot_x, double robot_y, do
           map.at(x, y) != obstacle_map_t::CELL_OCCUPIED)
         grid.setBlocked(x, y, false);
     }
-  cells_ = planners::octileDistanceField(grid, {start.x, start.y});
+  wavefront_.emplace(grid, planners::GridCell{start.x, start.y});
 }
 
 double TravelField::at(int x, int y) const {
-  if (x < 0 || y < 0 || x >= width_ || y >= height_) return kInfinity;
-  return cells_[static_cast<size_t>(y) * width_ + x] * resolution_;
+  if (!wavefront_ || x < 0 || y < 0 || x >= width_ || y >= height_) return kInfinity;
+  wavefront_->growUntilFinal({x, y});
+  return wavefront_->value(x, y) * resolution_;
 }
 
 bool TravelField::reachable(int x, int y) const { return std::isfinite(at(x, y)); }
+
+double TravelField::within(int x, int y, double limit_m) const {
+  if (!(limit_m < kInfinity)) return at(x, y);
+  if (!wavefront_ || x < 0 || y < 0 || x >= width_ || y >= height_ || !(limit_m >= 0)) return kInfinity;
+  const double limit_cells = limit_m / resolution_;
+  // Every bucket that can hold a distance up to the limit.
+  wavefront_->growThroughBucket(static_cast<int64_t>(std::min(std::floor(limit_cells), 9e18)));
+  if (!wavefront_->isFinal(x, y)) return kInfinity;
+  const double travel = wavefront_->value(x, y) * resolution_;
+  return travel <= limit_m ? travel : kInfinity;
+}
 
 }  // namespace beft::exploration

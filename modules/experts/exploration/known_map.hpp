@@ -11,6 +11,7 @@
 
 #include "grid_map.hpp"
 #include "obstacle_map_codec.hpp"
+#include "octile_search.hpp"
 
 namespace beft::exploration {
 
@@ -63,16 +64,23 @@ class KnownMap {
 // (8-connected, no corner cutting); +infinity where unreachable. A robot too
 // close to an obstacle may still leave: cells within escape_radius of it count
 // as standable for this search.
+//
+// The distances are found outwards from the robot as far as the questions
+// asked need: within() looks no farther than its limit, at() as far as the
+// cell (the whole reachable map when the cell is unreachable).
 class TravelField {
  public:
   TravelField(const KnownMap& map, double robot_x, double robot_y, double escape_radius);
   double at(int x, int y) const;  // +infinity outside or unreachable
   bool reachable(int x, int y) const;
+  // at(x, y) when it is at most limit_m, else +infinity.
+  double within(int x, int y, double limit_m) const;
 
  private:
   int width_ = 0, height_ = 0;
   double resolution_ = 0.1;
-  std::vector<double> cells_;  // [cells] as the search returns them
+  // From the robot's cell; none when the robot is off the map.
+  mutable std::optional<planners::OctileWavefront> wavefront_;
 };
 
 }  // namespace beft::exploration

@@ -30,7 +30,7 @@ bool inLineOfSight(const KnownMap& map, double x, double y, double target_x, dou
 
 std::optional<Viewpoint> chooseViewpoint(const KnownMap& map, const TravelField& travel, double target_x,
                                          double target_y, const std::vector<Point>& tried,
-                                         const ViewpointParameters& parameters) {
+                                         const ViewpointParameters& parameters, double max_cost) {
   struct Candidate {
     Cell cell;
     double x, y, travel_m, base_cost;
@@ -44,12 +44,14 @@ std::optional<Viewpoint> chooseViewpoint(const KnownMap& map, const TravelField&
       const double distance = std::hypot(x - target_x, y - target_y);
       if (distance < parameters.min_distance_m || distance > parameters.max_distance_m) continue;
       Cell cell;
-      if (!map.cellOf(x, y, cell) || !map.standable(cell.x, cell.y) || !travel.reachable(cell.x, cell.y)) continue;
+      if (!map.cellOf(x, y, cell) || !map.standable(cell.x, cell.y)) continue;
+      // Travel beyond max_cost: the viewpoint would cost more (penalties only add).
+      const double travel_m = travel.within(cell.x, cell.y, max_cost);
+      if (!std::isfinite(travel_m)) continue;
       const bool near_tried = std::any_of(tried.begin(), tried.end(), [&](const Point& p) {
         return std::hypot(p.x - x, p.y - y) < parameters.tried_radius_m;
       });
       if (near_tried) continue;
-      const double travel_m = travel.at(cell.x, cell.y);
       const double base = travel_m + parameters.distance_cost *
                                          std::max(0.0, distance - parameters.preferred_distance_m);
       candidates.push_back({cell, x, y, travel_m, base});
@@ -61,13 +63,14 @@ std::optional<Viewpoint> chooseViewpoint(const KnownMap& map, const TravelField&
                    [](const Candidate& a, const Candidate& b) { return a.base_cost < b.base_cost; });
   std::optional<Viewpoint> best;
   for (const auto& c : candidates) {
-    if (best && c.base_cost >= best->cost) break;
+    if ((best && c.base_cost >= best->cost) || c.base_cost > max_cost) break;
     double unknown_m = 0;
     if (!inLineOfSight(map, c.x, c.y, target_x, target_y, parameters, &unknown_m)) continue;
     const double cost = c.base_cost + parameters.unknown_cost * unknown_m;
     if (!best || cost < best->cost)
       best = Viewpoint{c.x, c.y, bearingDeg(c.x, c.y, target_x, target_y), c.travel_m, cost};
   }
+  if (best && best->cost > max_cost) return std::nullopt;
   return best;
 }
 

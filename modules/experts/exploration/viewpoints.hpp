@@ -4,6 +4,7 @@
 // preferring short travel and lines of sight through known free space.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -40,10 +41,13 @@ struct Point {
 bool inLineOfSight(const KnownMap& map, double x, double y, double target_x, double target_y,
                    const ViewpointParameters& parameters, double* unknown_m = nullptr);
 
-// The cheapest viewpoint, or none. tried: viewpoints already used for this target.
+// The cheapest viewpoint, or none. tried: viewpoints already used for this
+// target. With max_cost, only a viewpoint costing at most that: none then
+// means every viewpoint costs more (the travel field is searched no farther).
 std::optional<Viewpoint> chooseViewpoint(const KnownMap& map, const TravelField& travel, double target_x,
                                          double target_y, const std::vector<Point>& tried,
-                                         const ViewpointParameters& parameters);
+                                         const ViewpointParameters& parameters,
+                                         double max_cost = std::numeric_limits<double>::infinity());
 
 // Bearing from (x0, y0) to (x1, y1), CCW from +x [deg].
 double bearingDeg(double x0, double y0, double x1, double y1);

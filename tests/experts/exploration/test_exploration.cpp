@@ -3,8 +3,11 @@
 // half-known map, and the decision sequence from looking around to verifying,
 // retrying, giving up and stopping.
 #include <cmath>
+#include <limits>
+#include <random>
 #include <memory>
 #include <string>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -234,6 +237,78 @@ TEST(Frontiers, UnreachableFrontiersAreIgnored) {
   EXPECT_TRUE(findFrontiers(map, travel, memory).empty());
 }
 
+// A random width x height m world at 0.1 m: known free with walls, some unknown patches.
+planners::ObstacleCells randomWorld(std::mt19937& rng, double width = 40, double height = 30) {
+  auto cells = makeCells(width, height, kFree);
+  std::uniform_real_distribution<double> x(0, width), y(0, height), length(1, 12);
+  const int walls = static_cast<int>(25 * width * height / 1200);
+  for (int i = 0; i < walls; ++i) {
+    const double x0 = x(rng), y0 = y(rng);
+    if (rng() % 2) fillRect(cells, x0, y0, x0 + length(rng), y0 + 0.2, kOccupied);
+    else fillRect(cells, x0, y0, x0 + 0.2, y0 + length(rng), kOccupied);
+  }
+  for (int i = 0; i < 4; ++i) {
+    const double x0 = x(rng), y0 = y(rng);
+    fillRect(cells, x0, y0, x0 + 3, y0 + 3, kUnknown);
+  }
+  return cells;
+}
+
+TEST(TravelField, WithinALimitIsTheFullAnswerUpToIt) {
+  std::mt19937 rng(5);
+  const KnownMap map(randomWorld(rng), 0.45);
+  const TravelField full(map, 20.0, 15.0, 0.6);
+  int compared = 0, beyond = 0;
+  for (const double limit : {0.5, 3.0, 9.5, 24.0}) {
+    const TravelField bounded(map, 20.0, 15.0, 0.6);  // grown only by the limited questions
+    for (int i = 0; i < 3000; ++i) {
+      const int cx = static_cast<int>(rng() % map.width()), cy = static_cast<int>(rng() % map.height());
+      const double travel = full.at(cx, cy);
+      const double answer = bounded.within(cx, cy, limit);
+      if (travel <= limit) {
+        ASSERT_EQ(answer, travel);
+        ++compared;
+      } else {
+        ASSERT_TRUE(std::isinf(answer)) << "travel " << travel << " answered " << answer << " within " << limit;
+        beyond += std::isfinite(travel) ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000);
+  EXPECT_GT(beyond, 1000);
+}
+
+TEST(Viewpoints, WithAMaxCostTheSameViewpointOrNoneCheaper) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> x(1, 39), y(1, 29);
+  int same = 0, none = 0;
+  for (int world = 0; world < 6; ++world) {
+    const KnownMap map(randomWorld(rng), 0.45);
+    const TravelField travel(map, 20.0, 15.0, 0.6);
+    for (int i = 0; i < 15; ++i) {
+      const double tx = x(rng), ty = y(rng);
+      const auto unbounded = chooseViewpoint(map, travel, tx, ty, {}, ViewpointParameters{});
+      if (!unbounded) continue;
+      for (const double max_cost : {unbounded->cost, unbounded->cost + 2.0, unbounded->cost - 0.5}) {
+        const TravelField fresh(map, 20.0, 15.0, 0.6);
+        const auto bounded = chooseViewpoint(map, fresh, tx, ty, {}, ViewpointParameters{}, max_cost);
+        if (unbounded->cost <= max_cost) {
+          ASSERT_TRUE(bounded.has_value());
+          EXPECT_EQ(bounded->x, unbounded->x);
+          EXPECT_EQ(bounded->y, unbounded->y);
+          EXPECT_EQ(bounded->cost, unbounded->cost);
+          ++same;
+        } else {
+          EXPECT_FALSE(bounded.has_value()) << "cost " << bounded->cost << " above " << max_cost;
+          ++none;
+        }
+      }
+    }
+  }
+  EXPECT_GT(same, 40);
+  EXPECT_GT(none, 20);
+}
+
 // Drives an Explorer through a scripted run: a small fake task stack that
 // gives ids to pushed tasks and removes finished ones.
 class FakeStack {
@@ -286,6 +361,108 @@ std::vector<TaskRequest> pushesOf(const Decision& decision) {
   for (const auto& r : decision.requests)
     if (r.type == TaskRequest::Type::Push) pushes.push_back(r);
   return pushes;
+}
+
+// The explorer searches outwards and stops once no farther hypothesis can
+// win: it must choose what scoring every hypothesis's best viewpoint chooses.
+TEST(ExplorerChoice, TheBoundedSearchChoosesWhatTheExhaustiveOneDoes) {
+  // Long worlds: travels from a few metres to over a hundred.
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> x(1, 139), y(1, 19);
+  const double weights[] = {-1, 0, 0.4, 1};  // -1: DW has none
+  ExplorerParameters parameters;
+  parameters.look_around = false;
+  int chosen = 0, not_nearest = 0, far = 0;
+  for (int world = 0; world < 60; ++world) {
+    Observation o;
+    o.map = std::make_shared<const planners::ObstacleCells>(randomWorld(rng, 140, 20));
+    o.map_version = 1;
+    o.robot_known = true;
+    o.robot_x = x(rng);
+    o.robot_y = y(rng);
+    o.stack_known = true;
+    const int hypotheses = 1 + world % 8;
+    for (int i = 0; i < hypotheses; ++i) {
+      HypothesisView h;
+      h.object_id = "h" + std::to_string(i);
+      h.x = x(rng);
+      h.y = y(rng);
+      h.heard = true;
+      h.best_category = "person";
+      h.confidence = h.person_confidence = 0.7;
+      h.weight = weights[rng() % 4];
+      o.hypotheses.push_back(h);
+    }
+    // The reference: every hypothesis's best viewpoint, the lowest score, the first of equals.
+    const KnownMap map(*o.map, o.robot_radius + parameters.safety_margin_m);
+    const TravelField travel(map, o.robot_x, o.robot_y, o.robot_radius + parameters.safety_margin_m + 0.1);
+    std::string best_id;
+    Viewpoint best_viewpoint;
+    double best_score = std::numeric_limits<double>::infinity();
+    double nearest = std::numeric_limits<double>::infinity();
+    std::string nearest_id;
+    for (const auto& h : o.hypotheses) {
+      const auto viewpoint = chooseViewpoint(map, travel, h.x, h.y, {}, parameters.viewpoints);
+      if (!viewpoint) continue;
+      const double score = viewpoint->cost - parameters.weight_gain_m * std::max(0.0, h.weight);
+      if (score < best_score) {
+        best_score = score;
+        best_id = h.object_id;
+        best_viewpoint = *viewpoint;
+      }
+      if (viewpoint->travel_m < nearest) {
+        nearest = viewpoint->travel_m;
+        nearest_id = h.object_id;
+      }
+    }
+    Explorer explorer(parameters);
+    const Decision decision = explorer.step(o);
+    const auto pushes = pushesOf(decision);
+    if (best_id.empty()) {
+      EXPECT_TRUE(pushes.empty() || pushes.front().kind != "verify") << "world " << world;
+      continue;
+    }
+    ASSERT_FALSE(pushes.empty()) << "world " << world;
+    EXPECT_EQ(pushes.front().object_id, best_id) << "world " << world;
+    EXPECT_EQ(pushes.front().x, best_viewpoint.x) << "world " << world;
+    EXPECT_EQ(pushes.front().y, best_viewpoint.y) << "world " << world;
+    ++chosen;
+    not_nearest += best_id != nearest_id ? 1 : 0;
+    far += best_score > 40 ? 1 : 0;
+  }
+  EXPECT_GT(chosen, 45);
+  EXPECT_GT(not_nearest, 3);  // the weights decided some choices
+  EXPECT_GT(far, 3);          // and the nearest viewpoints were far in some
+}
+
+// The bounded search must still look far enough for a weight: a sound that
+// matters 30 m away beats one that does not 15 m away.
+TEST(ExplorerChoice, AFarHypothesisThatMattersBeatsANearOneThatDoesNot) {
+  ExplorerParameters parameters;
+  parameters.look_around = false;
+  Observation o;
+  o.map = std::make_shared<const planners::ObstacleCells>(makeCells(100, 10, kFree));
+  o.map_version = 1;
+  o.robot_known = true;
+  o.robot_x = 5;
+  o.robot_y = 5;
+  o.stack_known = true;
+  for (const auto& [id, x, weight] : {std::tuple<const char*, double, double>{"near", 20, -1}, {"far", 38, 1}}) {
+    HypothesisView h;
+    h.object_id = id;
+    h.x = x;
+    h.y = 5;
+    h.heard = true;
+    h.best_category = "person";
+    h.confidence = h.person_confidence = 0.7;
+    h.weight = weight;
+    o.hypotheses.push_back(h);
+  }
+  Explorer explorer(parameters);
+  const auto pushes = pushesOf(explorer.step(o));
+  ASSERT_FALSE(pushes.empty());
+  EXPECT_EQ(pushes.front().object_id, "far");
+  EXPECT_GT(std::hypot(pushes.front().x - o.robot_x, pushes.front().y - o.robot_y), 25.0);
 }
 
 class ExplorerRun : public ::testing::Test {
