@@ -17,6 +17,15 @@ GridMap::GridMap(int width, int height) : width_(width), height_(height) {
   cells_.assign(static_cast<size_t>(width) * height, 0);
 }
 
+GridMap::GridMap(int width, int height, std::vector<uint8_t> cells) : GridMap(width, height) {
+  if (cells.size() != cells_.size()) {
+    throw std::invalid_argument("grid of " + std::to_string(width) + " x " + std::to_string(height) + " given " +
+                                std::to_string(cells.size()) + " cells");
+  }
+  for (uint8_t& cell : cells) cell = cell != 0 ? 1 : 0;
+  cells_ = std::move(cells);
+}
+
 void GridMap::setBlocked(int x, int y, bool blocked) {
   if (inside(x, y)) cells_[index(x, y)] = blocked ? 1 : 0;
 }
@@ -50,12 +59,8 @@ GridMap inflate(const GridMap& map, double radius_cells) {
   const cv::Mat source(map.height(), map.width(), CV_8U, const_cast<uint8_t*>(map.cells().data()));
   cv::Mat grown;
   cv::dilate(source, grown, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
-  GridMap out(map.width(), map.height());
-  for (int y = 0; y < map.height(); ++y) {
-    const uint8_t* row = grown.ptr<uint8_t>(y);
-    for (int x = 0; x < map.width(); ++x) out.setBlocked(x, y, row[x] != 0);
-  }
-  return out;
+  // A fresh, continuous matrix: its rows are the grid's.
+  return GridMap(map.width(), map.height(), std::vector<uint8_t>(grown.datastart, grown.dataend));
 }
 
 }  // namespace beft::planners

@@ -12,6 +12,8 @@ class GridMap {
  public:
   GridMap() = default;
   GridMap(int width, int height);  // all cells free
+  // From row-major flags, non-zero = blocked (stored as 1).
+  GridMap(int width, int height, std::vector<uint8_t> cells);
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <queue>
 
 namespace beft::planners {
@@ -125,6 +126,8 @@ void OctileWavefront::expandNextBucket() {
     // Skip cells finished already or since moved to an earlier bucket.
     if (done_[index] || static_cast<int64_t>(field_[index]) != k) continue;
     done_[index] = 1;
+    if (first_done_ < 0 || index < first_done_) first_done_ = index;
+    last_done_ = std::max(last_done_, index);
     for (int m = 0; m < 8; ++m) {
       // Moves are symmetric, so distances to the goal equal distances from it.
       const int32_t next = index + offset_[m];
@@ -154,6 +157,37 @@ void OctileWavefront::growUntilFinal(GridCell cell) {
   while (queued_ > 0 && !done_[index]) expandNextBucket();
 }
 
+void OctileWavefront::growAround(GridCell start, double slack, double margin) {
+  growUntilFinal(start);  // unreachable or outside: the whole field
+  const double to_start = value(start.x, start.y);
+  if (!std::isfinite(to_start) || !isFinal(start.x, start.y)) return;
+  const double limit = slack * to_start + margin;
+  growThroughBucket(limit >= 9e18 ? std::numeric_limits<int64_t>::max() : static_cast<int64_t>(std::floor(limit)));
+}
+
+bool OctileWavefront::finiteBounds(int& x0, int& y0, int& x1, int& y1) const {
+  if (first_done_ < 0) return false;
+  // Finite values are the finished cells and their neighbours: the rows of
+  // the first and last finished cell, and in between each row's first and
+  // last finished cell, grown by one.
+  const int row_first = first_done_ / padded_width_ - 1, row_last = last_done_ / padded_width_ - 1;
+  int col_first = width_, col_last = -1;
+  for (int y = row_first; y <= row_last; ++y) {
+    const uint8_t* row = done_.data() + padded(0, y);
+    const uint8_t* first = std::find(row, row + width_, uint8_t{1});
+    if (first == row + width_) continue;
+    const uint8_t* last = std::find(std::make_reverse_iterator(row + width_), std::make_reverse_iterator(row),
+                                    uint8_t{1}).base() - 1;
+    col_first = std::min(col_first, static_cast<int>(first - row));
+    col_last = std::max(col_last, static_cast<int>(last - row));
+  }
+  x0 = std::max(0, col_first - 1);
+  x1 = std::min(width_ - 1, col_last + 1);
+  y0 = std::max(0, row_first - 1);
+  y1 = std::min(height_ - 1, row_last + 1);
+  return true;
+}
+
 bool OctileWavefront::isFinal(int x, int y) const {
   if (x < 0 || y < 0 || x >= width_ || y >= height_) return false;
   return done_[padded(x, y)] != 0 || queued_ == 0;
@@ -180,13 +214,7 @@ std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal) {
 std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal, GridCell start, double slack,
                                         double margin) {
   OctileWavefront wavefront(grid, goal);
-  wavefront.growUntilFinal(start);  // unreachable or outside: the whole field
-  const double to_start = wavefront.value(start.x, start.y);
-  if (std::isfinite(to_start) && wavefront.isFinal(start.x, start.y)) {
-    const double limit = slack * to_start + margin;
-    wavefront.growThroughBucket(limit >= 9e18 ? std::numeric_limits<int64_t>::max()
-                                              : static_cast<int64_t>(std::floor(limit)));
-  }
+  wavefront.growAround(start, slack, margin);
   return wavefront.values();
 }
 

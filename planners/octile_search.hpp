@@ -54,6 +54,10 @@ class OctileWavefront {
   void growThroughBucket(int64_t last);
   // Grows until the cell is final, or to the end when it is unreachable.
   void growUntilFinal(GridCell cell);
+  // Grows as far as a path search from `start` needs: once the start is
+  // final at distance D, every bucket up to slack * D + margin; the whole
+  // field when the start is unreachable.
+  void growAround(GridCell start, double slack, double margin);
   bool exhausted() const { return queued_ == 0; }
 
   bool isFinal(int x, int y) const;
@@ -62,6 +66,9 @@ class OctileWavefront {
   double value(int x, int y) const;
   // Every cell's value, row-major.
   std::vector<double> values() const;
+  // The smallest rectangle, inclusive, outside which every value is still
+  // +infinity; false when none is finite.
+  bool finiteBounds(int& x0, int& y0, int& x1, int& y1) const;
 
  private:
   static constexpr int kRing = 4;  // a label lies within sqrt(2) of its parent's
@@ -76,6 +83,7 @@ class OctileWavefront {
   int32_t offset_[8], side_x_[8], side_y_[8];
   size_t queued_ = 0;
   int64_t next_bucket_ = 0;
+  int32_t first_done_ = -1, last_done_ = -1;  // lowest and highest padded index finished
 };
 
 // Octile distance on an empty grid: the A* heuristic.

@@ -18,23 +18,23 @@ inline int lastCell(double hi) { return static_cast<int>(std::floor(hi + kTouchT
 }  // namespace
 
 PlanningMap::PlanningMap(GridMap raw, double robot_radius_cells)
-    : raw_(std::move(raw)), inflated_(inflate(raw_, robot_radius_cells)), radius_(robot_radius_cells) {
+    : raw_(std::move(raw)), inflated_(inflate(raw_, robot_radius_cells)), radius_(robot_radius_cells) {}
+
+void PlanningMap::labelNearestObstacles() const {
+  if (raw_.blockedCount() == 0) return;
   const int w = raw_.width();
   const int h = raw_.height();
-  cv::Mat free_mask(h, w, CV_8U);
+  const cv::Mat blocked(h, w, CV_8U, const_cast<uint8_t*>(raw_.cells().data()));
+  cv::Mat free_mask;
+  cv::compare(blocked, 0, free_mask, cv::CMP_EQ);  // 255 where free
+  cv::Mat distance;
+  cv::distanceTransform(free_mask, distance, nearest_label_, cv::DIST_L2, cv::DIST_MASK_5, cv::DIST_LABEL_PIXEL);
+  obstacle_of_label_.assign(raw_.blockedCount() + 1, cv::Point(-1, -1));
   for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) free_mask.at<uint8_t>(y, x) = raw_.blocked(x, y) ? 0 : 255;
-  }
-  if (raw_.blockedCount() > 0) {
-    cv::Mat distance;
-    cv::distanceTransform(free_mask, distance, nearest_label_, cv::DIST_L2, cv::DIST_MASK_5, cv::DIST_LABEL_PIXEL);
-    obstacle_of_label_.assign(raw_.blockedCount() + 1, cv::Point(-1, -1));
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        if (free_mask.at<uint8_t>(y, x) != 0) continue;
-        const int label = nearest_label_.at<int>(y, x);
-        if (label >= 0 && label < static_cast<int>(obstacle_of_label_.size())) obstacle_of_label_[label] = {x, y};
-      }
+    for (int x = 0; x < w; ++x) {
+      if (free_mask.at<uint8_t>(y, x) != 0) continue;
+      const int label = nearest_label_.at<int>(y, x);
+      if (label >= 0 && label < static_cast<int>(obstacle_of_label_.size())) obstacle_of_label_[label] = {x, y};
     }
   }
 }
@@ -112,6 +112,7 @@ double PlanningMap::freeFraction(Point2 a, Point2 b, double tolerance) const {
 }
 
 double PlanningMap::clearance(Point2 p) const {
+  std::call_once(labelled_, [this] { labelNearestObstacles(); });
   if (nearest_label_.empty()) return 1e9;
   const int cx = std::clamp(static_cast<int>(std::floor(p.x)), 0, raw_.width() - 1);
   const int cy = std::clamp(static_cast<int>(std::floor(p.y)), 0, raw_.height() - 1);

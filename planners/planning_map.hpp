@@ -15,6 +15,9 @@
 
 #include <opencv2/core.hpp>
 
+#include <mutex>
+#include <vector>
+
 namespace beft::planners {
 
 class PlanningMap {
@@ -38,14 +41,18 @@ class PlanningMap {
   // labelled distance transform of the raw grid, the distance to each is
   // exact. The map border does not count; a map without obstacles gives a
   // large number.
+  // The transform is made on the first call (most planners never ask).
   double clearance(Point2 p) const;
 
  private:
+  void labelNearestObstacles() const;
+
   GridMap raw_;
   GridMap inflated_;
   double radius_;
-  cv::Mat nearest_label_;                      // CV_32S: label of the nearest obstacle cell
-  std::vector<cv::Point> obstacle_of_label_;  // label -> obstacle cell
+  mutable std::once_flag labelled_;
+  mutable cv::Mat nearest_label_;                      // CV_32S: label of the nearest obstacle cell
+  mutable std::vector<cv::Point> obstacle_of_label_;  // label -> obstacle cell
 };
 
 }  // namespace beft::planners

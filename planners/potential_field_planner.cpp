@@ -283,12 +283,13 @@ Path PotentialFieldPlanner::solvePath(Point2 start, Point2 goal, const Deadline&
   const GridCell goal_cell{static_cast<int>(std::floor(goal.x)), static_cast<int>(std::floor(goal.y))};
   if (params_.target == TargetPotential::Geodesic) {
     const GridCell start_cell{static_cast<int>(std::floor(start.x)), static_cast<int>(std::floor(start.y))};
-    target_distance_ = geodesicTargetDistance(map_->inflated(), goal_cell, start_cell);
+    cv::Rect finite_region;
+    target_distance_ = geodesicTargetDistance(map_->inflated(), goal_cell, start_cell, &finite_region);
     if (!std::isfinite(wavefrontAt(start))) {
       why_not = name() + ": goal unreachable from start";
       return {};
     }
-    target_force_ = negativeGradientFinite(target_distance_);
+    target_force_ = negativeGradientFinite(target_distance_, finite_region);
   } else {
     target_distance_ = euclideanTargetDistance(map_->width(), map_->height(), goal_cell);
     target_force_ = negativeGradient(target_distance_);

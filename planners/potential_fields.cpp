@@ -32,11 +32,8 @@ Point2 VectorField::at(Point2 p) const {
 cv::Mat obstaclePotential(const GridMap& grid, double sigma) {
   const int w = grid.width();
   const int h = grid.height();
-  cv::Mat occupancy(h, w, CV_32F);
-  for (int y = 0; y < h; ++y) {
-    float* row = occupancy.ptr<float>(y);
-    for (int x = 0; x < w; ++x) row[x] = grid.blocked(x, y) ? 1.0f : 0.0f;
-  }
+  cv::Mat occupancy;
+  cv::Mat(h, w, CV_8U, const_cast<uint8_t*>(grid.cells().data())).convertTo(occupancy, CV_32F);  // cells are 0 / 1
   const int pad = static_cast<int>(std::ceil(3 * sigma)) + 1;
   cv::Mat padded;
   cv::copyMakeBorder(occupancy, padded, pad, pad, pad, pad, cv::BORDER_CONSTANT, cv::Scalar(1.0));
@@ -68,27 +65,37 @@ cv::Mat euclideanTargetDistance(int width, int height, GridCell goal) {
   return distance;
 }
 
-cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal, GridCell start) {
-  const std::vector<double> octile = octileDistanceField(grid, goal, start, 1.5, 20.0);
-  double max_value = 0;
-  for (double d : octile) {
-    if (std::isfinite(d)) max_value = std::max(max_value, d);
+cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal, GridCell start, cv::Rect* finite_region) {
+  OctileWavefront wavefront(grid, goal);
+  wavefront.growAround(start, kGeodesicSlack, kGeodesicMargin);
+  cv::Mat distance(grid.height(), grid.width(), CV_32F, cv::Scalar(std::numeric_limits<float>::infinity()));
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+  if (!wavefront.finiteBounds(x0, y0, x1, y1)) {
+    if (finite_region) *finite_region = cv::Rect();
+    return distance;
   }
+  double max_value = 0;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const double d = wavefront.value(x, y);
+      if (std::isfinite(d)) max_value = std::max(max_value, d);
+    }
   const double scale = max_value > 0 ? 1.0 / max_value : 1.0;
-  cv::Mat distance(grid.height(), grid.width(), CV_32F);
-  for (int y = 0; y < grid.height(); ++y) {
+  for (int y = y0; y <= y1; ++y) {
     float* row = distance.ptr<float>(y);
-    for (int x = 0; x < grid.width(); ++x) {
-      const double d = octile[grid.index(x, y)];
-      row[x] = std::isfinite(d) ? static_cast<float>(d * scale) : std::numeric_limits<float>::infinity();
+    for (int x = x0; x <= x1; ++x) {
+      const double d = wavefront.value(x, y);
+      if (std::isfinite(d)) row[x] = static_cast<float>(d * scale);
     }
   }
+  if (finite_region) *finite_region = cv::Rect(x0, y0, x1 - x0 + 1, y1 - y0 + 1);
   return distance;
 }
 
-VectorField negativeGradientFinite(const cv::Mat& field) {
+VectorField negativeGradientFinite(const cv::Mat& field, cv::Rect finite_region) {
   const int w = field.cols;
   const int h = field.rows;
+  if (finite_region.empty()) finite_region = cv::Rect(0, 0, w, h);
   cv::Mat gx(h, w, CV_32F, cv::Scalar(0));
   cv::Mat gy(h, w, CV_32F, cv::Scalar(0));
   const auto value = [&](int x, int y) {
@@ -103,8 +110,8 @@ VectorField negativeGradientFinite(const cv::Mat& field) {
     if (has_before) return here - before;
     return 0.0f;
   };
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
+  for (int y = finite_region.y; y < finite_region.y + finite_region.height; ++y) {
+    for (int x = finite_region.x; x < finite_region.x + finite_region.width; ++x) {
       const float here = value(x, y);
       if (!std::isfinite(here)) continue;
       gx.at<float>(y, x) = -slope(value(x - 1, y), here, value(x + 1, y));

@@ -39,12 +39,17 @@ cv::Mat euclideanTargetDistance(int width, int height, GridCell goal);
 
 // M_D, geodesic variant: the octile distance to the goal through free cells
 // (a wavefront, no local minima), normalised to [0, 1]; +infinity on blocked
-// and unreachable cells, and beyond 1.5 times the start's distance + 20 cells.
-cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal, GridCell start);
+// and unreachable cells, and beyond kGeodesicSlack times the start's distance
+// + kGeodesicMargin cells. finite_region, when given, receives a rectangle
+// outside which every cell is infinite (empty when all are).
+constexpr double kGeodesicSlack = 1.5;
+constexpr double kGeodesicMargin = 20.0;  // [cells]
+cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal, GridCell start, cv::Rect* finite_region = nullptr);
 
 // -grad of a field with infinite cells (the geodesic M_D): central
 // differences where both neighbours are finite, one-sided where one is,
-// zero where none is or on infinite cells.
-VectorField negativeGradientFinite(const cv::Mat& field);
+// zero where none is or on infinite cells. Only cells inside finite_region
+// (every finite cell must be; empty: the whole field) are computed.
+VectorField negativeGradientFinite(const cv::Mat& field, cv::Rect finite_region = cv::Rect());
 
 }  // namespace beft::planners

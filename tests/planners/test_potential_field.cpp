@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <memory>
+#include <random>
 
 namespace beft::planners {
 namespace {
@@ -50,6 +51,53 @@ TEST(PotentialFields, TargetDistancesAreNormalisedAndGeodesicGoesAround) {
   // Its descent direction at (5, 5) points up, toward the end of the wall.
   const Point2 down = negativeGradientFinite(geodesic).at(cellCentre(5, 5));
   EXPECT_GT(down.y, 0.0);
+}
+
+// The geodesic M_D is made and differentiated only where the bounded
+// wavefront reached: the same as over the whole grid.
+TEST(PotentialFields, TheGeodesicFieldIsWorkedOnlyWhereItIsFinite) {
+  std::mt19937 rng(4);
+  for (int trial = 0; trial < 20; ++trial) {
+    GridMap grid(160, 120);
+    for (int i = 0; i < 40; ++i) {
+      const int x = static_cast<int>(rng() % 160), y = static_cast<int>(rng() % 120);
+      if (rng() % 2) grid.fillRect(x, y, x + static_cast<int>(rng() % 30), y + 1);
+      else grid.fillRect(x, y, x + 1, y + static_cast<int>(rng() % 30));
+    }
+    const GridCell goal{static_cast<int>(rng() % 160), static_cast<int>(rng() % 120)};
+    const GridCell start{static_cast<int>(rng() % 160), static_cast<int>(rng() % 120)};
+    grid.setBlocked(goal.x, goal.y, false);
+    cv::Rect region;
+    const cv::Mat geodesic = geodesicTargetDistance(grid, goal, start, &region);
+    // Every finite cell lies in the region.
+    int finite = 0;
+    for (int y = 0; y < grid.height(); ++y)
+      for (int x = 0; x < grid.width(); ++x)
+        if (std::isfinite(geodesic.at<float>(y, x))) {
+          ++finite;
+          ASSERT_TRUE(region.contains(cv::Point(x, y))) << "trial " << trial << " cell " << x << "," << y;
+        }
+    ASSERT_GT(finite, 0);
+    // The reference: the bounded octile field, normalised by its largest finite value.
+    const auto octile = octileDistanceField(grid, goal, start, kGeodesicSlack, kGeodesicMargin);
+    double largest = 0;
+    for (double d : octile)
+      if (std::isfinite(d)) largest = std::max(largest, d);
+    for (int y = 0; y < grid.height(); ++y)
+      for (int x = 0; x < grid.width(); ++x) {
+        const double d = octile[grid.index(x, y)];
+        const float expected = std::isfinite(d) ? static_cast<float>(d * (1.0 / largest)) : INFINITY;
+        ASSERT_EQ(geodesic.at<float>(y, x), expected);
+      }
+    // The gradient inside the region alone equals the gradient over the whole field.
+    const VectorField whole = negativeGradientFinite(geodesic);
+    const VectorField bounded = negativeGradientFinite(geodesic, region);
+    for (int i = 0; i < 2000; ++i) {
+      const Point2 p{(rng() % 16000) / 100.0, (rng() % 12000) / 100.0};
+      ASSERT_EQ(whole.at(p).x, bounded.at(p).x);
+      ASSERT_EQ(whole.at(p).y, bounded.at(p).y);
+    }
+  }
 }
 
 TEST(PotentialFieldPlanner, PaperPlannerGoesAroundASimpleWall) {

@@ -3,6 +3,7 @@
 #include "path_tools.hpp"
 #include "planner_factory.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -75,13 +76,11 @@ void PlannerService::setObstacleMap(const bp::ObstacleCells& map) {
 
 std::shared_ptr<const bp::PlanningMap> PlannerService::planningMap() {
   if (planning_map_version_ != map_version_) {
-    bp::GridMap grid(cells_->width, cells_->height);
-    for (int y = 0; y < cells_->height; ++y) {
-      for (int x = 0; x < cells_->width; ++x) {
-        // Unknown counts as free: the map holds the obstacles seen so far.
-        grid.setBlocked(x, y, cells_->at(x, y) == beft::obstacle_map_t::CELL_OCCUPIED);
-      }
-    }
+    // Unknown counts as free: the map holds the obstacles seen so far.
+    std::vector<uint8_t> occupied(cells_->cells.size());
+    std::transform(cells_->cells.begin(), cells_->cells.end(), occupied.begin(),
+                   [](uint8_t cell) { return cell == beft::obstacle_map_t::CELL_OCCUPIED ? 1 : 0; });
+    bp::GridMap grid(cells_->width, cells_->height, std::move(occupied));
     planning_map_ = std::make_shared<bp::PlanningMap>(std::move(grid), config_.robot_radius / cells_->resolution);
     planning_map_version_ = map_version_;
   }
