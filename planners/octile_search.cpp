@@ -88,50 +88,79 @@ OctileSearchResult octileAStar(const GridMap& grid, GridCell start, GridCell goa
   return result;
 }
 
-OctileWavefront::OctileWavefront(const GridMap& grid, GridCell goal)
-    : width_(grid.width()), height_(grid.height()), padded_width_(grid.width() + 2) {
-  const size_t padded_cells = static_cast<size_t>(padded_width_) * (height_ + 2);
-  field_.assign(padded_cells, kInfinity);
-  done_.assign(padded_cells, 0);
-  if (grid.blocked(goal.x, goal.y)) return;  // nothing reachable: exhausted from the start
+OctileWavefront::OctileWavefront(GridMap grid, GridCell goal, int reach)
+    : grid_(std::move(grid)), goal_(goal), reach_(std::max(reach, 1)) {
+  for (int m = 0; m < 8; ++m) {
+    // A diagonal passes between the cells beside it; a straight move checks its target twice.
+    const bool diagonal = kMoves[m].dy != 0 && kMoves[m].dx != 0;
+    side_x_[m] = diagonal ? kMoves[m].dx : 0;
+    side_y_[m] = diagonal ? kMoves[m].dy : 0;
+  }
+  if (grid_.blocked(goal.x, goal.y)) return;  // nothing reachable: exhausted from the start
+  startIn(reach_);
+}
+
+void OctileWavefront::startIn(int reach) {
+  reach_ = reach;
+  const auto clip = [](int64_t v, int hi) { return static_cast<int>(std::clamp<int64_t>(v, 0, hi)); };
+  window_x_ = clip(int64_t{goal_.x} - reach, grid_.width());
+  window_y_ = clip(int64_t{goal_.y} - reach, grid_.height());
+  window_width_ = clip(int64_t{goal_.x} + reach + 1, grid_.width()) - window_x_;
+  window_height_ = clip(int64_t{goal_.y} + reach + 1, grid_.height()) - window_y_;
+  padded_width_ = window_width_ + 2;
+  const size_t padded_cells = static_cast<size_t>(padded_width_) * (window_height_ + 2);
   // The wavefront runs on a copy framed by a ring of blocked cells: no bounds
   // check in the inner loop, and a move is a fixed index offset.
   open_.assign(padded_cells, 0);
-  const std::vector<uint8_t>& cells = grid.cells();
-  for (int y = 0; y < height_; ++y) {
-    const uint8_t* row = cells.data() + static_cast<size_t>(y) * width_;
-    uint8_t* out = open_.data() + padded(0, y);
-    for (int x = 0; x < width_; ++x) out[x] = row[x] == 0;
+  field_.assign(padded_cells, kInfinity);
+  done_.assign(padded_cells, 0);
+  const std::vector<uint8_t>& cells = grid_.cells();
+  for (int y = window_y_; y < window_y_ + window_height_; ++y) {
+    const uint8_t* row = cells.data() + grid_.index(window_x_, y);
+    uint8_t* out = open_.data() + padded(window_x_, y);
+    for (int x = 0; x < window_width_; ++x) out[x] = row[x] == 0 ? kFree : 0;
   }
-  for (int m = 0; m < 8; ++m) {
-    offset_[m] = kMoves[m].dx + kMoves[m].dy * padded_width_;
-    // A diagonal passes between the cells beside it; a straight move checks its target twice.
-    const bool diagonal = kMoves[m].dy != 0 && kMoves[m].dx != 0;
-    side_x_[m] = diagonal ? kMoves[m].dx : offset_[m];
-    side_y_[m] = diagonal ? kMoves[m].dy * padded_width_ : offset_[m];
+  // The window's edges that are not the grid's.
+  const auto mark_edge = [&](int x, int y) { open_[padded(x, y)] |= open_[padded(x, y)] ? kOnEdge : 0; };
+  const int right = window_x_ + window_width_ - 1, bottom = window_y_ + window_height_ - 1;
+  for (int y = window_y_; y <= bottom; ++y) {
+    if (window_x_ > 0) mark_edge(window_x_, y);
+    if (right < grid_.width() - 1) mark_edge(right, y);
   }
-  const int32_t goal_index = padded(goal.x, goal.y);
+  for (int x = window_x_; x <= right; ++x) {
+    if (window_y_ > 0) mark_edge(x, window_y_);
+    if (bottom < grid_.height() - 1) mark_edge(x, bottom);
+  }
+  for (int m = 0; m < 8; ++m) offset_[m] = kMoves[m].dx + kMoves[m].dy * padded_width_;
+  for (auto& bucket : ring_) bucket.clear();
+  const int32_t goal_index = padded(goal_.x, goal_.y);
   field_[goal_index] = 0;
   ring_[0].push_back(goal_index);
   queued_ = 1;
+  next_bucket_ = 0;
+  first_done_ = last_done_ = -1;
 }
 
 // Every step costs at least 1, so expanding bucket k only fills later buckets
 // and the labels in bucket k are final when it is expanded.
-void OctileWavefront::expandNextBucket() {
+bool OctileWavefront::expandNextBucket() {
   const int64_t k = next_bucket_++;
   std::vector<int32_t>& bucket = ring_[k & (kRing - 1)];
   for (size_t i = 0; i < bucket.size(); ++i) {
     const int32_t index = bucket[i];
     // Skip cells finished already or since moved to an earlier bucket.
     if (done_[index] || static_cast<int64_t>(field_[index]) != k) continue;
+    // A path through this cell may leave the window: this window is too small.
+    if (open_[index] & kOnEdge) return false;
     done_[index] = 1;
     if (first_done_ < 0 || index < first_done_) first_done_ = index;
     last_done_ = std::max(last_done_, index);
     for (int m = 0; m < 8; ++m) {
       // Moves are symmetric, so distances to the goal equal distances from it.
       const int32_t next = index + offset_[m];
-      if (!(open_[next] & open_[index + side_x_[m]] & open_[index + side_y_[m]])) continue;
+      const int32_t beside_x = side_x_[m] != 0 ? index + side_x_[m] : next;
+      const int32_t beside_y = side_y_[m] != 0 ? index + side_y_[m] * padded_width_ : next;
+      if (!(open_[next] & open_[beside_x] & open_[beside_y] & kFree)) continue;
       const double cost = field_[index] + kMoves[m].cost;
       if (cost < field_[next]) {
         field_[next] = cost;
@@ -142,19 +171,25 @@ void OctileWavefront::expandNextBucket() {
   }
   queued_ -= bucket.size();
   bucket.clear();
+  return true;
+}
+
+void OctileWavefront::expandOrWiden() {
+  if (expandNextBucket()) return;
+  startIn(reach_ > std::numeric_limits<int>::max() / 2 ? std::numeric_limits<int>::max() : 2 * reach_);
 }
 
 void OctileWavefront::growThroughBucket(int64_t last) {
-  while (queued_ > 0 && next_bucket_ <= last) expandNextBucket();
+  // Widening starts over at bucket 0 and comes back this far.
+  while (queued_ > 0 && next_bucket_ <= last) expandOrWiden();
 }
 
 void OctileWavefront::growUntilFinal(GridCell cell) {
-  if (cell.x < 0 || cell.y < 0 || cell.x >= width_ || cell.y >= height_) {
+  if (!grid_.inside(cell.x, cell.y)) {
     growThroughBucket(std::numeric_limits<int64_t>::max());  // never reached
     return;
   }
-  const int32_t index = padded(cell.x, cell.y);
-  while (queued_ > 0 && !done_[index]) expandNextBucket();
+  while (queued_ > 0 && !(inWindow(cell.x, cell.y) && done_[padded(cell.x, cell.y)])) expandOrWiden();
 }
 
 void OctileWavefront::growAround(GridCell start, double slack, double margin) {
@@ -170,38 +205,40 @@ bool OctileWavefront::finiteBounds(int& x0, int& y0, int& x1, int& y1) const {
   // Finite values are the finished cells and their neighbours: the rows of
   // the first and last finished cell, and in between each row's first and
   // last finished cell, grown by one.
-  const int row_first = first_done_ / padded_width_ - 1, row_last = last_done_ / padded_width_ - 1;
-  int col_first = width_, col_last = -1;
+  const int row_first = first_done_ / padded_width_ - 1 + window_y_;
+  const int row_last = last_done_ / padded_width_ - 1 + window_y_;
+  int col_first = window_width_, col_last = -1;
   for (int y = row_first; y <= row_last; ++y) {
-    const uint8_t* row = done_.data() + padded(0, y);
-    const uint8_t* first = std::find(row, row + width_, uint8_t{1});
-    if (first == row + width_) continue;
-    const uint8_t* last = std::find(std::make_reverse_iterator(row + width_), std::make_reverse_iterator(row),
+    const uint8_t* row = done_.data() + padded(window_x_, y);
+    const uint8_t* first = std::find(row, row + window_width_, uint8_t{1});
+    if (first == row + window_width_) continue;
+    const uint8_t* last = std::find(std::make_reverse_iterator(row + window_width_), std::make_reverse_iterator(row),
                                     uint8_t{1}).base() - 1;
     col_first = std::min(col_first, static_cast<int>(first - row));
     col_last = std::max(col_last, static_cast<int>(last - row));
   }
-  x0 = std::max(0, col_first - 1);
-  x1 = std::min(width_ - 1, col_last + 1);
+  x0 = std::max(0, window_x_ + col_first - 1);
+  x1 = std::min(grid_.width() - 1, window_x_ + col_last + 1);
   y0 = std::max(0, row_first - 1);
-  y1 = std::min(height_ - 1, row_last + 1);
+  y1 = std::min(grid_.height() - 1, row_last + 1);
   return true;
 }
 
 bool OctileWavefront::isFinal(int x, int y) const {
-  if (x < 0 || y < 0 || x >= width_ || y >= height_) return false;
-  return done_[padded(x, y)] != 0 || queued_ == 0;
+  if (!grid_.inside(x, y)) return false;
+  if (queued_ == 0) return true;
+  return inWindow(x, y) && done_[padded(x, y)] != 0;
 }
 
 double OctileWavefront::value(int x, int y) const {
-  if (x < 0 || y < 0 || x >= width_ || y >= height_) return kInfinity;
+  if (!inWindow(x, y)) return kInfinity;
   return field_[padded(x, y)];
 }
 
 std::vector<double> OctileWavefront::values() const {
-  std::vector<double> out(static_cast<size_t>(width_) * height_);
-  for (int y = 0; y < height_; ++y)
-    std::copy_n(field_.data() + padded(0, y), width_, out.data() + static_cast<size_t>(y) * width_);
+  std::vector<double> out(static_cast<size_t>(grid_.width()) * grid_.height(), kInfinity);
+  for (int y = window_y_; y < window_y_ + window_height_; ++y)
+    std::copy_n(field_.data() + padded(window_x_, y), window_width_, out.data() + grid_.index(window_x_, y));
   return out;
 }
 

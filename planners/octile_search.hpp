@@ -46,9 +46,15 @@ std::vector<double> octileDistanceField(const GridMap& grid, GridCell goal, Grid
 // order of distance, so a caller that needs only the near part of the field
 // (the cells within some travel, or until one cell is reached) pays for that
 // part only; grown to the end it is octileDistanceField.
+//
+// Its memory, too, covers only a window around the goal: `reach` cells on
+// each side at first, twice as many each time a finished cell lies on the
+// window's edge (then it starts again in the larger window). Every finished
+// cell's shortest path stays inside the window, so the values are those of
+// the whole grid.
 class OctileWavefront {
  public:
-  OctileWavefront(const GridMap& grid, GridCell goal);
+  OctileWavefront(GridMap grid, GridCell goal, int reach = std::numeric_limits<int>::max());
 
   // Finishes every bucket up to `last`: every cell nearer than last + 1 is final.
   void growThroughBucket(int64_t last);
@@ -71,12 +77,26 @@ class OctileWavefront {
   bool finiteBounds(int& x0, int& y0, int& x1, int& y1) const;
 
  private:
-  static constexpr int kRing = 4;  // a label lies within sqrt(2) of its parent's
-  int32_t padded(int x, int y) const { return static_cast<int32_t>((y + 1) * padded_width_ + x + 1); }
-  void expandNextBucket();
+  static constexpr int kRing = 4;        // a label lies within sqrt(2) of its parent's
+  static constexpr uint8_t kFree = 1;    // open_ flags
+  static constexpr uint8_t kOnEdge = 2;  // on the window's edge, inside the grid
+  // Starts over in the window of `reach` cells around the goal.
+  void startIn(int reach);
+  // False when it finished a cell on the window's edge (start over larger).
+  bool expandNextBucket();
+  void expandOrWiden();
+  bool inWindow(int x, int y) const {
+    return x >= window_x_ && y >= window_y_ && x < window_x_ + window_width_ && y < window_y_ + window_height_;
+  }
+  int32_t padded(int x, int y) const {
+    return static_cast<int32_t>((y - window_y_ + 1) * padded_width_ + (x - window_x_) + 1);
+  }
 
-  int width_ = 0, height_ = 0, padded_width_ = 0;
-  std::vector<uint8_t> open_;   // 1 = free; a ring of blocked cells frames the grid
+  GridMap grid_;
+  GridCell goal_;
+  int reach_ = 0;
+  int window_x_ = 0, window_y_ = 0, window_width_ = 0, window_height_ = 0, padded_width_ = 0;
+  std::vector<uint8_t> open_;   // kFree | kOnEdge; a ring of blocked cells frames the window
   std::vector<double> field_;
   std::vector<uint8_t> done_;
   std::vector<int32_t> ring_[kRing];

@@ -117,15 +117,21 @@ std::string PotentialFieldPlanner::name() const {
   return params_.target == TargetPotential::Geodesic ? "pf-geodesic" : "pf";
 }
 
-void PotentialFieldPlanner::setupMap() {
-  potential_ = obstaclePotential(map_->inflated(), params_.sigma);
-  obstacle_force_ = negativeGradient(potential_);
+// M_F is made at the first query: the geodesic field's particles stay where
+// its wavefront reached, so theirs is made per query over that region only.
+void PotentialFieldPlanner::setupMap() { obstacle_force_ = VectorField(); }
+
+float PotentialFieldPlanner::targetDistanceAt(int x, int y) const {
+  const int row = y - target_origin_.y, column = x - target_origin_.x;
+  if (row < 0 || column < 0 || row >= target_distance_.rows || column >= target_distance_.cols)
+    return std::numeric_limits<float>::infinity();
+  return target_distance_.at<float>(row, column);
 }
 
 double PotentialFieldPlanner::wavefrontAt(Point2 p) const {
-  const int x = std::clamp(static_cast<int>(std::floor(p.x)), 0, target_distance_.cols - 1);
-  const int y = std::clamp(static_cast<int>(std::floor(p.y)), 0, target_distance_.rows - 1);
-  return target_distance_.at<float>(y, x);
+  const int x = std::clamp(static_cast<int>(std::floor(p.x)), 0, map_->width() - 1);
+  const int y = std::clamp(static_cast<int>(std::floor(p.y)), 0, map_->height() - 1);
+  return targetDistanceAt(x, y);
 }
 
 bool PotentialFieldPlanner::canMove(Point2 from, Point2 to) const {
@@ -154,14 +160,14 @@ bool PotentialFieldPlanner::stepDownWavefront(Point2& p, Path& trace) const {
   const GridMap& grid = map_->inflated();
   const int x = std::clamp(static_cast<int>(std::floor(p.x)), 0, grid.width() - 1);
   const int y = std::clamp(static_cast<int>(std::floor(p.y)), 0, grid.height() - 1);
-  const float here = target_distance_.at<float>(y, x);
+  const float here = targetDistanceAt(x, y);
   if (!std::isfinite(here) || grid.blocked(x, y)) return false;
   int best_dx = 0, best_dy = 0;
   float best = here;
   for (int dy = -1; dy <= 1; ++dy) {
     for (int dx = -1; dx <= 1; ++dx) {
       if ((dx == 0 && dy == 0) || !moveAllowed(grid, x, y, dx, dy)) continue;
-      const float value = target_distance_.at<float>(y + dy, x + dx);
+      const float value = targetDistanceAt(x + dx, y + dy);
       if (value < best) {
         best = value;
         best_dx = dx;
@@ -284,14 +290,20 @@ Path PotentialFieldPlanner::solvePath(Point2 start, Point2 goal, const Deadline&
   if (params_.target == TargetPotential::Geodesic) {
     const GridCell start_cell{static_cast<int>(std::floor(start.x)), static_cast<int>(std::floor(start.y))};
     cv::Rect finite_region;
-    target_distance_ = geodesicTargetDistance(map_->inflated(), goal_cell, start_cell, &finite_region);
+    target_distance_ = geodesicTargetDistance(map_->inflated(), goal_cell, start_cell, finite_region);
+    target_origin_ = finite_region.tl();
     if (!std::isfinite(wavefrontAt(start))) {
       why_not = name() + ": goal unreachable from start";
       return {};
     }
-    target_force_ = negativeGradientFinite(target_distance_, finite_region);
+    target_force_ = negativeGradientFinite(target_distance_, target_origin_);
+    // Particles stay on finite cells; the region holds the cells around them too.
+    obstacle_force_ = obstacleForce(map_->inflated(), params_.sigma, finite_region);
   } else {
+    if (obstacle_force_.fx().empty() || obstacle_force_.fx().size() != cv::Size(map_->width(), map_->height()))
+      obstacle_force_ = obstacleForce(map_->inflated(), params_.sigma, cv::Rect(0, 0, map_->width(), map_->height()));
     target_distance_ = euclideanTargetDistance(map_->width(), map_->height(), goal_cell);
+    target_origin_ = cv::Point(0, 0);
     target_force_ = negativeGradient(target_distance_);
   }
   stats_["field_ms"] = std::chrono::duration<double, std::milli>(Deadline::Clock::now() - field_begin).count();

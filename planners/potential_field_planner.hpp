@@ -83,9 +83,10 @@ class PotentialFieldPlanner : public Planner {
 
   // Every particle's trace of the last solve, for pictures.
   const std::vector<Path>& particleTraces() const { return traces_; }
-  // The fields of the current map / last query (for pictures and tests).
-  const cv::Mat& obstaclePotentialMap() const { return potential_; }
+  // M_D of the last query (for pictures and tests): the geodesic one over
+  // its region only, whose top-left cell is targetDistanceOrigin().
   const cv::Mat& targetDistanceMap() const { return target_distance_; }
+  cv::Point targetDistanceOrigin() const { return target_origin_; }
 
  protected:
   void setupMap() override;
@@ -105,15 +106,16 @@ class PotentialFieldPlanner : public Planner {
   bool keepGeodesicHeadway(Point2& p, Point2 goal, bool moved, double& best_wavefront, int& steps_without_headway,
                            ParticleRun& run) const;
   double wavefrontAt(Point2 p) const;
+  float targetDistanceAt(int x, int y) const;  // +infinity outside M_D's region
   Point2 tryMove(Point2 p, Point2 move) const;
   bool canMove(Point2 from, Point2 to) const;
 
   PotentialFieldParams params_;
   std::string name_;  // "" for pf / pf-geodesic by the target potential
   uint64_t seed_ = 1;
-  cv::Mat potential_;        // M_P
-  VectorField obstacle_force_;  // M_F
+  VectorField obstacle_force_;  // M_F: of the whole map, or (geodesic) of the last query's region
   cv::Mat target_distance_;  // M_D of the last query
+  cv::Point target_origin_;  // the grid cell of its element (0, 0)
   VectorField target_force_;    // M_T of the last query
   std::vector<Path> traces_;
 };

@@ -5,12 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace beft::planners {
 
-VectorField::VectorField(cv::Mat fx, cv::Mat fy) : fx_(std::move(fx)), fy_(std::move(fy)) {}
+VectorField::VectorField(cv::Mat fx, cv::Mat fy, cv::Point origin)
+    : fx_(std::move(fx)), fy_(std::move(fy)), origin_(origin) {}
 
 Point2 VectorField::at(Point2 p) const {
+  p = Point2{p.x - origin_.x, p.y - origin_.y};
   const int w = fx_.cols;
   const int h = fx_.rows;
   const double u = std::clamp(p.x - 0.5, 0.0, w - 1.0);
@@ -29,21 +32,44 @@ Point2 VectorField::at(Point2 p) const {
   return {lerp(fx_), lerp(fy_)};
 }
 
-cv::Mat obstaclePotential(const GridMap& grid, double sigma) {
-  const int w = grid.width();
-  const int h = grid.height();
-  cv::Mat occupancy;
-  cv::Mat(h, w, CV_8U, const_cast<uint8_t*>(grid.cells().data())).convertTo(occupancy, CV_32F);  // cells are 0 / 1
-  const int pad = static_cast<int>(std::ceil(3 * sigma)) + 1;
-  cv::Mat padded;
-  cv::copyMakeBorder(occupancy, padded, pad, pad, pad, pad, cv::BORDER_CONSTANT, cv::Scalar(1.0));
+namespace {
+
+// Cells beyond which OpenCV's Gaussian kernel for float images (4 sigma on
+// each side) has no weight, plus one.
+int blurReach(double sigma) { return (cvRound(sigma * 8 + 1) | 1) / 2 + 1; }
+
+}  // namespace
+
+cv::Mat obstaclePotential(const GridMap& grid, double sigma, cv::Rect region) {
+  if (!(sigma > 0)) throw std::invalid_argument("the blur of M_O needs sigma > 0");
+  if (region.empty()) return cv::Mat(region.height, region.width, CV_32F);
+  const int reach = blurReach(sigma);
+  // The region with the blur's reach around it; outside the grid is obstacle.
+  const cv::Rect source(region.x - reach, region.y - reach, region.width + 2 * reach, region.height + 2 * reach);
+  cv::Mat occupancy(source.size(), CV_32F, cv::Scalar(1.0));
+  const cv::Rect inside = source & cv::Rect(0, 0, grid.width(), grid.height());
+  if (!inside.empty()) {
+    const cv::Mat cells(grid.height(), grid.width(), CV_8U, const_cast<uint8_t*>(grid.cells().data()));
+    cells(inside).convertTo(occupancy(inside - source.tl()), CV_32F);  // cells are 0 / 1
+  }
   cv::Mat blurred;
-  cv::GaussianBlur(padded, blurred, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
-  cv::Mat potential = blurred(cv::Rect(pad, pad, w, h)).clone();
-  double max_value = 0;
-  cv::minMaxLoc(potential, nullptr, &max_value);
-  if (max_value > 0) potential /= max_value;
+  // The copy's own border is farther than the kernel reaches from the region.
+  cv::GaussianBlur(occupancy, blurred, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
+  cv::Mat potential = blurred(cv::Rect(reach, reach, region.width, region.height)).clone();
+  cv::min(potential, 1.0, potential);  // a kernel summing to 1 within rounding
   return potential;
+}
+
+cv::Mat obstaclePotential(const GridMap& grid, double sigma) {
+  return obstaclePotential(grid, sigma, cv::Rect(0, 0, grid.width(), grid.height()));
+}
+
+VectorField obstacleForce(const GridMap& grid, double sigma, cv::Rect region) {
+  // One more cell around for the Sobel operator.
+  const cv::Rect around(region.x - 1, region.y - 1, region.width + 2, region.height + 2);
+  const VectorField whole = negativeGradient(obstaclePotential(grid, sigma, around));
+  const cv::Rect inner(1, 1, region.width, region.height);
+  return VectorField(whole.fx()(inner).clone(), whole.fy()(inner).clone(), region.tl());
 }
 
 VectorField negativeGradient(const cv::Mat& field) {
@@ -65,15 +91,21 @@ cv::Mat euclideanTargetDistance(int width, int height, GridCell goal) {
   return distance;
 }
 
-cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal, GridCell start, cv::Rect* finite_region) {
-  OctileWavefront wavefront(grid, goal);
+cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal, GridCell start, cv::Rect& region) {
+  // A window that holds the whole bounded field when the path is at most a
+  // third longer than the straight line; it widens by itself when not.
+  const double straight = octileHeuristic(goal, start);
+  const int reach = static_cast<int>(std::min(1e9, std::ceil(kGeodesicSlack * 1.34 * straight + kGeodesicMargin + 4)));
+  OctileWavefront wavefront(grid, goal, reach);
   wavefront.growAround(start, kGeodesicSlack, kGeodesicMargin);
-  cv::Mat distance(grid.height(), grid.width(), CV_32F, cv::Scalar(std::numeric_limits<float>::infinity()));
   int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
   if (!wavefront.finiteBounds(x0, y0, x1, y1)) {
-    if (finite_region) *finite_region = cv::Rect();
-    return distance;
+    region = cv::Rect();
+    return cv::Mat();
   }
+  // One more cell around, infinite (or the grid's edge): the gradient and the
+  // interpolation between cells read what they would over the whole grid.
+  region = cv::Rect(x0 - 1, y0 - 1, x1 - x0 + 3, y1 - y0 + 3) & cv::Rect(0, 0, grid.width(), grid.height());
   double max_value = 0;
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) {
@@ -81,21 +113,20 @@ cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal, GridCell star
       if (std::isfinite(d)) max_value = std::max(max_value, d);
     }
   const double scale = max_value > 0 ? 1.0 / max_value : 1.0;
+  cv::Mat distance(region.size(), CV_32F, cv::Scalar(std::numeric_limits<float>::infinity()));
   for (int y = y0; y <= y1; ++y) {
-    float* row = distance.ptr<float>(y);
+    float* row = distance.ptr<float>(y - region.y);
     for (int x = x0; x <= x1; ++x) {
       const double d = wavefront.value(x, y);
-      if (std::isfinite(d)) row[x] = static_cast<float>(d * scale);
+      if (std::isfinite(d)) row[x - region.x] = static_cast<float>(d * scale);
     }
   }
-  if (finite_region) *finite_region = cv::Rect(x0, y0, x1 - x0 + 1, y1 - y0 + 1);
   return distance;
 }
 
-VectorField negativeGradientFinite(const cv::Mat& field, cv::Rect finite_region) {
+VectorField negativeGradientFinite(const cv::Mat& field, cv::Point origin) {
   const int w = field.cols;
   const int h = field.rows;
-  if (finite_region.empty()) finite_region = cv::Rect(0, 0, w, h);
   cv::Mat gx(h, w, CV_32F, cv::Scalar(0));
   cv::Mat gy(h, w, CV_32F, cv::Scalar(0));
   const auto value = [&](int x, int y) {
@@ -110,15 +141,15 @@ VectorField negativeGradientFinite(const cv::Mat& field, cv::Rect finite_region)
     if (has_before) return here - before;
     return 0.0f;
   };
-  for (int y = finite_region.y; y < finite_region.y + finite_region.height; ++y) {
-    for (int x = finite_region.x; x < finite_region.x + finite_region.width; ++x) {
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
       const float here = value(x, y);
       if (!std::isfinite(here)) continue;
       gx.at<float>(y, x) = -slope(value(x - 1, y), here, value(x + 1, y));
       gy.at<float>(y, x) = -slope(value(x, y - 1), here, value(x, y + 1));
     }
   }
-  return VectorField(gx, gy);
+  return VectorField(gx, gy, origin);
 }
 
 }  // namespace beft::planners

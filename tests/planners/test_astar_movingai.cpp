@@ -197,6 +197,8 @@ TEST(OctileSearch, BoundedFieldIsTheFullFieldWithinItsLimit) {
   EXPECT_GT(beyond, 0) << "the bound cut nothing off";
 }
 
+// Grown in steps, in a window that starts small and widens, or over the
+// whole grid at once: the same cells final, with the same values.
 TEST(OctileWavefront, GrownBucketByBucketFinishesCellsInOrderOfDistance) {
   std::mt19937 rng(11);
   GridMap grid(90, 60);
@@ -204,30 +206,48 @@ TEST(OctileWavefront, GrownBucketByBucketFinishesCellsInOrderOfDistance) {
   const GridCell goal{20, 30};
   grid.setBlocked(goal.x, goal.y, false);
   const auto full = octileDistanceField(grid, goal);
-  OctileWavefront wavefront(grid, goal);
-  int checked_final = 0;
-  for (int64_t bucket = 0; !wavefront.exhausted(); bucket += 7) {
-    wavefront.growThroughBucket(bucket);
-    for (int y = 0; y < grid.height(); ++y)
-      for (int x = 0; x < grid.width(); ++x) {
-        const double expected = full[grid.index(x, y)];
-        if (wavefront.exhausted()) {
-          ASSERT_EQ(wavefront.value(x, y), expected);
-        } else if (expected < bucket + 1) {
-          ASSERT_TRUE(wavefront.isFinal(x, y)) << x << "," << y << " at bucket " << bucket;
-          ASSERT_EQ(wavefront.value(x, y), expected);
-          ++checked_final;
-        } else {
-          ASSERT_FALSE(wavefront.isFinal(x, y)) << x << "," << y << " at bucket " << bucket;
+  for (const int reach : {std::numeric_limits<int>::max(), 2, 9}) {
+    OctileWavefront wavefront(grid, goal, reach);
+    int checked_final = 0;
+    for (int64_t bucket = 0; !wavefront.exhausted(); bucket += 7) {
+      wavefront.growThroughBucket(bucket);
+      for (int y = 0; y < grid.height(); ++y)
+        for (int x = 0; x < grid.width(); ++x) {
+          const double expected = full[grid.index(x, y)];
+          if (wavefront.exhausted()) {
+            ASSERT_EQ(wavefront.value(x, y), expected);
+          } else if (expected < bucket + 1) {
+            ASSERT_TRUE(wavefront.isFinal(x, y)) << x << "," << y << " at bucket " << bucket << ", reach " << reach;
+            ASSERT_EQ(wavefront.value(x, y), expected);
+            ++checked_final;
+          } else {
+            ASSERT_FALSE(wavefront.isFinal(x, y)) << x << "," << y << " at bucket " << bucket << ", reach " << reach;
+          }
         }
-      }
+    }
+    EXPECT_GT(checked_final, 10000);
+    // Grown until one cell is final: that cell's distance is the full field's.
+    OctileWavefront to_one(grid, goal, reach);
+    to_one.growUntilFinal({85, 5});
+    EXPECT_TRUE(to_one.isFinal(85, 5));
+    EXPECT_EQ(to_one.value(85, 5), full[grid.index(85, 5)]);
+    // Bounded around a start, in a small window or not: the bounded field.
+    OctileWavefront around(grid, goal, reach);
+    around.growAround({70, 10}, 1.2, 5.0);
+    EXPECT_EQ(around.values(), octileDistanceField(grid, goal, {70, 10}, 1.2, 5.0)) << "reach " << reach;
   }
-  EXPECT_GT(checked_final, 10000);
-  // Grown until one cell is final: that cell's distance is the full field's.
-  OctileWavefront to_one(grid, goal);
-  to_one.growUntilFinal({85, 5});
-  EXPECT_TRUE(to_one.isFinal(85, 5));
-  EXPECT_EQ(to_one.value(85, 5), full[grid.index(85, 5)]);
+  // A walled-in goal: exhausted inside a small window, everything else unreachable.
+  GridMap box(40, 40);
+  box.fillRect(10, 10, 20, 10);
+  box.fillRect(10, 20, 20, 20);
+  box.fillRect(10, 10, 10, 20);
+  box.fillRect(20, 10, 20, 20);
+  OctileWavefront boxed(box, {15, 15}, 8);
+  boxed.growUntilFinal({35, 35});
+  EXPECT_TRUE(boxed.exhausted());
+  EXPECT_TRUE(boxed.isFinal(35, 35));
+  EXPECT_TRUE(std::isinf(boxed.value(35, 35)));
+  EXPECT_EQ(boxed.value(12, 12), std::sqrt(2.0) * 3);
 }
 
 class MovingAiFiles : public ::testing::Test {

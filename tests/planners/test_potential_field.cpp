@@ -34,6 +34,36 @@ TEST(PotentialFields, ObstaclePotentialIsNormalisedAndForcePointsAway) {
   EXPECT_NEAR(f.y, 0.0, 1e-3);
 }
 
+// M_P and M_F of a region are those of the whole grid there: a cell's value
+// depends only on the obstacles within the blur's reach.
+TEST(PotentialFields, ARegionsPotentialAndForceAreTheWholeGridsThere) {
+  std::mt19937 rng(8);
+  GridMap grid(150, 110);
+  for (int i = 0; i < 60; ++i) {
+    const int x = static_cast<int>(rng() % 150), y = static_cast<int>(rng() % 110);
+    grid.fillRect(x, y, x + static_cast<int>(rng() % 12), y + static_cast<int>(rng() % 12));
+  }
+  const cv::Rect whole(0, 0, grid.width(), grid.height());
+  const cv::Mat potential = obstaclePotential(grid, 3.0);
+  const VectorField force = obstacleForce(grid, 3.0, whole);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int x0 = static_cast<int>(rng() % 140), y0 = static_cast<int>(rng() % 100);
+    const cv::Rect region(x0, y0, 1 + static_cast<int>(rng() % (150 - x0)), 1 + static_cast<int>(rng() % (110 - y0)));
+    const cv::Mat part = obstaclePotential(grid, 3.0, region);
+    const VectorField part_force = obstacleForce(grid, 3.0, region);
+    for (int y = region.y; y < region.y + region.height; ++y)
+      for (int x = region.x; x < region.x + region.width; ++x) {
+        ASSERT_NEAR(part.at<float>(y - region.y, x - region.x), potential.at<float>(y, x), 1e-6) << x << "," << y;
+        const Point2 centre = cellCentre(x, y);
+        ASSERT_NEAR(part_force.at(centre).x, force.at(centre).x, 1e-6) << x << "," << y;
+        ASSERT_NEAR(part_force.at(centre).y, force.at(centre).y, 1e-6) << x << "," << y;
+      }
+  }
+  // The border repels like an obstacle: inward at the edges.
+  EXPECT_GT(force.at(cellCentre(0, 55)).x, 0.0);
+  EXPECT_LT(force.at(cellCentre(75, 109)).y, 0.0);
+}
+
 TEST(PotentialFields, TargetDistancesAreNormalisedAndGeodesicGoesAround) {
   GridMap grid(30, 30);
   grid.fillRect(15, 0, 15, 25);
@@ -43,7 +73,9 @@ TEST(PotentialFields, TargetDistancesAreNormalisedAndGeodesicGoesAround) {
   double hi = 0;
   cv::minMaxLoc(euclidean, nullptr, &hi);
   EXPECT_DOUBLE_EQ(hi, 1.0);
-  const cv::Mat geodesic = geodesicTargetDistance(grid, goal, {5, 5});
+  cv::Rect region;
+  const cv::Mat geodesic = geodesicTargetDistance(grid, goal, {5, 5}, region);
+  ASSERT_EQ(region, cv::Rect(0, 0, 30, 30));  // all of it within 1.5 times the start's distance
   EXPECT_TRUE(std::isinf(geodesic.at<float>(10, 15)));  // a wall cell
   // Across the wall from the goal the geodesic distance is far larger.
   EXPECT_GT(geodesic.at<float>(5, 5) / geodesic.at<float>(5, 24), 10.0f);
@@ -57,6 +89,7 @@ TEST(PotentialFields, TargetDistancesAreNormalisedAndGeodesicGoesAround) {
 // wavefront reached: the same as over the whole grid.
 TEST(PotentialFields, TheGeodesicFieldIsWorkedOnlyWhereItIsFinite) {
   std::mt19937 rng(4);
+  int regions_smaller = 0;
   for (int trial = 0; trial < 20; ++trial) {
     GridMap grid(160, 120);
     for (int i = 0; i < 40; ++i) {
@@ -65,39 +98,40 @@ TEST(PotentialFields, TheGeodesicFieldIsWorkedOnlyWhereItIsFinite) {
       else grid.fillRect(x, y, x + 1, y + static_cast<int>(rng() % 30));
     }
     const GridCell goal{static_cast<int>(rng() % 160), static_cast<int>(rng() % 120)};
-    const GridCell start{static_cast<int>(rng() % 160), static_cast<int>(rng() % 120)};
+    // Starts from next to the goal to across the grid.
+    const int spread = 10 + 15 * trial;
+    const GridCell start{std::clamp(goal.x + static_cast<int>(rng() % (2 * spread + 1)) - spread, 0, 159),
+                         std::clamp(goal.y + static_cast<int>(rng() % (2 * spread + 1)) - spread, 0, 119)};
     grid.setBlocked(goal.x, goal.y, false);
     cv::Rect region;
-    const cv::Mat geodesic = geodesicTargetDistance(grid, goal, start, &region);
-    // Every finite cell lies in the region.
-    int finite = 0;
-    for (int y = 0; y < grid.height(); ++y)
-      for (int x = 0; x < grid.width(); ++x)
-        if (std::isfinite(geodesic.at<float>(y, x))) {
-          ++finite;
-          ASSERT_TRUE(region.contains(cv::Point(x, y))) << "trial " << trial << " cell " << x << "," << y;
-        }
-    ASSERT_GT(finite, 0);
-    // The reference: the bounded octile field, normalised by its largest finite value.
+    const cv::Mat geodesic = geodesicTargetDistance(grid, goal, start, region);
+    ASSERT_FALSE(region.empty());
+    ASSERT_EQ(geodesic.size(), region.size());
+    // The reference: the bounded octile field over the whole grid, normalised
+    // by its largest finite value.
     const auto octile = octileDistanceField(grid, goal, start, kGeodesicSlack, kGeodesicMargin);
     double largest = 0;
     for (double d : octile)
       if (std::isfinite(d)) largest = std::max(largest, d);
+    cv::Mat reference(grid.height(), grid.width(), CV_32F);
     for (int y = 0; y < grid.height(); ++y)
       for (int x = 0; x < grid.width(); ++x) {
         const double d = octile[grid.index(x, y)];
-        const float expected = std::isfinite(d) ? static_cast<float>(d * (1.0 / largest)) : INFINITY;
-        ASSERT_EQ(geodesic.at<float>(y, x), expected);
+        reference.at<float>(y, x) = std::isfinite(d) ? static_cast<float>(d * (1.0 / largest)) : INFINITY;
+        const float got = region.contains(cv::Point(x, y)) ? geodesic.at<float>(y - region.y, x - region.x) : INFINITY;
+        ASSERT_EQ(got, reference.at<float>(y, x)) << "trial " << trial << " cell " << x << "," << y;
       }
-    // The gradient inside the region alone equals the gradient over the whole field.
-    const VectorField whole = negativeGradientFinite(geodesic);
-    const VectorField bounded = negativeGradientFinite(geodesic, region);
-    for (int i = 0; i < 2000; ++i) {
+    // M_T of the region alone is M_T of the whole grid, also read between cells.
+    const VectorField whole = negativeGradientFinite(reference);
+    const VectorField part = negativeGradientFinite(geodesic, region.tl());
+    for (int i = 0; i < 4000; ++i) {
       const Point2 p{(rng() % 16000) / 100.0, (rng() % 12000) / 100.0};
-      ASSERT_EQ(whole.at(p).x, bounded.at(p).x);
-      ASSERT_EQ(whole.at(p).y, bounded.at(p).y);
+      ASSERT_EQ(whole.at(p).x, part.at(p).x) << p.x << "," << p.y;
+      ASSERT_EQ(whole.at(p).y, part.at(p).y) << p.x << "," << p.y;
     }
+    regions_smaller += region.area() < grid.width() * grid.height() ? 1 : 0;
   }
+  EXPECT_GT(regions_smaller, 5);
 }
 
 TEST(PotentialFieldPlanner, PaperPlannerGoesAroundASimpleWall) {

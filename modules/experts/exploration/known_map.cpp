@@ -121,7 +121,9 @@ TravelField::TravelField(const KnownMap& map, double robot_x, double robot_y, do
           map.at(x, y) != obstacle_map_t::CELL_OCCUPIED)
         grid.setBlocked(x, y, false);
     }
-  wavefront_.emplace(grid, planners::GridCell{start.x, start.y});
+  // A window of 20 m around the robot at first: most questions are about nearer places.
+  const int first_reach = static_cast<int>(std::ceil(20.0 / resolution_));
+  wavefront_.emplace(std::move(grid), planners::GridCell{start.x, start.y}, first_reach);
 }
 
 double TravelField::at(int x, int y) const {
