@@ -1,7 +1,10 @@
 #include "vision_expert.hpp"
 
+#include <atomic>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include "camera_model.hpp"
 #include "channels.hpp"
@@ -102,26 +105,39 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
         " for tick " + std::to_string(firing.tick));
   try {
     // The map and the percepts need nothing of each other: the percepts are
-    // computed on the helper thread meanwhile (they touch only their own
-    // state). The map, the longer part, stays here: it starts at once, while
-    // the helper takes a wake-up to start.
-    visual_percepts_t percepts{};
+    // counted on the helper thread meanwhile (they touch only their own
+    // state). The map stays here: it starts at once, while the helper takes
+    // a wake-up to start. Expected pixels, the longest part, are counted by
+    // both threads: the helper starts on them, this thread takes the solids
+    // left when its map is done.
+    // Expected pixels only change with the camera or the objects' shapes and poses.
+    const bool recount =
+        expected_pose_.width == 0 || !samePose(*instance, expected_pose_) || !sameSolids(*scene, expected_scene_);
+    std::optional<camera::SceneGeometry> solids;
+    if (recount) {
+      solids.emplace(camera::SceneGeometry::fromMessage(*scene));
+      // Objects the real image cannot show at all are out of view: 0
+      // expected, O_v = 100, not counted.
+      ray_caster_.prepareExpectedInView(camera::cameraOfFrame(*instance));
+    }
+    std::atomic<size_t> next_solid{0};
+    std::vector<int> helper_counts, own_counts;
+    std::vector<int> visible;
     percepting_.start([&] {
-      // Expected pixels only change with the camera or the objects' shapes and poses.
-      if (expected_pose_.width == 0 || !samePose(*instance, expected_pose_) || !sameSolids(*scene, expected_scene_)) {
-        const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
-        // Objects the real image cannot show at all are out of view: 0
-        // expected, O_v = 100, not counted.
-        expected_ = ray_caster_.expectedPixelsInView(solids, camera::cameraOfFrame(*instance));
-        expected_pose_ = poseOf(*instance);
-        expected_scene_ = *scene;
-      }
-      const std::vector<int> visible = countVisiblePixels(*instance, *scene);
-      percepts = estimateVisualOcclusion(*scene, visible, expected_);
+      if (recount) ray_caster_.countExpected(*solids, next_solid, helper_counts);
+      visible = countVisiblePixels(*instance, *scene);
     });
     expert::WaitOnExit perceived(percepting_);  // also when the map throws
     updateMap(*scene, *depth, contact, firing.tick);
+    if (recount) ray_caster_.countExpected(*solids, next_solid, own_counts);
     percepting_.wait();  // an error of the percepts ends up below
+    if (recount) {
+      expected_ = std::move(own_counts);
+      for (size_t i = 0; i < expected_.size() && i < helper_counts.size(); ++i) expected_[i] += helper_counts[i];
+      expected_pose_ = poseOf(*instance);
+      expected_scene_ = *scene;
+    }
+    const visual_percepts_t percepts = estimateVisualOcclusion(*scene, visible, expected_);
     // Both at the end: a publish wakes the readers, who would take the cores from the work.
     vision_out_.publish(out, percepts);
     publishMap(*scene, firing.tick, out);

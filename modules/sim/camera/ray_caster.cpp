@@ -412,16 +412,24 @@ int RayCaster::threads() const { return workers_ ? workers_->threads() : 1; }
 
 std::vector<int> RayCaster::expectedPixelsPerObject(const SceneGeometry& scene, const Camera& camera,
                                                     const PixelRect* only_touching) {
+  prepareCamera(camera);
+  std::vector<int> counts;
+  std::atomic<size_t> next_solid{0};
+  countClaimedSolids(scene, camera, only_touching, next_solid, counts);
+  return counts;
+}
+
+void RayCaster::countClaimedSolids(const SceneGeometry& scene, const Camera& camera, const PixelRect* only_touching,
+                                   std::atomic<size_t>& next_solid, std::vector<int>& counts) const {
   // Rays only inside each solid's footprint, by the same formula (and order
   // of operations) as prepareRayRows, so the counts are those of full rays.
-  prepareCamera(camera);
-  std::vector<int> counts(std::max(scene.objectCount(), 0), 0);
+  counts.assign(std::max(scene.objectCount(), 0), 0);
   const CameraFrame& f = camera_frame_;
   const Eigen::Vector3d& o = f.origin;
   const double range = camera.intrinsics.range;
   LineInterval interval;
   const std::vector<Solid>& solids = scene.solids();
-  for (size_t s = 0; s < solids.size(); ++s) {
+  for (size_t s = next_solid.fetch_add(1); s < solids.size(); s = next_solid.fetch_add(1)) {
     const Solid& solid = solids[s];
     if (solid.object_index < 0 || solid.object_index >= static_cast<int>(counts.size())) continue;
     SolidFootprint footprint;
@@ -448,17 +456,29 @@ std::vector<int> RayCaster::expectedPixelsPerObject(const SceneGeometry& scene, 
     }
     counts[solid.object_index] += count;
   }
-  return counts;
+}
+
+void RayCaster::prepareExpectedInView(const Camera& real) {
+  expected_wide_ = withoutViewLimits(real);
+  expected_image_ = PixelRect{};
+  expected_image_.u0 = (expected_wide_.intrinsics.width - real.intrinsics.width) / 2;
+  expected_image_.v0 = (expected_wide_.intrinsics.height - real.intrinsics.height) / 2;
+  expected_image_.u1 = expected_image_.u0 + real.intrinsics.width - 1;
+  expected_image_.v1 = expected_image_.v0 + real.intrinsics.height - 1;
+  prepareCamera(expected_wide_);
+}
+
+void RayCaster::countExpected(const SceneGeometry& scene, std::atomic<size_t>& next_solid,
+                              std::vector<int>& counts) const {
+  countClaimedSolids(scene, expected_wide_, &expected_image_, next_solid, counts);
 }
 
 std::vector<int> RayCaster::expectedPixelsInView(const SceneGeometry& scene, const Camera& real) {
-  const Camera wide = withoutViewLimits(real);
-  PixelRect image;  // the real image on the wider plane
-  image.u0 = (wide.intrinsics.width - real.intrinsics.width) / 2;
-  image.v0 = (wide.intrinsics.height - real.intrinsics.height) / 2;
-  image.u1 = image.u0 + real.intrinsics.width - 1;
-  image.v1 = image.v0 + real.intrinsics.height - 1;
-  return expectedPixelsPerObject(scene, wide, &image);
+  prepareExpectedInView(real);
+  std::vector<int> counts;
+  std::atomic<size_t> next_solid{0};
+  countExpected(scene, next_solid, counts);
+  return counts;
 }
 
 RenderedFrame renderFrame(const SceneGeometry& scene, const Camera& camera, RenderMethod method) {

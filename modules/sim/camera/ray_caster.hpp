@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -81,6 +82,14 @@ class RayCaster {
   // occluded), and 0 for the objects the real image cannot show at all.
   std::vector<int> expectedPixelsInView(const SceneGeometry& scene, const Camera& real);
 
+  // expectedPixelsInView shared between threads: after prepareExpectedInView,
+  // every thread calls countExpected with its own counts (any number of
+  // threads, concurrently); each counts the solids it claims from
+  // `next_solid` until none is left. The counts summed are
+  // expectedPixelsInView's, however the solids fell to the threads.
+  void prepareExpectedInView(const Camera& real);
+  void countExpected(const SceneGeometry& scene, std::atomic<size_t>& next_solid, std::vector<int>& counts) const;
+
  private:
   struct SolidFootprint;  // a solid's covered pixel rectangle and nearest depth
   struct RowRays;         // one image row's rays and nearest hits (per thread, reused)
@@ -99,8 +108,14 @@ class RayCaster {
   // Depth, object and colour of row v's pixels into the row's own buffers.
   void shadeRow(const SceneGeometry& scene, RowRays& row) const;
 
+  // Counts into `counts` the solids claimed from next_solid (camera prepared).
+  void countClaimedSolids(const SceneGeometry& scene, const Camera& camera, const PixelRect* only_touching,
+                          std::atomic<size_t>& next_solid, std::vector<int>& counts) const;
+
   Camera camera_;
   CameraFrame camera_frame_{Camera{}};
+  Camera expected_wide_;           // of prepareExpectedInView
+  PixelRect expected_image_;       // the real image on expected_wide_'s plane
   int width_ = 0, height_ = 0;
   // Depend on the intrinsics only: per column a = (cx - (u + 0.5)) / f, per
   // row b likewise.

@@ -143,9 +143,10 @@ TEST(GeometryExpert, EveryObjectVisionCanReportHasAPercept) {
     std::set<std::string> kept;
     for (const auto& p : out.percepts) kept.insert(p.object_id);
     for (std::size_t i = 0; i < s.objects.size(); ++i) {
-      if (i < expected.size() && expected[i] > 0)
+      if (i < expected.size() && expected[i] > 0) {
         EXPECT_TRUE(kept.count(s.objects[i].id)) << "trial " << trial << ": " << s.objects[i].id << " in view ("
                                                  << expected[i] << " px) but left out";
+      }
     }
     left_out += static_cast<int>(s.objects.size() - kept.size());
     objects += static_cast<int>(s.objects.size());

@@ -328,7 +328,9 @@ TEST(VisionExpert, KeyframesAndChangesGiveTheMapOfEveryTick) {
     EXPECT_EQ(changed.latest.count(channels::kObstacleMap), tick % 4 == 0 ? 1u : 0u) << tick;
     const auto changes = changed.get<obstacle_map_changes_t>(channels::kObstacleMapChanges);
     EXPECT_EQ(changes.keyframe_tick, tick - tick % 4);
-    if (tick % 4 == 0) EXPECT_EQ(changes.width, 0);  // nothing changed since its own keyframe
+    if (tick % 4 == 0) {
+      EXPECT_EQ(changes.width, 0);  // nothing changed since its own keyframe
+    }
     EXPECT_EQ(publishedMap(changed).cells, publishedMap(whole).cells) << "tick " << tick;
     if (tick == 6) {
       // Killed after tick 6: restarted from the blackboard's keyframe (tick 4) and changes (tick 6).
@@ -341,7 +343,9 @@ TEST(VisionExpert, KeyframesAndChangesGiveTheMapOfEveryTick) {
       ASSERT_TRUE(restarted.fire(firingFor(tick, tick + 1), after_restart).ok);
       EXPECT_EQ(after_restart.latest.at(channels::kObstacleMapChanges),
                 changed.latest.at(channels::kObstacleMapChanges)) << "tick " << tick;
-      if (tick % 4 == 0) EXPECT_EQ(after_restart.latest.at(channels::kObstacleMap), changed.latest.at(channels::kObstacleMap));
+      if (tick % 4 == 0) {
+        EXPECT_EQ(after_restart.latest.at(channels::kObstacleMap), changed.latest.at(channels::kObstacleMap));
+      }
     }
   }
 }

@@ -2,6 +2,7 @@
 // view, the three render methods agreeing, and the frame messages.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <mutex>
@@ -116,6 +117,35 @@ TEST(Camera, ObjectOutsideTheFieldOfViewIsAbsent) {
   // Turned 50 degrees left, object 0 is straight ahead.
   const RenderedFrame turned = renderFrame(scene, levelCamera(0, 0, 1.5, 50));
   EXPECT_EQ(turned.object[60 * 160 + 80], 0);
+}
+
+// Counted by two threads claiming solids from one counter: summed, the
+// counts of one thread counting all.
+TEST(Camera, ExpectedPixelsCountedByTwoThreadsSumToOnesCounts) {
+  SceneGeometry scene;
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> along(1.0, 12.0), across(-8.0, 8.0);
+  for (int i = 0; i < 120; ++i) {
+    if (i % 2) scene.addCylinder(i, along(rng), across(rng), 0.0, 0.2 + 0.01 * (i % 30), 0.5 + 0.02 * (i % 50));
+    else scene.addBox(i, along(rng), across(rng), 0.0, 0.3 * i, 0.4 + 0.01 * (i % 40), 0.2 + 0.02 * (i % 20), 1.2);
+  }
+  scene.buildIndex();
+  const Camera real = levelCamera(0, 0, 1.5, 10);
+  RayCaster alone;
+  const std::vector<int> expected = alone.expectedPixelsInView(scene, real);
+  for (int round = 0; round < 20; ++round) {
+    RayCaster shared;
+    shared.prepareExpectedInView(real);
+    std::atomic<size_t> next_solid{0};
+    std::vector<int> first, second;
+    std::thread helper([&] { shared.countExpected(scene, next_solid, first); });
+    shared.countExpected(scene, next_solid, second);
+    helper.join();
+    ASSERT_EQ(first.size(), expected.size());
+    ASSERT_EQ(second.size(), expected.size());
+    for (size_t i = 0; i < expected.size(); ++i) ASSERT_EQ(first[i] + second[i], expected[i]) << "object " << i;
+  }
+  EXPECT_GT(std::count_if(expected.begin(), expected.end(), [](int n) { return n > 0; }), 20);
 }
 
 // On the widened camera, restricted to the real image's pixels: an object

@@ -318,7 +318,9 @@ TEST(WorldSimulation, TheGroundTruthInForceIsTheLastChangeOrKeyframe) {
     if (version.scene_tick == k) published.push_back(k);
     // Whatever tick it is, the ground truth in force says what the world does now.
     const bool sounding = world.groundTruth().objects[0].sound_active;
-    if (version.scene_tick != k) EXPECT_EQ(sounding, sounding_before) << "tick " << k;
+    if (version.scene_tick != k) {
+      EXPECT_EQ(sounding, sounding_before) << "tick " << k;
+    }
     sounding_before = sounding;
   }
   EXPECT_EQ(published, (std::vector<int64_t>{0, 12, 25, 30, 50}));
