@@ -432,7 +432,8 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
     size_t order;         // in the hypothesis list: the first of equal scores wins
     double gain;          // what its DW weight is worth [m]
     double least_score;
-    bool found = false;   // its best viewpoint is known
+    bool above = false;   // its score is known to be above least_score, not only at least
+    SightMemory sights;   // what its candidates' lines of sight showed when asked before
   };
   std::vector<Candidate> candidates;
   for (size_t i = 0; i < o.hypotheses.size(); ++i) {
@@ -443,52 +444,64 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
     const double gain = parameters_.weight_gain_m * std::max(0.0, h.weight);
     const double least_travel = std::hypot(h.x - o.robot_x, h.y - o.robot_y) -
                                 parameters_.viewpoints.max_distance_m - 1.5 * map->resolution();
-    candidates.push_back({&h, i, gain, std::max(0.0, least_travel) - gain});
+    candidates.push_back({&h, i, gain, std::max(0.0, least_travel) - gain, false, {}});
   }
   if (candidates.empty()) return false;
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const Candidate& a, const Candidate& b) { return a.least_score < b.least_score; });
 
-  // Rounds of growing reach. Round R looks, for every hypothesis that may
-  // score at most R, for a viewpoint scoring at most R: the best found beats
-  // every hypothesis without one (they score more than R), so the first round
-  // that finds one ends the search, and the travel field is grown only as far
-  // as that round's reach. The last round has no limit; only there is a
-  // hypothesis without any viewpoint known to have none.
+  // Best first: the hypothesis of the least possible score is asked for a
+  // viewpoint scoring at most a little more than the next one's least (the
+  // travel field grows only that far); without one, its least score rises to
+  // that limit and it waits its turn again. The search ends when no
+  // hypothesis left can beat the best found. Past kUnlimitedFrom the limit
+  // goes: only a hypothesis asked without one is known to have no viewpoint.
+  constexpr double kUnlimitedFrom = 256.0;  // [m]
+  const auto later = [&](size_t a, size_t b) {
+    const Candidate& x = candidates[a];
+    const Candidate& y = candidates[b];
+    return x.least_score != y.least_score ? x.least_score > y.least_score : x.order > y.order;
+  };
+  std::vector<size_t> queue(candidates.size());
+  for (size_t i = 0; i < queue.size(); ++i) queue[i] = i;
+  std::make_heap(queue.begin(), queue.end(), later);
   const TravelField travel(*map, o.robot_x, o.robot_y,
                            o.robot_radius + parameters_.safety_margin_m + map->resolution());
-  constexpr double kFirstReach = 16.0, kLastFiniteReach = 256.0;  // [m]
   const Candidate* best = nullptr;
   Viewpoint best_viewpoint;
   double best_score = 0;
-  for (double reach = kFirstReach; best == nullptr; reach *= 2) {
-    const bool last = reach > kLastFiniteReach;
-    if (last) reach = std::numeric_limits<double>::infinity();
-    for (Candidate& c : candidates) {
-      if (c.least_score > reach) break;
-      if (c.found) continue;
-      const HypothesisView& h = *c.hypothesis;
-      TargetMemory& memory = targets_[h.object_id];
-      const auto viewpoint =
-          chooseViewpoint(*map, travel, h.x, h.y, memory.tried, parameters_.viewpoints, reach + c.gain);
-      if (!viewpoint) {
-        if (last && !memory.no_viewpoint) d.log.push_back(h.object_id + ": no reachable viewpoint on the known map");
-        if (last) {
-          memory.no_viewpoint = true;
-          memory.retry_t = o.t + parameters_.retry_after_s;
-        }
+  while (!queue.empty()) {
+    std::pop_heap(queue.begin(), queue.end(), later);
+    Candidate& c = candidates[queue.back()];
+    queue.pop_back();
+    if (best != nullptr && (c.least_score > best_score || (c.above && c.least_score >= best_score))) break;
+    const double next_least = queue.empty() ? c.least_score : candidates[queue.front()].least_score;
+    double limit = std::max({next_least, c.least_score + std::max(4.0, 0.5 * std::abs(c.least_score)), 16.0});
+    if (best != nullptr) limit = std::min(limit, best_score);
+    const bool unlimited = limit > kUnlimitedFrom;
+    if (unlimited) limit = std::numeric_limits<double>::infinity();
+    const HypothesisView& h = *c.hypothesis;
+    TargetMemory& memory = targets_[h.object_id];
+    const auto viewpoint =
+        chooseViewpoint(*map, travel, h.x, h.y, memory.tried, parameters_.viewpoints, limit + c.gain, &c.sights);
+    if (!viewpoint) {
+      if (unlimited) {
+        if (!memory.no_viewpoint) d.log.push_back(h.object_id + ": no reachable viewpoint on the known map");
+        memory.no_viewpoint = true;
+        memory.retry_t = o.t + parameters_.retry_after_s;
         continue;
       }
-      c.found = true;
-      memory.no_viewpoint = false;
-      const double score = viewpoint->cost - c.gain;
-      if (best == nullptr || score < best_score || (score == best_score && c.order < best->order)) {
-        best = &c;
-        best_viewpoint = *viewpoint;
-        best_score = score;
-      }
+      c.least_score = limit;  // every viewpoint scores more
+      c.above = true;
+      queue.push_back(static_cast<size_t>(&c - candidates.data()));
+      std::push_heap(queue.begin(), queue.end(), later);
+      continue;
     }
-    if (last) break;
+    memory.no_viewpoint = false;
+    const double score = viewpoint->cost - c.gain;
+    if (best == nullptr || score < best_score || (score == best_score && c.order < best->order)) {
+      best = &c;
+      best_viewpoint = *viewpoint;
+      best_score = score;
+    }
   }
   if (best == nullptr) return false;
   const HypothesisView* target = best->hypothesis;

@@ -30,14 +30,21 @@ bool inLineOfSight(const KnownMap& map, double x, double y, double target_x, dou
 
 std::optional<Viewpoint> chooseViewpoint(const KnownMap& map, const TravelField& travel, double target_x,
                                          double target_y, const std::vector<Point>& tried,
-                                         const ViewpointParameters& parameters, double max_cost) {
+                                         const ViewpointParameters& parameters, double max_cost,
+                                         SightMemory* sights) {
   struct Candidate {
     Cell cell;
     double x, y, travel_m, base_cost;
+    size_t slot;  // in the candidate grid
   };
   std::vector<Candidate> candidates;
   const double pitch = std::max(parameters.candidate_spacing_m, map.resolution());
   const int reach = static_cast<int>(std::ceil(parameters.max_distance_m / pitch));
+  const size_t slots = static_cast<size_t>(2 * reach + 1) * (2 * reach + 1);
+  if (sights != nullptr && sights->clear.size() != slots) {
+    sights->clear.assign(slots, -1);
+    sights->unknown_m.assign(slots, 0.0);
+  }
   for (int j = -reach; j <= reach; ++j) {
     for (int i = -reach; i <= reach; ++i) {
       const double x = target_x + i * pitch, y = target_y + j * pitch;
@@ -54,7 +61,7 @@ std::optional<Viewpoint> chooseViewpoint(const KnownMap& map, const TravelField&
       if (near_tried) continue;
       const double base = travel_m + parameters.distance_cost *
                                          std::max(0.0, distance - parameters.preferred_distance_m);
-      candidates.push_back({cell, x, y, travel_m, base});
+      candidates.push_back({cell, x, y, travel_m, base, static_cast<size_t>(j + reach) * (2 * reach + 1) + (i + reach)});
     }
   }
   // Cheapest first; the line-of-sight test (the costly part) only until no
@@ -65,7 +72,17 @@ std::optional<Viewpoint> chooseViewpoint(const KnownMap& map, const TravelField&
   for (const auto& c : candidates) {
     if ((best && c.base_cost >= best->cost) || c.base_cost > max_cost) break;
     double unknown_m = 0;
-    if (!inLineOfSight(map, c.x, c.y, target_x, target_y, parameters, &unknown_m)) continue;
+    if (sights != nullptr && sights->clear[c.slot] >= 0) {
+      if (sights->clear[c.slot] == 0) continue;
+      unknown_m = sights->unknown_m[c.slot];
+    } else {
+      const bool clear = inLineOfSight(map, c.x, c.y, target_x, target_y, parameters, &unknown_m);
+      if (sights != nullptr) {
+        sights->clear[c.slot] = clear ? 1 : 0;
+        sights->unknown_m[c.slot] = unknown_m;
+      }
+      if (!clear) continue;
+    }
     const double cost = c.base_cost + parameters.unknown_cost * unknown_m;
     if (!best || cost < best->cost)
       best = Viewpoint{c.x, c.y, bearingDeg(c.x, c.y, target_x, target_y), c.travel_m, cost};

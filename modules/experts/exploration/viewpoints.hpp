@@ -4,6 +4,7 @@
 // preferring short travel and lines of sight through known free space.
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -41,13 +42,23 @@ struct Point {
 bool inLineOfSight(const KnownMap& map, double x, double y, double target_x, double target_y,
                    const ViewpointParameters& parameters, double* unknown_m = nullptr);
 
+// What the lines of sight from one target's candidate viewpoints showed, for
+// asking about the same target on the same map again (a search with a
+// higher max_cost): one entry per candidate of its grid.
+struct SightMemory {
+  std::vector<int8_t> clear;       // -1 not looked at yet, 0 blocked, 1 clear
+  std::vector<double> unknown_m;   // of the clear ones
+};
+
 // The cheapest viewpoint, or none. tried: viewpoints already used for this
 // target. With max_cost, only a viewpoint costing at most that: none then
 // means every viewpoint costs more (the travel field is searched no farther).
+// sights, when given, keeps what was looked at for the next call.
 std::optional<Viewpoint> chooseViewpoint(const KnownMap& map, const TravelField& travel, double target_x,
                                          double target_y, const std::vector<Point>& tried,
                                          const ViewpointParameters& parameters,
-                                         double max_cost = std::numeric_limits<double>::infinity());
+                                         double max_cost = std::numeric_limits<double>::infinity(),
+                                         SightMemory* sights = nullptr);
 
 // Bearing from (x0, y0) to (x1, y1), CCW from +x [deg].
 double bearingDeg(double x0, double y0, double x1, double y1);

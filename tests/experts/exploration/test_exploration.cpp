@@ -289,6 +289,16 @@ TEST(Viewpoints, WithAMaxCostTheSameViewpointOrNoneCheaper) {
       const double tx = x(rng), ty = y(rng);
       const auto unbounded = chooseViewpoint(map, travel, tx, ty, {}, ViewpointParameters{});
       if (!unbounded) continue;
+      // Asked again with growing limits, remembering the lines of sight: the same answers.
+      SightMemory sights;
+      const TravelField growing(map, 20.0, 15.0, 0.6);
+      for (const double max_cost : {unbounded->cost - 4.0, unbounded->cost - 0.5, unbounded->cost}) {
+        const auto again = chooseViewpoint(map, growing, tx, ty, {}, ViewpointParameters{}, max_cost, &sights);
+        ASSERT_EQ(again.has_value(), unbounded->cost <= max_cost);
+        if (again) {
+          EXPECT_EQ(again->cost, unbounded->cost);
+        }
+      }
       for (const double max_cost : {unbounded->cost, unbounded->cost + 2.0, unbounded->cost - 0.5}) {
         const TravelField fresh(map, 20.0, 15.0, 0.6);
         const auto bounded = chooseViewpoint(map, fresh, tx, ty, {}, ViewpointParameters{}, max_cost);
@@ -463,6 +473,48 @@ TEST(ExplorerChoice, AFarHypothesisThatMattersBeatsANearOneThatDoesNot) {
   ASSERT_FALSE(pushes.empty());
   EXPECT_EQ(pushes.front().object_id, "far");
   EXPECT_GT(std::hypot(pushes.front().x - o.robot_x, pushes.front().y - o.robot_y), 25.0);
+}
+
+// A hypothesis near the robot but behind a wall scores far more than its
+// straight-line bound; one farther off in the open scores a little less.
+// The search must not stop at the walled one: the open one's bound is below it.
+TEST(ExplorerChoice, AnOpenHypothesisBeatsANearerWalledOne) {
+  ExplorerParameters parameters;
+  parameters.look_around = false;
+  auto cells = makeCells(80, 30, kFree);
+  fillRect(cells, 32.0, 2.0, 32.2, 24.0, kOccupied);  // between the robot and the walled one
+  const KnownMap map(cells, 0.35 + parameters.safety_margin_m);
+  const TravelField travel(map, 30, 13, 0.35 + parameters.safety_margin_m + 0.1);
+  const auto walled = chooseViewpoint(map, travel, 34.5, 13, {}, parameters.viewpoints);
+  ASSERT_TRUE(walled);
+  // The open one, straight behind the robot, scoring about half a metre less.
+  const double open_x = 30 - (walled->cost + 3.5);
+  const auto open = chooseViewpoint(map, travel, open_x, 13, {}, parameters.viewpoints);
+  ASSERT_TRUE(open);
+  ASSERT_LT(open->cost, walled->cost);
+  ASSERT_GT(open->cost, walled->cost - 1.5);
+  Observation o;
+  o.map = std::make_shared<const planners::ObstacleCells>(cells);
+  o.map_version = 1;
+  o.robot_known = true;
+  o.robot_x = 30;
+  o.robot_y = 13;
+  o.robot_radius = 0.35;
+  o.stack_known = true;
+  for (const auto& [id, x] : {std::pair<const char*, double>{"walled", 34.5}, {"open", open_x}}) {
+    HypothesisView h;
+    h.object_id = id;
+    h.x = x;
+    h.y = 13;
+    h.heard = true;
+    h.best_category = "person";
+    h.confidence = h.person_confidence = 0.7;
+    o.hypotheses.push_back(h);
+  }
+  Explorer explorer(parameters);
+  const auto pushes = pushesOf(explorer.step(o));
+  ASSERT_FALSE(pushes.empty());
+  EXPECT_EQ(pushes.front().object_id, "open");
 }
 
 class ExplorerRun : public ::testing::Test {
