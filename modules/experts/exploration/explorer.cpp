@@ -526,9 +526,9 @@ bool Explorer::startExploreJob(const Observation& o, Decision& d) {
   const KnownMap* map = knownMap(o);
   if (map == nullptr) return false;
   const TravelField travel(*map, o.robot_x, o.robot_y, o.robot_radius + parameters_.safety_margin_m + map->resolution());
-  const auto goals = findFrontiers(*map, travel, memory_);
-  if (goals.empty()) return false;
-  const FrontierGoal& goal = goals.front();
+  const auto cheapest = cheapestFrontier(*map, travel, memory_, {o.robot_x, o.robot_y});
+  if (!cheapest) return false;
+  const FrontierGoal& goal = *cheapest;
   Job job;
   job.kind = JobKind::Explore;
   job.x = goal.x;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <beft/obstacle_map_t.hpp>
 
@@ -52,15 +53,13 @@ bool isFrontierCell(const KnownMap& map, const ExplorationMemory& memory, int x,
   return false;
 }
 
-std::vector<FrontierGoal> findFrontiers(const KnownMap& map, const TravelField& travel, ExplorationMemory& memory) {
+std::vector<std::vector<Cell>> frontierClusters(const KnownMap& map, ExplorationMemory& memory) {
   memory.prepare(map);
-  const FrontierParameters& parameters = memory.parameters();
   const int w = map.width(), h = map.height();
   std::vector<uint8_t> mask(static_cast<size_t>(w) * h, 0);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) mask[static_cast<size_t>(y) * w + x] = isFrontierCell(map, memory, x, y) ? 1 : 0;
-
-  std::vector<FrontierGoal> goals;
+  std::vector<std::vector<Cell>> clusters;
   std::vector<Cell> cluster, stack;
   for (int y0 = 0; y0 < h; ++y0)
     for (int x0 = 0; x0 < w; ++x0) {
@@ -81,39 +80,131 @@ std::vector<FrontierGoal> findFrontiers(const KnownMap& map, const TravelField& 
             stack.push_back({x, y});
           }
       }
-      if (static_cast<int>(cluster.size()) < parameters.min_cells) continue;
-      // The goal: the frontier cell the robot reaches soonest (ties: first found).
-      const Cell* best = nullptr;
-      for (const auto& c : cluster)
-        if (map.standable(c.x, c.y) && travel.reachable(c.x, c.y) &&
-            (best == nullptr || travel.at(c.x, c.y) < travel.at(best->x, best->y)))
-          best = &c;
-      if (best == nullptr) continue;
-      FrontierGoal goal;
-      goal.x = map.centreX(best->x);
-      goal.y = map.centreY(best->y);
-      goal.travel_m = travel.at(best->x, best->y);
-      goal.size = static_cast<int>(cluster.size());
-      goal.cost = goal.travel_m - parameters.size_gain * goal.size * map.resolution();
-      // Face the unknown side of this frontier near the goal: the sum of the
-      // steps from its cells into their unknown neighbours.
-      double sx = 0, sy = 0;
-      for (const auto& c : cluster) {
-        if (std::hypot(map.centreX(c.x) - goal.x, map.centreY(c.y) - goal.y) > parameters.facing_radius_m) continue;
-        for (const auto& n : kNeighbours4) {
-          const int nx = c.x + n[0], ny = c.y + n[1];
-          if (map.inside(nx, ny) && map.at(nx, ny) == obstacle_map_t::CELL_UNKNOWN && !memory.unknownIgnored(nx, ny)) {
-            sx += n[0];
-            sy += n[1];
-          }
-        }
-      }
-      goal.yaw = (sx == 0 && sy == 0) ? 0.0 : std::atan2(sy, sx) * 180.0 / M_PI;
-      goals.push_back(goal);
+      if (static_cast<int>(cluster.size()) >= memory.parameters().min_cells) clusters.push_back(cluster);
     }
+  return clusters;
+}
+
+namespace {
+
+// The goal of a frontier at its cell `best`, `travel_m` from the robot,
+// facing the unknown side of the frontier near it: the sum of the steps from
+// its cells into their unknown neighbours.
+FrontierGoal goalAt(const KnownMap& map, const ExplorationMemory& memory, const std::vector<Cell>& cluster,
+                    const Cell& best, double travel_m) {
+  const FrontierParameters& parameters = memory.parameters();
+  FrontierGoal goal;
+  goal.x = map.centreX(best.x);
+  goal.y = map.centreY(best.y);
+  goal.travel_m = travel_m;
+  goal.size = static_cast<int>(cluster.size());
+  goal.cost = goal.travel_m - parameters.size_gain * goal.size * map.resolution();
+  double sx = 0, sy = 0;
+  for (const auto& c : cluster) {
+    if (std::hypot(map.centreX(c.x) - goal.x, map.centreY(c.y) - goal.y) > parameters.facing_radius_m) continue;
+    for (const auto& n : kNeighbours4) {
+      const int nx = c.x + n[0], ny = c.y + n[1];
+      if (map.inside(nx, ny) && map.at(nx, ny) == obstacle_map_t::CELL_UNKNOWN && !memory.unknownIgnored(nx, ny)) {
+        sx += n[0];
+        sy += n[1];
+      }
+    }
+  }
+  goal.yaw = (sx == 0 && sy == 0) ? 0.0 : std::atan2(sy, sx) * 180.0 / M_PI;
+  return goal;
+}
+
+// The frontier cell the robot reaches soonest within limit_m (the first of
+// equals), if any.
+const Cell* nearestCell(const KnownMap& map, const TravelField& travel, const std::vector<Cell>& cluster,
+                        double limit_m, double& travel_m) {
+  const Cell* best = nullptr;
+  for (const auto& c : cluster) {
+    if (!map.standable(c.x, c.y)) continue;
+    const double t = travel.within(c.x, c.y, limit_m);
+    if (std::isfinite(t) && (best == nullptr || t < travel_m)) {
+      best = &c;
+      travel_m = t;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<FrontierGoal> findFrontiers(const KnownMap& map, const TravelField& travel, ExplorationMemory& memory) {
+  std::vector<FrontierGoal> goals;
+  for (const auto& cluster : frontierClusters(map, memory)) {
+    double travel_m = 0;
+    const Cell* best = nearestCell(map, travel, cluster, std::numeric_limits<double>::infinity(), travel_m);
+    if (best != nullptr) goals.push_back(goalAt(map, memory, cluster, *best, travel_m));
+  }
   std::stable_sort(goals.begin(), goals.end(),
                    [](const FrontierGoal& a, const FrontierGoal& b) { return a.cost < b.cost; });
   return goals;
+}
+
+std::optional<FrontierGoal> cheapestFrontier(const KnownMap& map, const TravelField& travel,
+                                             ExplorationMemory& memory, Point robot) {
+  const std::vector<std::vector<Cell>> clusters = frontierClusters(map, memory);
+  if (clusters.empty()) return std::nullopt;
+  // Each frontier's least possible cost: travel is never shorter than the
+  // straight line to its nearest cell, less a cell's diagonal.
+  struct Candidate {
+    size_t order;        // in the scan: the first of equal costs wins
+    double gain;         // what its size is worth [m]
+    double least_cost;
+    bool above = false;  // its cost is known to be above least_cost, not only at least
+  };
+  std::vector<Candidate> candidates;
+  for (size_t i = 0; i < clusters.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& c : clusters[i])
+      nearest = std::min(nearest, std::hypot(map.centreX(c.x) - robot.x, map.centreY(c.y) - robot.y));
+    const double gain = memory.parameters().size_gain * static_cast<double>(clusters[i].size()) * map.resolution();
+    candidates.push_back({i, gain, std::max(0.0, nearest - 1.5 * map.resolution()) - gain});
+  }
+  // Best first, as the explorer picks its targets: the frontier of the least
+  // possible cost is asked for a goal costing a little more than the next
+  // one's least, and waits its turn again with a higher least when it has
+  // none that near. Past kUnlimitedFrom it is asked without a limit.
+  constexpr double kUnlimitedFrom = 256.0;  // [m]
+  const auto later = [&](size_t a, size_t b) {
+    const Candidate& x = candidates[a];
+    const Candidate& y = candidates[b];
+    return x.least_cost != y.least_cost ? x.least_cost > y.least_cost : x.order > y.order;
+  };
+  std::vector<size_t> queue(candidates.size());
+  for (size_t i = 0; i < queue.size(); ++i) queue[i] = i;
+  std::make_heap(queue.begin(), queue.end(), later);
+  std::optional<FrontierGoal> best;
+  size_t best_order = 0;
+  while (!queue.empty()) {
+    std::pop_heap(queue.begin(), queue.end(), later);
+    Candidate& c = candidates[queue.back()];
+    queue.pop_back();
+    if (best && (c.least_cost > best->cost || (c.above && c.least_cost >= best->cost))) break;
+    const double next_least = queue.empty() ? c.least_cost : candidates[queue.front()].least_cost;
+    double limit = std::max({next_least, c.least_cost + std::max(4.0, 0.5 * std::abs(c.least_cost)), 16.0});
+    if (best) limit = std::min(limit, best->cost);
+    if (limit > kUnlimitedFrom) limit = std::numeric_limits<double>::infinity();
+    double travel_m = 0;
+    const Cell* cell = nearestCell(map, travel, clusters[c.order], limit + c.gain, travel_m);
+    if (cell == nullptr) {
+      if (std::isinf(limit)) continue;  // unreachable
+      c.least_cost = limit;             // every cell costs more
+      c.above = true;
+      queue.push_back(static_cast<size_t>(&c - candidates.data()));
+      std::push_heap(queue.begin(), queue.end(), later);
+      continue;
+    }
+    const FrontierGoal goal = goalAt(map, memory, clusters[c.order], *cell, travel_m);
+    if (!best || goal.cost < best->cost || (goal.cost == best->cost && c.order < best_order)) {
+      best = goal;
+      best_order = c.order;
+    }
+  }
+  return best;
 }
 
 bool frontierNear(const KnownMap& map, ExplorationMemory& memory, double x, double y, double radius) {

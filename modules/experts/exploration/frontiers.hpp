@@ -8,6 +8,7 @@
 // visited (what stayed unknown from there cannot be seen from there).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "known_map.hpp"
@@ -64,8 +65,19 @@ struct FrontierGoal {
 // 4-adjacent to an unknown cell not near where the robot stood.
 bool isFrontierCell(const KnownMap& map, const ExplorationMemory& memory, int x, int y);
 
-// Every reachable frontier, cheapest first. Calls memory.prepare(map).
+// Every frontier of at least min_cells cells, each in the order its cells
+// were found (row by row). Calls memory.prepare(map).
+std::vector<std::vector<Cell>> frontierClusters(const KnownMap& map, ExplorationMemory& memory);
+
+// Every reachable frontier, cheapest first (the first found of equals).
+// Calls memory.prepare(map).
 std::vector<FrontierGoal> findFrontiers(const KnownMap& map, const TravelField& travel, ExplorationMemory& memory);
+
+// findFrontiers' first, searched outwards from the robot (the travel field
+// of the robot at `robot`): far frontiers are not reached for when a near
+// one is cheaper than they can be.
+std::optional<FrontierGoal> cheapestFrontier(const KnownMap& map, const TravelField& travel,
+                                             ExplorationMemory& memory, Point robot);
 
 // True while some frontier cell remains within radius of (x, y).
 bool frontierNear(const KnownMap& map, ExplorationMemory& memory, double x, double y, double radius);

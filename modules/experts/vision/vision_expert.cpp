@@ -1,5 +1,6 @@
 #include "vision_expert.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <optional>
@@ -26,9 +27,10 @@ std::string VisionExpert::description() const {
          "occupied cell is cleared only when a ray crosses it below obstacle_min_height (so a "
          "person who walked away stops blocking the map). The map covers the world of "
          "GT_OBJECTS at --param resolution and accumulates over the run. Reads GT_OBJECTS, "
-         "CAMERA_DEPTH, CAMERA_INSTANCE and CONTACT of the fired tick, writes VISION and OBSTACLE_MAP "
-         "(RLE). When (re)started during a run it resumes from the last OBSTACLE_MAP on the "
-         "blackboard. A contact of the platform (CONTACT touching, at x/y) marks the "
+         "CAMERA_DEPTH, CAMERA_INSTANCE and CONTACT of the fired tick, writes VISION, OBSTACLE_MAP "
+         "(the whole map at keyframes), OBSTACLE_MAP_CHANGES (every tick) and OBSTACLE_MAP_FELT (every "
+         "contact marked so far, every tick). When (re)started during a run it resumes from the last "
+         "of these on the blackboard. A contact of the platform (CONTACT touching, at x/y) marks the "
          "cells within contact_radius of a contact_width segment across the motion OCCUPIED for good, like a bumper: what the camera could not map is "
          "not driven into twice. To run it alone: start beft-world and feed FIRE tokens for 'vision' (or run "
          "the arbiter), and watch VISION with lcm-spy.";
@@ -165,6 +167,11 @@ void VisionExpert::publishMap(const scene_objects_t& scene, int64_t tick, expert
   changes_message_.utime = scene.utime;
   changes_message_.tick = tick;
   map_changes_out_.publish(out, changes_message_);
+  felt_.utime = scene.utime;
+  felt_.tick = tick;
+  felt_.width = felt_.num_contacts > 0 ? felt_.width : contact_width_;
+  felt_.radius = felt_.num_contacts > 0 ? felt_.radius : contact_radius_;
+  felt_out_.publish(out, felt_);
 }
 
 // Starts from the map this expert published before a restart, if it covers
@@ -173,6 +180,8 @@ void VisionExpert::publishMap(const scene_objects_t& scene, int64_t tick, expert
 void VisionExpert::resumeMap(int64_t first_tick) {
   std::optional<obstacle_map_changes_t> changes = std::move(resume_changes_);
   resume_changes_.reset();
+  std::optional<felt_contacts_t> felt = std::move(resume_felt_);
+  resume_felt_.reset();
   if (!resume_map_) return;
   const obstacle_map_t map = std::move(*resume_map_);
   resume_map_.reset();
@@ -191,12 +200,29 @@ void VisionExpert::resumeMap(int64_t first_tick) {
     const bool with_changes = changes && changes->keyframe_tick == map.tick && changes->tick < first_tick;
     if (with_changes) planners::applyMapChanges(*changes, cells);
     mapper_->restoreCells(cells.cells);
+    // The contacts marked before: their cells stay safe from being cleared.
+    // Marked already in the map, they change no cell.
+    if (felt && felt->tick < first_tick) {
+      const size_t count = std::min({felt->x.size(), felt->y.size(), felt->heading.size()});
+      for (size_t i = 0; i < count; ++i) markContact(felt->x[i], felt->y[i], felt->heading[i], felt->width, felt->radius);
+    }
     if (with_changes) mapper_->restoreChanged({changes->x0, changes->y0, changes->width, changes->height});
     map_keyframe_ = map;
-    log::info("resumed the obstacle map of tick ", with_changes ? changes->tick : map.tick, " from the blackboard");
+    log::info("resumed the obstacle map of tick ", with_changes ? changes->tick : map.tick, " from the blackboard, ",
+              felt_.num_contacts, " contacts marked");
   } catch (const std::exception& e) {
     log::warn("obstacle map of tick ", map.tick, " on the blackboard is unusable (", e.what(), "): starting empty");
   }
+}
+
+void VisionExpert::markContact(double x, double y, double heading, double width, double radius) {
+  mapper_->markContact(x, y, heading, width, radius);
+  felt_.width = width;
+  felt_.radius = radius;
+  felt_.x.push_back(x);
+  felt_.y.push_back(y);
+  felt_.heading.push_back(heading);
+  felt_.num_contacts = static_cast<int32_t>(felt_.x.size());
 }
 
 void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t& depth, const contact_t* contact,
@@ -206,6 +232,7 @@ void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t&
     mapper_ = std::make_unique<ObstacleMapper>(scene.world_width, scene.world_height, map_config_);
     map_keyframe_.reset();
     changes_message_version_ = 0;
+    felt_ = felt_contacts_t{};
     resumeMap(tick);
     mapped_world_width_ = scene.world_width;
     mapped_world_height_ = scene.world_height;
@@ -215,7 +242,7 @@ void VisionExpert::updateMap(const scene_objects_t& scene, const camera_frame_t&
   if (tick == last_mapped_tick_) return;  // a re-sent FIRE: this frame is in the map already
   last_mapped_tick_ = tick;
   if (contact != nullptr && contact->touching && contact_radius_ > 0)
-    mapper_->markContact(contact->x, contact->y, contact->heading, contact_width_, contact_radius_);
+    markContact(contact->x, contact->y, contact->heading, contact_width_, contact_radius_);
   // The same image from the same pose adds nothing (integrating is
   // idempotent): a robot standing in a still scene costs no mapping.
   if (sameView(depth, last_depth_)) return;

@@ -12,6 +12,7 @@
 #include <beft/camera_frame_t.hpp>
 #include <beft/obstacle_map_t.hpp>
 #include <beft/contact_t.hpp>
+#include <beft/felt_contacts_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
 #include "expert.hpp"
@@ -35,6 +36,8 @@ class VisionExpert : public expert::Expert {
  private:
   void updateMap(const scene_objects_t& scene, const camera_frame_t& depth, const contact_t* contact, int64_t tick);
   void resumeMap(int64_t first_tick);
+  // Marks a contact on the map and remembers it for OBSTACLE_MAP_FELT.
+  void markContact(double x, double y, double heading, double width, double radius);
   // Same camera pose and intrinsics (the pixels aside).
   static bool samePose(const camera_frame_t& a, const camera_frame_t& b);
   // The frame's header, without its pixels: what samePose compares.
@@ -50,9 +53,11 @@ class VisionExpert : public expert::Expert {
   std::unique_ptr<ObstacleMapper> mapper_;
   double mapped_world_width_ = 0, mapped_world_height_ = 0;
   int64_t last_mapped_tick_ = -1;
-  // Published before this process started: the last keyframe and changes.
+  // Published before this process started: the last keyframe, changes and contacts.
   std::optional<obstacle_map_t> resume_map_;
   std::optional<obstacle_map_changes_t> resume_changes_;
+  std::optional<felt_contacts_t> resume_felt_;
+  felt_contacts_t felt_{};  // every contact marked so far
   camera_frame_t last_depth_{};        // the depth frame last added to the map
   int64_t map_keyframe_ticks_ = 100;   // OBSTACLE_MAP at multiples of this, OBSTACLE_MAP_CHANGES every tick
   std::optional<obstacle_map_t> map_keyframe_;  // the whole map last published
@@ -78,9 +83,13 @@ class VisionExpert : public expert::Expert {
       *this, channels::kObstacleMapChanges,
       [this](obstacle_map_changes_t&& changes) { resume_changes_ = std::move(changes); },
       [this] { return mapper_ == nullptr; }};
+  expert::HandledInput<felt_contacts_t> previous_felt_{
+      *this, channels::kObstacleMapFelt, [this](felt_contacts_t&& felt) { resume_felt_ = std::move(felt); },
+      [this] { return mapper_ == nullptr; }};
   expert::OutputPort<visual_percepts_t> vision_out_{*this, channels::kVision};
   expert::OutputPort<obstacle_map_t> obstacle_map_out_{*this, channels::kObstacleMap};
   expert::OutputPort<obstacle_map_changes_t> map_changes_out_{*this, channels::kObstacleMapChanges};
+  expert::OutputPort<felt_contacts_t> felt_out_{*this, channels::kObstacleMapFelt};
 
   void publishMap(const scene_objects_t& scene, int64_t tick, expert::Output& out);
 };

@@ -20,6 +20,7 @@
 #include <beft/scene_version_t.hpp>
 #include <beft/done_t.hpp>
 #include <beft/dynamic_weights_t.hpp>
+#include <beft/felt_contacts_t.hpp>
 #include <beft/fire_t.hpp>
 #include <beft/geometry_percepts_t.hpp>
 #include <beft/heartbeat_t.hpp>
@@ -87,6 +88,7 @@ std::ostream& operator<<(std::ostream& out, Channel<Message> channel) { return o
   X(kVision, "VISION", visual_percepts_t)                                                     \
   X(kObstacleMap, "OBSTACLE_MAP", obstacle_map_t) /* at keyframes: the whole map */          \
   X(kObstacleMapChanges, "OBSTACLE_MAP_CHANGES", obstacle_map_changes_t) /* every tick */      \
+  X(kObstacleMapFelt, "OBSTACLE_MAP_FELT", felt_contacts_t) /* every tick: contacts marked */  \
   X(kAudio, "AUDIO", acoustic_percepts_t)                                                     \
   /* Mid-level experts. */                                                                   \
   X(kLabelsVisual, "LABELS_VISUAL", labels_t)                                                 \
@@ -140,7 +142,7 @@ inline const std::vector<ChannelEntry>& allChannels() {
 inline bool isDataPlaneChannel(const std::string& channel) {
   static const std::set<std::string> names = {
       kGroundTruth.name, kSceneVersion.name, kRobotState.name,  kContact.name,        kCameraColor.name,    kCameraDepth.name,    kCameraInstance.name,
-      kEars.name,        kGeometry.name,    kVision.name,      kObstacleMap.name, kObstacleMapChanges.name, kAudio.name,          kLabelsVisual.name,
+      kEars.name,        kGeometry.name,    kVision.name,      kObstacleMap.name, kObstacleMapChanges.name, kObstacleMapFelt.name, kAudio.name,          kLabelsVisual.name,
       kLabelsAcoustic.name, kHypotheses.name, kHypothesisChanges.name, kDynamicWeights.name, kTaskStack.name,   kTaskCommand.name,
       kRobotCommand.name,   kPlanRequest.name};
   return names.count(channel) > 0;

@@ -319,6 +319,39 @@ TEST(Viewpoints, WithAMaxCostTheSameViewpointOrNoneCheaper) {
   EXPECT_GT(none, 20);
 }
 
+// Searched outwards from the robot, the cheapest frontier is the first of
+// every frontier's list, in long worlds with unknown patches near and far.
+TEST(Frontiers, TheCheapestSearchedOutwardsIsTheFirstOfTheList) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> x(1, 139), y(1, 19);
+  int compared = 0, far = 0;
+  for (int world = 0; world < 40; ++world) {
+    auto cells = randomWorld(rng, 140, 20);
+    for (int patch = 0; patch < 1 + world % 6; ++patch) {
+      const double px = x(rng), py = y(rng);
+      fillRect(cells, px, py, px + 2 + world % 5, py + 2, kUnknown);
+    }
+    const KnownMap map(cells, 0.45);
+    const Point robot{x(rng), y(rng)};
+    const TravelField for_list(map, robot.x, robot.y, 0.6), for_search(map, robot.x, robot.y, 0.6);
+    ExplorationMemory listed, searched;
+    for (auto* memory : {&listed, &searched}) memory->addStood(robot);
+    const auto goals = findFrontiers(map, for_list, listed);
+    const auto cheapest = cheapestFrontier(map, for_search, searched, robot);
+    ASSERT_EQ(cheapest.has_value(), !goals.empty()) << "world " << world;
+    if (!cheapest) continue;
+    EXPECT_EQ(cheapest->x, goals.front().x) << "world " << world;
+    EXPECT_EQ(cheapest->y, goals.front().y) << "world " << world;
+    EXPECT_EQ(cheapest->yaw, goals.front().yaw) << "world " << world;
+    EXPECT_EQ(cheapest->travel_m, goals.front().travel_m) << "world " << world;
+    EXPECT_EQ(cheapest->size, goals.front().size) << "world " << world;
+    ++compared;
+    far += cheapest->travel_m > 30 ? 1 : 0;
+  }
+  EXPECT_GT(compared, 30);
+  EXPECT_GT(far, 2);
+}
+
 // Drives an Explorer through a scripted run: a small fake task stack that
 // gives ids to pushed tasks and removes finished ones.
 class FakeStack {

@@ -6,6 +6,7 @@
 
 #include <beft/obstacle_map_t.hpp>
 #include <beft/contact_t.hpp>
+#include <beft/felt_contacts_t.hpp>
 #include <beft/visual_percepts_t.hpp>
 
 #include "camera_messages.hpp"
@@ -236,6 +237,44 @@ TEST(VisionExpert, AContactEntersTheMapAndNoViewClearsIt) {
   EXPECT_NE(map.at(40, 55), obstacle_map_t::CELL_OCCUPIED);  // across, beyond 0.25 + 0.15 m
 }
 
+// Killed after a contact and restarted from the blackboard, the expert marks
+// the contacts of OBSTACLE_MAP_FELT again: the touched cells stay safe from
+// the views that follow, and it publishes what it would have published.
+TEST(VisionExpert, ARestartAfterAContactKeepsTheTouchedCellsSafe) {
+  vision::VisionExpert uninterrupted, restarted, forgetful;
+  for (auto* e : {&uninterrupted, &restarted, &forgetful}) e->startUp({{"map_keyframe_ticks", "4"}});
+  Collected out, after_restart, forgot;
+  for (int64_t tick = 0; tick < 10; ++tick) {
+    const auto contact = tick == 1 ? std::optional<std::pair<double, double>>(std::make_pair(4.0, 5.0)) : std::nullopt;
+    feedTick(uninterrupted, tick, false, false, contact);
+    out.latest.clear();
+    ASSERT_TRUE(uninterrupted.fire(firingFor(tick, tick + 1), out).ok);
+    const auto felt = out.get<felt_contacts_t>(channels::kObstacleMapFelt);
+    EXPECT_EQ(felt.num_contacts, tick >= 1 ? 1 : 0) << "tick " << tick;
+    if (tick == 6) {
+      // Killed after tick 6: the blackboard holds the keyframe of tick 4 and tick 6's changes and contacts.
+      for (auto* e : {&restarted, &forgetful}) {
+        ASSERT_TRUE(feed(*e, channels::kObstacleMap, *out.keyframe));
+        ASSERT_TRUE(feed(*e, channels::kObstacleMapChanges, out.get<obstacle_map_changes_t>(channels::kObstacleMapChanges)));
+      }
+      ASSERT_TRUE(feed(restarted, channels::kObstacleMapFelt, felt));
+    }
+    if (tick > 6) {
+      feedTick(restarted, tick);
+      feedTick(forgetful, tick);
+      after_restart.latest.clear();
+      ASSERT_TRUE(restarted.fire(firingFor(tick, tick + 1), after_restart).ok);
+      ASSERT_TRUE(forgetful.fire(firingFor(tick, tick + 1), forgot).ok);
+      for (const auto& channel : {channels::kObstacleMapChanges.name, channels::kObstacleMapFelt.name, channels::kVision.name})
+        EXPECT_EQ(after_restart.latest.at(channel), out.latest.at(channel)) << channel << ", tick " << tick;
+    }
+  }
+  const obstacle_map_t resumed_from = *out.keyframe;
+  EXPECT_EQ(publishedMap(after_restart, &resumed_from).at(40, 50), obstacle_map_t::CELL_OCCUPIED);
+  // Without the contacts, the floor seen there clears what was touched.
+  EXPECT_NE(publishedMap(forgot, &resumed_from).at(40, 50), obstacle_map_t::CELL_OCCUPIED);
+}
+
 TEST(VisionExpert, AnOccupiedCellOnlySeenIsClearedByTheSameView) {
   vision::ObstacleMapper mapper(20, 10, vision::ObstacleMapConfig{});
   std::vector<uint8_t> cells(mapper.cells().size(), obstacle_map_t::CELL_UNKNOWN);
@@ -265,7 +304,7 @@ TEST(VisionExpert, CompressedFramesGiveTheOutputsOfRawOnes) {
     Collected raw_out, compressed_out;
     ASSERT_TRUE(from_raw.fire(firingFor(tick, tick + 1), raw_out).ok);
     ASSERT_TRUE(from_compressed.fire(firingFor(tick, tick + 1), compressed_out).ok);
-    ASSERT_EQ(raw_out.latest.size(), tick == 0 ? 3u : 2u);  // and the whole map at tick 0
+    ASSERT_EQ(raw_out.latest.size(), tick == 0 ? 4u : 3u);  // VISION, changes, contacts, and the whole map at tick 0
     EXPECT_EQ(compressed_out.latest, raw_out.latest) << "tick " << tick;
   }
 }
