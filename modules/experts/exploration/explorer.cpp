@@ -276,8 +276,11 @@ void Explorer::revalidate(const Observation& o, Decision& d) {
   job.last_check_t = o.t;
   std::string why;
   if (jobStillValid(o, why)) return;
+  // What the map showed on the way rules the viewpoint out: no look was
+  // spent, so it is not an attempt (a target behind a wall being mapped
+  // piece by piece is not given up for it), but it is not tried again.
   if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect)
-    recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
+    recordRuledOut(job.object_id, {job.x, job.y}, why, d);
   if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
   endJob(o, d, job.kind == JobKind::Explore, why, true);
 }
@@ -324,6 +327,18 @@ void Explorer::recordFailedAttempt(const std::string& object_id, const Point& vi
   if (memory.attempts >= limit) {
     memory.given_up = true;
     d.log.push_back(object_id + ": given up after " + std::to_string(memory.attempts) + " viewpoints");
+  }
+}
+
+void Explorer::recordRuledOut(const std::string& object_id, const Point& viewpoint, const std::string& why,
+                              Decision& d) {
+  TargetMemory& memory = targets_[object_id];
+  ++memory.ruled_out;
+  memory.tried.push_back(viewpoint);
+  d.log.push_back(object_id + ": viewpoint " + at(viewpoint.x, viewpoint.y) + " ruled out (" + why + ")");
+  if (memory.ruled_out >= parameters_.ruled_out_viewpoints) {
+    memory.given_up = true;
+    d.log.push_back(object_id + ": given up after " + std::to_string(memory.ruled_out) + " viewpoints ruled out");
   }
 }
 

@@ -99,6 +99,7 @@ struct ExplorerParameters {
   bool look_around = true;             // turn a full circle at the start
   int verify_attempts = 4;             // viewpoints per heard hypothesis before giving up
   int inspect_attempts = 2;            // viewpoints per glimpsed hypothesis
+  int ruled_out_viewpoints = 12;       // viewpoints the map rules out on the way (no attempt) before giving up
   bool inspect_glimpsed = true;
   double inspect_person_margin = 0.0; // glimpsed: person within this of the best category
   double look_dwell_s = 1.5;           // after looking, wait this long for fusion to settle
@@ -148,7 +149,8 @@ class Explorer {
     double last_check_t = 0;
   };
   struct TargetMemory {
-    int attempts = 0;                // viewpoints tried
+    int attempts = 0;                // viewpoints tried: reached, looked from, still unsettled
+    int ruled_out = 0;               // viewpoints the map ruled out before the robot got there
     std::vector<Point> tried;
     bool given_up = false;
     bool no_viewpoint = false;       // the last search found no viewpoint
@@ -170,6 +172,7 @@ class Explorer {
   void revalidate(const Observation& o, Decision& d);
   void endJob(const Observation& o, Decision& d, bool success, const std::string& reason, bool finish_on_stack);
   void recordFailedAttempt(const std::string& object_id, const Point& viewpoint, const std::string& why, Decision& d);
+  void recordRuledOut(const std::string& object_id, const Point& viewpoint, const std::string& why, Decision& d);
   void finishStrayComposites(const Observation& o, Decision& d);
   bool jobStillValid(const Observation& o, std::string& why);
 

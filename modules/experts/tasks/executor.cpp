@@ -193,6 +193,7 @@ Executor::Finish Executor::collectPlan(const Task& task, Run& run, TickOutput& o
   } else {
     run.path = result->waypoints;
     run.next_waypoint = 0;
+    run.goal_moved = std::hypot(run.path.back().x - task.x, run.path.back().y - task.y) > parameters_.goal_tolerance_m;
     run.failed_plans = 0;
     run.need_plan = false;
     run.best_error = 1e300;
@@ -368,8 +369,10 @@ void Executor::followPath(const Task& task, Run& run, int64_t utime, TickOutput&
              parameters_.waypoint_tolerance_m)
     ++run.next_waypoint;
   const auto& waypoint = run.path[run.next_waypoint];
-  if (run.next_waypoint == last)
+  if (run.next_waypoint == last && !run.goal_moved)
     out.command = gotoCommand(task.x, task.y, any_yaw ? waypoint.yaw : task.yaw, utime);
+  else if (run.next_waypoint == last)  // not into the obstacle beside the goal: to the path's end
+    out.command = gotoCommand(waypoint.x, waypoint.y, any_yaw ? waypoint.yaw : task.yaw, utime);
   else
     out.command = gotoCommand(waypoint.x, waypoint.y, waypoint.yaw, utime);
   run.setpoint_x = out.command.goal_x;
@@ -426,11 +429,15 @@ void Executor::rememberTrail(Run& run) const {
 Executor::Finish Executor::runGoto(const Task& task, Run& run, int64_t utime, TickOutput& out) {
   const auto& r = *robot_;
   const bool any_yaw = std::isnan(task.yaw);
-  const double goal_distance = std::hypot(task.x - r.x, task.y - r.y);
+  // A goal the planner found blocked is reached at the path's end.
+  const bool to_path_end = run.goal_moved && !run.path.empty();
+  const double goal_x = to_path_end ? run.path.back().x : task.x, goal_y = to_path_end ? run.path.back().y : task.y;
+  const double goal_distance = std::hypot(goal_x - r.x, goal_y - r.y);
   const double goal_yaw_error = any_yaw ? 0.0 : std::abs(wrap(task.yaw - r.yaw));
   if (run.request_id == 0 && goal_distance <= parameters_.goal_tolerance_m &&
       goal_yaw_error <= parameters_.yaw_tolerance_deg)
-    return std::make_pair(Status::Done, "reached (" + fmt(r.x) + ", " + fmt(r.y) + ", " + fmt(r.yaw, 1) + ")");
+    return std::make_pair(Status::Done, "reached (" + fmt(r.x) + ", " + fmt(r.y) + ", " + fmt(r.yaw, 1) + ")" +
+                                            (to_path_end ? ": the free cell nearest the blocked goal" : ""));
 
   if (run.backing_off && keepBackingOff(run, utime, out)) return std::nullopt;
   if (run.request_id != 0) {

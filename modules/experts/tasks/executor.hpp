@@ -90,6 +90,9 @@ class Executor {
     // goto
     std::vector<beft::waypoint_t> path;
     std::size_t next_waypoint = 0;
+    // The planner moved a blocked goal to the nearest free cell: the path
+    // ends there, and the goto ends when the robot does.
+    bool goal_moved = false;
     bool need_plan = true;
     int64_t request_id = 0;              // in flight
     int failed_plans = 0;

@@ -687,6 +687,38 @@ TEST_F(ExplorerRun, TriesAnotherViewpointWhenStillUnseenAndGivesUpAfterTheLimit)
   EXPECT_TRUE(explorer.stopped());
 }
 
+// A wall mapped on the way between the chosen viewpoint and the target rules
+// that viewpoint out: another is chosen, and no attempt is spent (a target
+// behind walls being mapped piece by piece is not given up for it), up to
+// ruled_out_viewpoints.
+TEST_F(ExplorerRun, AViewpointTheMapRulesOutIsNotAnAttempt) {
+  parameters.verify_attempts = 1;
+  parameters.ruled_out_viewpoints = 2;
+  explorer = Explorer(parameters);
+  lookAround();
+  observation.hypotheses = {hidden()};
+  tick();  // ends the look-around, pushes the first verify composite
+  std::vector<Point> goals;
+  for (int ruled_out = 0; ruled_out < 2; ++ruled_out) {
+    const auto subs = pushesOf(tick());
+    ASSERT_EQ(subs.size(), 2u) << "viewpoint " << ruled_out;
+    ASSERT_EQ(subs[0].kind, "goto");
+    goals.push_back({subs[0].x, subs[0].y});
+    // On the way, a wall is mapped right in front of the target, on the viewpoint's side.
+    auto cells = wallWorld();
+    const double mx = 0.5 * (subs[0].x + 12.0), my = 0.5 * (subs[0].y + 10.0);
+    fillRect(cells, mx - 0.6, my - 0.6, mx + 0.6, my + 0.6, kOccupied);
+    setMap(cells);
+    const size_t finishes = stack.finishes.size();
+    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();
+    ASSERT_EQ(stack.finishes.size(), finishes + 1);
+    EXPECT_EQ(explorer.attempts("victim1"), 0);
+    setMap(wallWorld());
+  }
+  EXPECT_GE(std::hypot(goals[0].x - goals[1].x, goals[0].y - goals[1].y), parameters.viewpoints.tried_radius_m);
+  EXPECT_TRUE(explorer.givenUp("victim1"));  // after two ruled out
+}
+
 TEST_F(ExplorerRun, ExploresTheUnknownAndStopsWhenAllIsSettledAndKnown) {
   auto cells = makeCells(20, 20, kUnknown);
   fillRect(cells, 0.0, 0.0, 10.0, 20.0, kFree);

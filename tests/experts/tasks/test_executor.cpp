@@ -173,6 +173,28 @@ TEST(Executor, GotoPlansThenFollowsTheWaypointsToTheGoal) {
   EXPECT_TRUE(h.commands[first_corner].set_head) << "goto looks ahead";
 }
 
+// A goal beside an obstacle: the planner moves it to the nearest free cell
+// and its path ends there. The robot stops there, the goto done, rather than
+// driving the last stretch into the obstacle.
+TEST(Executor, GotoToAGoalThePlannerMovedEndsAtThePathsEndWithoutTouching) {
+  Harness h;
+  h.robot.obstacles.push_back({4.0, 0.35, 0.3});  // the goal (4, 0) is 0.35 m from it: blocked
+  h.planner = [](const beft::plan_request_t& r) {
+    return answer(r, {{r.start_x, r.start_y, 0}, {2, -0.4, 0}, {3.5, -0.4, 0}});  // ends at the nearest free cell
+  };
+  const int64_t id = h.stack.push(gotoTask(4, 0, 0));
+  h.run(200);
+  ASSERT_TRUE(h.stack.empty());
+  const TaskEvent* end = h.lastEventOf(id);
+  ASSERT_NE(end, nullptr);
+  EXPECT_EQ(end->kind, TaskEvent::Kind::Done) << end->reason;
+  EXPECT_NE(end->reason.find("nearest the blocked goal"), std::string::npos) << end->reason;
+  EXPECT_EQ(h.robot.state.collisions, 0);
+  EXPECT_NEAR(h.robot.state.x, 3.5, 0.15);
+  EXPECT_NEAR(h.robot.state.y, -0.4, 0.15);
+  EXPECT_EQ(h.requests.size(), 1u);
+}
+
 TEST(Executor, GotoReplansAfterACollision) {
   Harness h;
   h.robot.obstacles.push_back({3, 0, 0.5});
