@@ -91,7 +91,8 @@ void ExplorationExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("inspect_attempts", e.inspect_attempts, 1, 1000, "viewpoints tried per glimpsed hypothesis");
   parameters.declare("ruled_out_viewpoints", e.ruled_out_viewpoints, 1, 1000,
                      "viewpoints of a hypothesis the map rules out on the way (a wall mapped in the line of sight) "
-                     "before it is given up; these are not attempts");
+                     "before any look from elsewhere, up to which it is not given up; once looked at, a ruled-out "
+                     "viewpoint counts as an attempt");
   parameters.declare("inspect_glimpsed", e.inspect_glimpsed, "approach hypotheses glimpsed by vision that may be persons");
   parameters.declare("look_dwell_s", e.look_dwell_s, 0, kNoLimit, "after looking, wait this long for fusion to settle [s]");
   parameters.declare("attempt_timeout_s", e.attempt_timeout_s, 0, kNoLimit,

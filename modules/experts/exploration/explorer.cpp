@@ -276,11 +276,14 @@ void Explorer::revalidate(const Observation& o, Decision& d) {
   job.last_check_t = o.t;
   std::string why;
   if (jobStillValid(o, why)) return;
-  // What the map showed on the way rules the viewpoint out: no look was
-  // spent, so it is not an attempt (a target behind a wall being mapped
-  // piece by piece is not given up for it), but it is not tried again.
-  if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect)
-    recordRuledOut(job.object_id, {job.x, job.y}, why, d);
+  // What the map showed on the way rules the viewpoint out. Until the target
+  // was first looked at from somewhere, that is not an attempt (a target
+  // behind walls being mapped piece by piece is not given up for it); after,
+  // it is one more way of seeing it that failed.
+  if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect) {
+    if (targets_[job.object_id].attempts == 0) recordRuledOut(job.object_id, {job.x, job.y}, why, d);
+    else recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
+  }
   if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
   endJob(o, d, job.kind == JobKind::Explore, why, true);
 }

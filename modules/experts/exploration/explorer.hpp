@@ -99,7 +99,7 @@ struct ExplorerParameters {
   bool look_around = true;             // turn a full circle at the start
   int verify_attempts = 4;             // viewpoints per heard hypothesis before giving up
   int inspect_attempts = 2;            // viewpoints per glimpsed hypothesis
-  int ruled_out_viewpoints = 12;       // viewpoints the map rules out on the way (no attempt) before giving up
+  int ruled_out_viewpoints = 12;       // viewpoints the map rules out on the way before a first look (no attempt)
   bool inspect_glimpsed = true;
   double inspect_person_margin = 0.0; // glimpsed: person within this of the best category
   double look_dwell_s = 1.5;           // after looking, wait this long for fusion to settle

@@ -719,6 +719,32 @@ TEST_F(ExplorerRun, AViewpointTheMapRulesOutIsNotAnAttempt) {
   EXPECT_TRUE(explorer.givenUp("victim1"));  // after two ruled out
 }
 
+// Once the target was looked at from somewhere, a viewpoint the map rules
+// out counts as one more failed attempt.
+TEST_F(ExplorerRun, AfterALookARuledOutViewpointIsAnAttempt) {
+  parameters.verify_attempts = 2;
+  explorer = Explorer(parameters);
+  lookAround();
+  observation.hypotheses = {hidden()};
+  tick();
+  auto subs = pushesOf(tick());
+  ASSERT_EQ(subs.size(), 2u);
+  stack.completeSubTasks(subs[0].parent);  // got there and looked
+  size_t finishes = stack.finishes.size();
+  for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();  // dwell, then fail
+  ASSERT_EQ(explorer.attempts("victim1"), 1);
+  subs = pushesOf(tick());
+  ASSERT_EQ(subs.size(), 2u);
+  auto cells = wallWorld();
+  const double mx = 0.5 * (subs[0].x + 12.0), my = 0.5 * (subs[0].y + 10.0);
+  fillRect(cells, mx - 0.6, my - 0.6, mx + 0.6, my + 0.6, kOccupied);
+  setMap(cells);
+  finishes = stack.finishes.size();
+  for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();
+  EXPECT_EQ(explorer.attempts("victim1"), 2);
+  EXPECT_TRUE(explorer.givenUp("victim1"));
+}
+
 TEST_F(ExplorerRun, ExploresTheUnknownAndStopsWhenAllIsSettledAndKnown) {
   auto cells = makeCells(20, 20, kUnknown);
   fillRect(cells, 0.0, 0.0, 10.0, 20.0, kFree);
