@@ -64,7 +64,8 @@ expert::Outcome FusionExpert::fire(const expert::Firing& firing, expert::Output&
     fusion_.update(evidence);
     last_fused_tick_ = k;
   }
-  publish(fusion_.hypotheses(evidence.scene->utime, k), out);
+  fusion_.writeHypotheses(evidence.scene->utime, k, whole_);
+  publish(whole_, out);
   return expert::Outcome::success();
 }
 

@@ -39,6 +39,7 @@ class FusionExpert : public expert::Expert {
   int64_t keyframe_ticks_ = 100;
   int64_t last_fused_tick_ = -1;
   std::optional<hypotheses_t> keyframe_;  // the last HYPOTHESES published (or resumed from)
+  hypotheses_t whole_{};                  // this tick's whole list, written over the last one's
   // Published before this process started.
   std::optional<hypotheses_t> resume_keyframe_;
   std::optional<hypothesis_changes_t> resume_changes_;

@@ -1,6 +1,7 @@
 #include "hypothesis_fusion.hpp"
 
 #include <algorithm>
+#include <array>
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
@@ -134,8 +135,8 @@ void HypothesisFusion::restore(const hypotheses_t& previous) {
   if (categories_.empty() && !previous.hypotheses.empty()) categories_ = previous.hypotheses.front().categories;
 }
 
-hypothesis_t HypothesisFusion::toMessage(const Hypothesis& h, const std::vector<std::string>& categories) const {
-  hypothesis_t out;
+void HypothesisFusion::writeMessage(const Hypothesis& h, const std::vector<std::string>& categories,
+                                    hypothesis_t& out) const {
   out.object_id = h.object_id;
   const Position position = h.visual_position ? *h.visual_position
                             : h.acoustic_position ? *h.acoustic_position
@@ -147,26 +148,30 @@ hypothesis_t HypothesisFusion::toMessage(const Hypothesis& h, const std::vector<
   // The evidence fused: each modality's memory; after a restart the fused
   // confidences published before stand in (once) for a modality that has
   // perceived the object but has no new evidence since.
-  std::vector<const Evidence*> sources;
-  if (h.visual) sources.push_back(&*h.visual);
-  if (h.acoustic) sources.push_back(&*h.acoustic);
-  if (h.restored && ((h.seen && !h.visual) || (h.heard && !h.acoustic) || sources.empty()))
-    sources.push_back(&*h.restored);
+  std::array<const Evidence*, 3> sources{};  // no allocation per hypothesis and tick
+  std::size_t source_count = 0;
+  if (h.visual) sources[source_count++] = &*h.visual;
+  if (h.acoustic) sources[source_count++] = &*h.acoustic;
+  if (h.restored && ((h.seen && !h.visual) || (h.heard && !h.acoustic) || source_count == 0))
+    sources[source_count++] = &*h.restored;
   double total = 0;
   const Evidence* clearest = nullptr;
-  for (const Evidence* e : sources) {
+  for (std::size_t s = 0; s < source_count; ++s) {
+    const Evidence* e = sources[s];
     total += e->perceptibility;
     if (!clearest || e->perceptibility > clearest->perceptibility) clearest = e;
   }
   out.categories = categories;
+  out.fused.clear();
   for (const auto& category : categories) {
     double weighted = 0, plain = 0;
-    for (const Evidence* e : sources) {
+    for (std::size_t s = 0; s < source_count; ++s) {
+      const Evidence* e = sources[s];
       const double confidence = confidenceOf(e->categories, e->confidence, category);
       weighted += e->perceptibility * confidence;
       plain += confidence;
     }
-    const double mean = sources.empty() ? 0.5 : plain / sources.size();
+    const double mean = source_count == 0 ? 0.5 : plain / source_count;
     double fused = mean;
     if (config_.rule == FusionRule::WeightedMean && total > 0) fused = weighted / total;  // else: the plain mean
     if (config_.rule == FusionRule::Clearest && clearest)
@@ -194,16 +199,20 @@ hypothesis_t HypothesisFusion::toMessage(const Hypothesis& h, const std::vector<
   out.first_heard_utime = h.first_heard_utime;
   out.first_seen_utime = h.first_seen_utime;
   out.settled_utime = h.settled_utime;
-  return out;
 }
 
 hypotheses_t HypothesisFusion::hypotheses(int64_t utime, int64_t tick) const {
   hypotheses_t out{};
+  writeHypotheses(utime, tick, out);
+  return out;
+}
+
+void HypothesisFusion::writeHypotheses(int64_t utime, int64_t tick, hypotheses_t& out) const {
   out.utime = utime;
   out.tick = tick;
-  for (const auto& h : hypotheses_) out.hypotheses.push_back(toMessage(h, categories_));
+  out.hypotheses.resize(hypotheses_.size());
+  for (std::size_t i = 0; i < hypotheses_.size(); ++i) writeMessage(hypotheses_[i], categories_, out.hypotheses[i]);
   out.num_hypotheses = static_cast<int32_t>(out.hypotheses.size());
-  return out;
 }
 
 }  // namespace beft::fusion

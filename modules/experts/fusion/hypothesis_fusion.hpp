@@ -77,6 +77,10 @@ class HypothesisFusion {
   void restore(const hypotheses_t& previous);
   // Every hypothesis so far, in order of first perception (ties: scenario order).
   hypotheses_t hypotheses(int64_t utime, int64_t tick) const;
+  // The same, written over `out`: the strings and arrays of the previous
+  // tick's list are reused (hundreds of hypotheses a tick would otherwise be
+  // thousands of allocations).
+  void writeHypotheses(int64_t utime, int64_t tick, hypotheses_t& out) const;
   std::size_t size() const { return hypotheses_.size(); }
 
  private:
@@ -99,7 +103,8 @@ class HypothesisFusion {
   };
 
   Hypothesis& hypothesisFor(const std::string& object_id);
-  hypothesis_t toMessage(const Hypothesis& h, const std::vector<std::string>& categories) const;
+  // Every field of `out` is written.
+  void writeMessage(const Hypothesis& h, const std::vector<std::string>& categories, hypothesis_t& out) const;
 
   FusionConfig config_;
   std::vector<std::string> categories_;  // of the latest scene

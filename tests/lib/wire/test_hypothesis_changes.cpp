@@ -55,6 +55,25 @@ TEST(HypothesisChanges, CarryOnlyWhatChangedOrIsNewAndGiveTheWholeListBack) {
   EXPECT_EQ(encoded(whole), encoded(later));
 }
 
+// Lists in another order than the keyframe's (the usual one is the same
+// order, compared pairwise): the same hypotheses found changed, in the
+// later list's order.
+TEST(HypothesisChanges, AnotherOrderThanTheKeyframesFindsTheSameChanges) {
+  const hypotheses_t keyframe = list(0, {hypothesis("a", 1, 0.5), hypothesis("b", 2, 0.5), hypothesis("c", 3, 0.5)});
+  const hypotheses_t reordered = list(7, {hypothesis("c", 3, 0.5), hypothesis("d", 4, 0.6), hypothesis("a", 1, 0.8),
+                                          hypothesis("b", 2, 0.5)});
+  const hypothesis_changes_t changes = wire::changesSince(keyframe, reordered);
+  ASSERT_EQ(changes.num_changed, 2);
+  EXPECT_EQ(changes.changed[0].object_id, "d");
+  EXPECT_EQ(changes.changed[1].object_id, "a");
+  // Fewer than the keyframe holds: only what differs.
+  const hypotheses_t fewer = list(8, {hypothesis("a", 1, 0.5), hypothesis("b", 2, 0.7)});
+  const hypothesis_changes_t shrunk = wire::changesSince(keyframe, fewer);
+  ASSERT_EQ(shrunk.num_changed, 1);
+  EXPECT_EQ(shrunk.changed[0].object_id, "b");
+  EXPECT_EQ(shrunk.num_hypotheses, 2);
+}
+
 TEST(HypothesisChanges, RefuseAnotherKeyframeOrACountThatDoesNotAddUp) {
   const hypotheses_t keyframe = list(10, {hypothesis("a", 1, 0.5)});
   hypothesis_changes_t changes = wire::changesSince(keyframe, list(12, {hypothesis("a", 1, 0.5), hypothesis("b", 1, 0.5)}));
