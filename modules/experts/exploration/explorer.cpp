@@ -492,7 +492,7 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
     queue.pop_back();
     if (best != nullptr && (c.least_score > best_score || (c.above && c.least_score >= best_score))) break;
     const double next_least = queue.empty() ? c.least_score : candidates[queue.front()].least_score;
-    double limit = std::max({next_least, c.least_score + std::max(4.0, 0.5 * std::abs(c.least_score)), 16.0});
+    double limit = std::max({next_least, c.least_score + std::max(4.0, 0.5 * std::abs(c.least_score)), 6.0});
     if (best != nullptr) limit = std::min(limit, best_score);
     const bool unlimited = limit > kUnlimitedFrom;
     if (unlimited) limit = std::numeric_limits<double>::infinity();

@@ -185,7 +185,7 @@ std::optional<FrontierGoal> cheapestFrontier(const KnownMap& map, const TravelFi
     queue.pop_back();
     if (best && (c.least_cost > best->cost || (c.above && c.least_cost >= best->cost))) break;
     const double next_least = queue.empty() ? c.least_cost : candidates[queue.front()].least_cost;
-    double limit = std::max({next_least, c.least_cost + std::max(4.0, 0.5 * std::abs(c.least_cost)), 16.0});
+    double limit = std::max({next_least, c.least_cost + std::max(4.0, 0.5 * std::abs(c.least_cost)), 6.0});
     if (best) limit = std::min(limit, best->cost);
     if (limit > kUnlimitedFrom) limit = std::numeric_limits<double>::infinity();
     double travel_m = 0;

@@ -32,10 +32,10 @@ KnownMap::KnownMap(planners::ObstacleCells cells, double radius) : cells_(std::m
 
 const planners::GridMap& KnownMap::standing() const {
   if (standing_) return *standing_;
-  planners::GridMap occupied(cells_.width, cells_.height);
-  for (int y = 0; y < cells_.height; ++y)
-    for (int x = 0; x < cells_.width; ++x)
-      if (cells_.at(x, y) == obstacle_map_t::CELL_OCCUPIED) occupied.setBlocked(x, y);
+  std::vector<uint8_t> flags(cells_.cells.size());
+  std::transform(cells_.cells.begin(), cells_.cells.end(), flags.begin(),
+                 [](uint8_t cell) { return cell == obstacle_map_t::CELL_OCCUPIED ? 1 : 0; });
+  const planners::GridMap occupied(cells_.width, cells_.height, std::move(flags));
   planners::GridMap standing = planners::inflate(occupied, radius_cells_);
   if (border_ > 0) {
     standing.fillRect(0, 0, cells_.width - 1, border_ - 1);
