@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
+
+#include "cheapest_first.hpp"
 
 namespace beft::exploration {
 namespace {
@@ -444,85 +447,51 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
   // The hypotheses to try, each with the least score a viewpoint of it can
   // have: no viewpoint lies nearer the robot than the target less
   // max_distance, travel between cell centres is never shorter than the
-  // straight line less a cell's diagonal, and penalties only add.
+  // straight line less a cell's diagonal, and penalties only add. Listed in
+  // the hypotheses' order: the first of equal scores wins.
   struct Candidate {
     const HypothesisView* hypothesis;
-    size_t order;         // in the hypothesis list: the first of equal scores wins
-    double gain;          // what its DW weight is worth [m]
-    double least_score;
-    bool above = false;   // its score is known to be above least_score, not only at least
-    SightMemory sights;   // what its candidates' lines of sight showed when asked before
+    double gain;                          // what its DW weight is worth [m]
+    SightMemory sights;                   // what its lines of sight showed when asked before
+    std::optional<Viewpoint> viewpoint;   // its best, once found
   };
   std::vector<Candidate> candidates;
-  for (size_t i = 0; i < o.hypotheses.size(); ++i) {
-    const HypothesisView& h = o.hypotheses[i];
+  std::vector<double> least_scores;
+  for (const HypothesisView& h : o.hypotheses) {
     if (!(inspect ? wantsInspect(h) : wantsVerify(h))) continue;
     const TargetMemory& memory = targets_[h.object_id];
     if (memory.given_up || o.t < memory.retry_t) continue;
     const double gain = parameters_.weight_gain_m * std::max(0.0, h.weight);
     const double least_travel = std::hypot(h.x - o.robot_x, h.y - o.robot_y) -
                                 parameters_.viewpoints.max_distance_m - 1.5 * map->resolution();
-    candidates.push_back({&h, i, gain, std::max(0.0, least_travel) - gain, false, {}});
+    candidates.push_back({&h, gain, {}, std::nullopt});
+    least_scores.push_back(std::max(0.0, least_travel) - gain);
   }
   if (candidates.empty()) return false;
 
-  // Best first: the hypothesis of the least possible score is asked for a
-  // viewpoint scoring at most a little more than the next one's least (the
-  // travel field grows only that far); without one, its least score rises to
-  // that limit and it waits its turn again. The search ends when no
-  // hypothesis left can beat the best found. Past kUnlimitedFrom the limit
-  // goes: only a hypothesis asked without one is known to have no viewpoint.
-  constexpr double kUnlimitedFrom = 256.0;  // [m]
-  const auto later = [&](size_t a, size_t b) {
-    const Candidate& x = candidates[a];
-    const Candidate& y = candidates[b];
-    return x.least_score != y.least_score ? x.least_score > y.least_score : x.order > y.order;
-  };
-  std::vector<size_t> queue(candidates.size());
-  for (size_t i = 0; i < queue.size(); ++i) queue[i] = i;
-  std::make_heap(queue.begin(), queue.end(), later);
   const TravelField travel(*map, o.robot_x, o.robot_y,
                            o.robot_radius + parameters_.safety_margin_m + map->resolution());
-  const Candidate* best = nullptr;
-  Viewpoint best_viewpoint;
-  double best_score = 0;
-  while (!queue.empty()) {
-    std::pop_heap(queue.begin(), queue.end(), later);
-    Candidate& c = candidates[queue.back()];
-    queue.pop_back();
-    if (best != nullptr && (c.least_score > best_score || (c.above && c.least_score >= best_score))) break;
-    const double next_least = queue.empty() ? c.least_score : candidates[queue.front()].least_score;
-    double limit = std::max({next_least, c.least_score + std::max(4.0, 0.5 * std::abs(c.least_score)), 6.0});
-    if (best != nullptr) limit = std::min(limit, best_score);
-    const bool unlimited = limit > kUnlimitedFrom;
-    if (unlimited) limit = std::numeric_limits<double>::infinity();
+  // A hypothesis asked without a limit and without a viewpoint has none.
+  const auto best_index = cheapestFirst(std::move(least_scores), [&](std::size_t i, double limit) -> std::optional<double> {
+    Candidate& c = candidates[i];
     const HypothesisView& h = *c.hypothesis;
     TargetMemory& memory = targets_[h.object_id];
-    const auto viewpoint =
+    c.viewpoint =
         chooseViewpoint(*map, travel, h.x, h.y, memory.tried, parameters_.viewpoints, limit + c.gain, &c.sights);
-    if (!viewpoint) {
-      if (unlimited) {
+    if (!c.viewpoint) {
+      if (std::isinf(limit)) {
         if (!memory.no_viewpoint) d.log.push_back(h.object_id + ": no reachable viewpoint on the known map");
         memory.no_viewpoint = true;
         memory.retry_t = o.t + parameters_.retry_after_s;
-        continue;
       }
-      c.least_score = limit;  // every viewpoint scores more
-      c.above = true;
-      queue.push_back(static_cast<size_t>(&c - candidates.data()));
-      std::push_heap(queue.begin(), queue.end(), later);
-      continue;
+      return std::nullopt;
     }
     memory.no_viewpoint = false;
-    const double score = viewpoint->cost - c.gain;
-    if (best == nullptr || score < best_score || (score == best_score && c.order < best->order)) {
-      best = &c;
-      best_viewpoint = *viewpoint;
-      best_score = score;
-    }
-  }
-  if (best == nullptr) return false;
-  const HypothesisView* target = best->hypothesis;
+    return c.viewpoint->cost - c.gain;
+  });
+  if (!best_index) return false;
+  const Viewpoint best_viewpoint = *candidates[*best_index].viewpoint;
+  const HypothesisView* target = candidates[*best_index].hypothesis;
   Job job;
   job.kind = inspect ? JobKind::Inspect : JobKind::Verify;
   job.object_id = target->object_id;

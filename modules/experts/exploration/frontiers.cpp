@@ -6,6 +6,8 @@
 
 #include <beft/obstacle_map_t.hpp>
 
+#include "cheapest_first.hpp"
+
 namespace beft::exploration {
 namespace {
 
@@ -150,61 +152,24 @@ std::optional<FrontierGoal> cheapestFrontier(const KnownMap& map, const TravelFi
   if (clusters.empty()) return std::nullopt;
   // Each frontier's least possible cost: travel is never shorter than the
   // straight line to its nearest cell, less a cell's diagonal.
-  struct Candidate {
-    size_t order;        // in the scan: the first of equal costs wins
-    double gain;         // what its size is worth [m]
-    double least_cost;
-    bool above = false;  // its cost is known to be above least_cost, not only at least
-  };
-  std::vector<Candidate> candidates;
-  for (size_t i = 0; i < clusters.size(); ++i) {
+  std::vector<double> least_costs, gains;
+  for (const auto& cluster : clusters) {
     double nearest = std::numeric_limits<double>::infinity();
-    for (const auto& c : clusters[i])
+    for (const auto& c : cluster)
       nearest = std::min(nearest, std::hypot(map.centreX(c.x) - robot.x, map.centreY(c.y) - robot.y));
-    const double gain = memory.parameters().size_gain * static_cast<double>(clusters[i].size()) * map.resolution();
-    candidates.push_back({i, gain, std::max(0.0, nearest - 1.5 * map.resolution()) - gain});
+    gains.push_back(memory.parameters().size_gain * static_cast<double>(cluster.size()) * map.resolution());
+    least_costs.push_back(std::max(0.0, nearest - 1.5 * map.resolution()) - gains.back());
   }
-  // Best first, as the explorer picks its targets: the frontier of the least
-  // possible cost is asked for a goal costing a little more than the next
-  // one's least, and waits its turn again with a higher least when it has
-  // none that near. Past kUnlimitedFrom it is asked without a limit.
-  constexpr double kUnlimitedFrom = 256.0;  // [m]
-  const auto later = [&](size_t a, size_t b) {
-    const Candidate& x = candidates[a];
-    const Candidate& y = candidates[b];
-    return x.least_cost != y.least_cost ? x.least_cost > y.least_cost : x.order > y.order;
-  };
-  std::vector<size_t> queue(candidates.size());
-  for (size_t i = 0; i < queue.size(); ++i) queue[i] = i;
-  std::make_heap(queue.begin(), queue.end(), later);
-  std::optional<FrontierGoal> best;
-  size_t best_order = 0;
-  while (!queue.empty()) {
-    std::pop_heap(queue.begin(), queue.end(), later);
-    Candidate& c = candidates[queue.back()];
-    queue.pop_back();
-    if (best && (c.least_cost > best->cost || (c.above && c.least_cost >= best->cost))) break;
-    const double next_least = queue.empty() ? c.least_cost : candidates[queue.front()].least_cost;
-    double limit = std::max({next_least, c.least_cost + std::max(4.0, 0.5 * std::abs(c.least_cost)), 6.0});
-    if (best) limit = std::min(limit, best->cost);
-    if (limit > kUnlimitedFrom) limit = std::numeric_limits<double>::infinity();
+  std::vector<std::optional<FrontierGoal>> goals(clusters.size());
+  const auto best = cheapestFirst(std::move(least_costs), [&](std::size_t i, double limit) -> std::optional<double> {
     double travel_m = 0;
-    const Cell* cell = nearestCell(map, travel, clusters[c.order], limit + c.gain, travel_m);
-    if (cell == nullptr) {
-      if (std::isinf(limit)) continue;  // unreachable
-      c.least_cost = limit;             // every cell costs more
-      c.above = true;
-      queue.push_back(static_cast<size_t>(&c - candidates.data()));
-      std::push_heap(queue.begin(), queue.end(), later);
-      continue;
-    }
-    const FrontierGoal goal = goalAt(map, memory, clusters[c.order], *cell, travel_m);
-    if (!best || goal.cost < best->cost || (goal.cost == best->cost && c.order < best_order)) {
-      best = goal;
-      best_order = c.order;
-    }
-  }
-  return best;
+    const Cell* cell = nearestCell(map, travel, clusters[i], limit + gains[i], travel_m);
+    if (cell == nullptr) return std::nullopt;
+    goals[i] = goalAt(map, memory, clusters[i], *cell, travel_m);
+    return goals[i]->cost;
+  });
+  if (!best) return std::nullopt;
+  return goals[*best];
 }
 
 bool frontierNear(const KnownMap& map, ExplorationMemory& memory, double x, double y, double radius) {
