@@ -423,11 +423,16 @@ void RayCaster::countClaimedSolids(const SceneGeometry& scene, const Camera& cam
                                    std::atomic<size_t>& next_solid, std::vector<int>& counts) const {
   // Rays only inside each solid's footprint, by the same formula (and order
   // of operations) as prepareRayRows, so the counts are those of full rays.
+  // A row of rays is a plane through the camera; the part of a convex solid
+  // in front of the camera, above the ground and within range is convex, so
+  // the pixels of a row that see it are one run. Each row's run is found
+  // from its ends, starting from the run of the row above: the cost follows
+  // the solid's outline, not its area (a solid filling the view was
+  // 170 000 rays a tick in the wide camera).
   counts.assign(std::max(scene.objectCount(), 0), 0);
   const CameraFrame& f = camera_frame_;
   const Eigen::Vector3d& o = f.origin;
   const double range = camera.intrinsics.range;
-  LineInterval interval;
   const std::vector<Solid>& solids = scene.solids();
   for (size_t s = next_solid.fetch_add(1); s < solids.size(); s = next_solid.fetch_add(1)) {
     const Solid& solid = solids[s];
@@ -439,20 +444,47 @@ void RayCaster::countClaimedSolids(const SceneGeometry& scene, const Camera& cam
          footprint.v0 > only_touching->v1))
       continue;
     int count = 0;
+    int run_first = -1, run_last = -1;  // the row above's run; -1: it had none
     for (int v = footprint.v0; v <= footprint.v1; ++v) {
       const double b = row_b_[v];
       const double row_x = f.forward.x() + b * f.up.x(), row_y = f.forward.y() + b * f.up.y(),
                    row_z = f.forward.z() + b * f.up.z();
       const double t_ground = (row_z < 0 && o.z() > 0) ? -o.z() / row_z : SceneGeometry::kInfinity;
-      for (int u = footprint.u0; u <= footprint.u1; ++u) {
+      const auto sees = [&](int u) {
         const double a = column_a_[u];
         const Eigen::Vector3d d(row_x + a * f.left.x(), row_y + a * f.left.y(), row_z);
         const double t_range = range * inverseRayLength(a, b);
         const double t_limit = t_ground <= t_range ? t_ground : t_range;
-        if (intersectLine(solid, o, d, interval) && interval.enter >= kMinDepth && interval.enter <= t_limit) {
-          ++count;
-        }
+        LineInterval interval;
+        return intersectLine(solid, o, d, interval) && interval.enter >= kMinDepth && interval.enter <= t_limit;
+      };
+      int first = -1;
+      if (run_first >= 0 && sees(run_first)) {
+        for (first = run_first; first > footprint.u0 && sees(first - 1);) --first;
+      } else {
+        for (int u = footprint.u0; u <= footprint.u1; ++u)
+          if (sees(u)) {
+            first = u;
+            break;
+          }
       }
+      if (first < 0) {
+        run_first = run_last = -1;
+        continue;
+      }
+      int last = first;
+      if (run_last > first && sees(run_last)) {
+        for (last = run_last; last < footprint.u1 && sees(last + 1);) ++last;
+      } else {
+        for (int u = footprint.u1; u > first; --u)
+          if (sees(u)) {
+            last = u;
+            break;
+          }
+      }
+      count += last - first + 1;
+      run_first = first;
+      run_last = last;
     }
     counts[solid.object_index] += count;
   }

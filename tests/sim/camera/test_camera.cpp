@@ -119,6 +119,41 @@ TEST(Camera, ObjectOutsideTheFieldOfViewIsAbsent) {
   EXPECT_EQ(turned.object[60 * 160 + 80], 0);
 }
 
+// The unoccluded count of a solid alone is every pixel the renderer gives it,
+// whatever the solid's size, pose, distance and place in the image: the
+// count follows each row's run from its ends, the renderer tests every ray.
+TEST(Camera, ExpectedPixelsOfASolidAloneAreItsRenderedPixels) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto between = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
+  int seen = 0, cut_by_the_edge = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    // Near (filling the view) to far, in front or to the side; some raised.
+    const double distance = trial % 4 == 0 ? between(0.4, 2.0) : between(1.0, 18.0);
+    const double bearing = between(-70.0, 70.0) * M_PI / 180.0;
+    const double x = distance * std::cos(bearing), y = distance * std::sin(bearing);
+    const double z = trial % 5 == 0 ? between(0.2, 1.5) : 0.0;
+    SceneGeometry scene;
+    if (trial % 3 == 0)
+      scene.addCylinder(0, x, y, z, between(0.05, 1.5), between(0.1, 3.0));
+    else
+      scene.addBox(0, x, y, z, between(0.0, 360.0), between(0.05, 4.0), between(0.05, 4.0), between(0.05, 3.0));
+    scene.buildIndex();
+    const Camera camera = levelCamera(0, 0, between(0.3, 2.0), between(-20.0, 20.0), between(-35.0, 35.0));
+    const RenderedFrame frame = renderFrame(scene, camera);
+    const int rendered = countPixelsOf(frame, 0);
+    ASSERT_EQ(expectedPixelsPerObject(scene, camera).at(0), rendered) << "trial " << trial;
+    seen += rendered > 0;
+    bool on_edge = false;
+    for (int v = 0; v < 120 && !on_edge; ++v)
+      on_edge = frame.object[v * 160] == 0 || frame.object[v * 160 + 159] == 0;
+    cut_by_the_edge += on_edge;
+  }
+  // The trials cover solids in view and solids the image edge cuts.
+  EXPECT_GT(seen, 300);
+  EXPECT_GT(cut_by_the_edge, 60);
+}
+
 // Counted by two threads claiming solids from one counter: summed, the
 // counts of one thread counting all.
 TEST(Camera, ExpectedPixelsCountedByTwoThreadsSumToOnesCounts) {
