@@ -80,6 +80,85 @@ void applyMapChanges(const beft::obstacle_map_changes_t& changes, ObstacleCells&
                 map.cells.begin() + static_cast<size_t>(rect.y0 + y) * map.width + rect.x0);
 }
 
+namespace {
+
+bool sameGrid(const ObstacleCells& a, const ObstacleCells& b) {
+  return a.width == b.width && a.height == b.height && a.resolution == b.resolution && a.origin_x == b.origin_x &&
+         a.origin_y == b.origin_y;
+}
+
+// The smallest rectangle holding both.
+CellRect unite(const CellRect& a, const CellRect& b) {
+  if (a.empty()) return b;
+  if (b.empty()) return a;
+  CellRect both = a;
+  both.include(b.x0, b.y0);
+  both.include(b.x0 + b.width - 1, b.y0 + b.height - 1);
+  return both;
+}
+
+bool contains(const CellRect& outer, const CellRect& inner) {
+  return inner.empty() || (!outer.empty() && inner.x0 >= outer.x0 && inner.y0 >= outer.y0 &&
+                           inner.x0 + inner.width <= outer.x0 + outer.width &&
+                           inner.y0 + inner.height <= outer.y0 + outer.height);
+}
+
+// Copies the rectangle's cells from one map to another of the same grid.
+void copyRect(const ObstacleCells& from, const CellRect& rect, ObstacleCells& to) {
+  for (int y = rect.y0; y < rect.y0 + rect.height; ++y) {
+    const std::size_t row = static_cast<std::size_t>(y) * from.width + rect.x0;
+    std::copy_n(from.cells.begin() + row, rect.width, to.cells.begin() + row);
+  }
+}
+
+bool sameInRect(const ObstacleCells& a, const ObstacleCells& b, const CellRect& rect) {
+  for (int y = rect.y0; y < rect.y0 + rect.height; ++y) {
+    const std::size_t row = static_cast<std::size_t>(y) * a.width + rect.x0;
+    if (!std::equal(a.cells.begin() + row, a.cells.begin() + row + rect.width, b.cells.begin() + row)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+ObstacleMapAssembler::Made& ObstacleMapAssembler::freeMapFor(int64_t keyframe_tick) {
+  // Held only here, and not the map last returned (what the next one is told against).
+  const auto free = [&](const Made& made) { return made.cells.use_count() == 1 && made.cells != last_; };
+  Made* chosen = nullptr;
+  for (Made& made : made_)
+    if (free(made) && (chosen == nullptr || made.keyframe_tick == keyframe_tick)) chosen = &made;
+  if (chosen == nullptr) {
+    // Every kept map is held elsewhere: a new one, in place of the oldest.
+    if (made_.size() >= kKeptMaps) made_.erase(made_.begin());
+    made_.emplace_back();
+    chosen = &made_.back();
+  }
+  if (!chosen->cells || chosen->keyframe_tick != keyframe_tick || !sameGrid(*chosen->cells, *keyframe_cells_)) {
+    chosen->cells = std::make_shared<ObstacleCells>(*keyframe_cells_);
+    chosen->keyframe_tick = keyframe_tick;
+    chosen->rect = CellRect{};
+  }
+  return *chosen;
+}
+
+void ObstacleMapAssembler::noteReturned(const std::shared_ptr<const ObstacleCells>& map, const CellRect& rect) {
+  if (!last_ || !sameGrid(*last_, *map)) {
+    last_changed_cells_ = true;
+  } else if (last_ == map) {
+    last_changed_cells_ = false;
+  } else if (last_generation_ == keyframe_generation_) {
+    // Both are the same keyframe with a rectangle written: cells can only
+    // differ where either rectangle lies.
+    const CellRect both = unite(last_rect_, rect);
+    last_changed_cells_ = !sameInRect(*last_, *map, both);
+  } else {
+    last_changed_cells_ = last_->cells != map->cells;
+  }
+  last_ = map;
+  last_generation_ = keyframe_generation_;
+  last_rect_ = rect;
+}
+
 std::shared_ptr<const ObstacleCells> ObstacleMapAssembler::mapOf(const beft::obstacle_map_t& keyframe,
                                                                  const beft::obstacle_map_changes_t* changes) {
   if (changes != nullptr && changes->keyframe_tick != keyframe.tick)
@@ -88,11 +167,24 @@ std::shared_ptr<const ObstacleCells> ObstacleMapAssembler::mapOf(const beft::obs
   if (!keyframe_cells_ || keyframe_.tick != keyframe.tick || !sameEncodedMap(keyframe_, keyframe)) {
     keyframe_cells_ = std::make_shared<const ObstacleCells>(decodeObstacleMap(keyframe));
     keyframe_ = keyframe;
+    ++keyframe_generation_;
+    made_.clear();  // made of the keyframe before
   }
-  if (changes == nullptr || changes->width <= 0 || changes->height <= 0) return keyframe_cells_;
-  auto assembled = std::make_shared<ObstacleCells>(*keyframe_cells_);
-  applyMapChanges(*changes, *assembled);
-  return assembled;
+  if (changes == nullptr || changes->width <= 0 || changes->height <= 0) {
+    noteReturned(keyframe_cells_, CellRect{});
+    return keyframe_cells_;
+  }
+  Made& made = freeMapFor(keyframe.tick);
+  const CellRect rect{changes->x0, changes->y0, changes->width, changes->height};
+  // The old rectangle back to the keyframe where the new one does not cover it.
+  if (!contains(rect, made.rect)) {
+    copyRect(*keyframe_cells_, made.rect, *made.cells);
+    made.rect = CellRect{};
+  }
+  applyMapChanges(*changes, *made.cells);  // throws before writing a cell: made.rect still says what it holds
+  made.rect = rect;
+  noteReturned(made.cells, rect);
+  return made.cells;
 }
 
 }  // namespace beft::planners

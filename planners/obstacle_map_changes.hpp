@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "obstacle_map_codec.hpp"
 
@@ -37,14 +38,41 @@ void applyMapChanges(const beft::obstacle_map_changes_t& changes, ObstacleCells&
 // The map of a tick from its keyframe and changes (null: the keyframe's own
 // tick), decoding each keyframe once. Throws ObstacleMapError if the changes
 // belong to another keyframe or do not apply.
+//
+// A map it returned is never written again while anyone else holds it. One
+// nobody holds any more (a reader keeps the newest and lets go of the one
+// before) is brought up to date in place: its old rectangle back to the
+// keyframe, the new one written, instead of copying the whole keyframe (two
+// million cells in a 160 x 120 m world) at every tick the map changes.
 class ObstacleMapAssembler {
  public:
   std::shared_ptr<const ObstacleCells> mapOf(const beft::obstacle_map_t& keyframe,
                                              const beft::obstacle_map_changes_t* changes);
+  // Whether the map mapOf last returned has other cells (or another size,
+  // resolution or origin) than the one it returned before; true the first time.
+  bool lastChangedCells() const { return last_changed_cells_; }
 
  private:
+  // A map made here: the keyframe (by tick) with `rect` written over it.
+  struct Made {
+    std::shared_ptr<ObstacleCells> cells;
+    int64_t keyframe_tick = -1;
+    CellRect rect;
+  };
+  static constexpr std::size_t kKeptMaps = 2;
+
+  Made& freeMapFor(int64_t keyframe_tick);
+  void noteReturned(const std::shared_ptr<const ObstacleCells>& map, const CellRect& rect);
+
   std::shared_ptr<const ObstacleCells> keyframe_cells_;
   beft::obstacle_map_t keyframe_;  // the one decoded, to know it again
+  uint64_t keyframe_generation_ = 0;  // grows with every keyframe decoded
+  std::vector<Made> made_;            // at most kKeptMaps
+  // The map last returned and what it was made of, to tell what changed.
+  std::shared_ptr<const ObstacleCells> last_;
+  uint64_t last_generation_ = 0;
+  CellRect last_rect_;
+  bool last_changed_cells_ = true;
 };
 
 }  // namespace beft::planners

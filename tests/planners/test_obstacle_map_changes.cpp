@@ -3,7 +3,9 @@
 // refused with what is wrong, the map untouched.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <random>
+#include <vector>
 
 #include "obstacle_map_changes.hpp"
 
@@ -76,4 +78,74 @@ TEST(ObstacleMapChanges, RefusesWhatDoesNotFitOrDecodeAndLeavesTheMapAlone) {
 
   const obstacle_map_t other_keyframe = bp::makeObstacleMap(emptyMap(50, 40), obstacle_map_t::ENCODING_RLE, 0, 20);
   EXPECT_THROW(bp::ObstacleMapAssembler().mapOf(other_keyframe, &changes), bp::ObstacleMapError);
+}
+
+// Maps let go of are brought up to date in place; a map still held is never
+// written again; lastChangedCells says whether the cells differ from the map
+// returned before, over keyframes, ticks without change, rectangles that
+// move and changes refused on the way.
+TEST(ObstacleMapChanges, ReusesOnlyMapsNobodyHoldsAndTellsWhetherCellsChanged) {
+  std::mt19937 random(5);
+  bp::ObstacleCells truth = emptyMap(60, 40);
+  bp::ObstacleMapAssembler assembler;
+  obstacle_map_t keyframe;
+  bp::CellRect changed;
+  std::vector<std::pair<std::shared_ptr<const bp::ObstacleCells>, std::vector<uint8_t>>> held;
+  std::shared_ptr<const bp::ObstacleCells> newest;
+  std::vector<uint8_t> returned_before;
+  std::weak_ptr<const bp::ObstacleCells> before_last, last;  // not holding them
+  int reused = 0, unchanged_ticks = 0, refused = 0, earlier_asked = 0;
+  std::vector<std::pair<beft::obstacle_map_changes_t, std::vector<uint8_t>>> history;  // this keyframe's ticks
+  for (int tick = 0; tick < 300; ++tick) {
+    if (tick % 25 == 0) {
+      keyframe = bp::makeObstacleMap(truth, obstacle_map_t::ENCODING_RLE_ZSTD, 0, tick);
+      changed = bp::CellRect{};
+    } else if (random() % 3 != 0) {
+      // A few cells somewhere; now and then the same value again (no change).
+      const int cx = static_cast<int>(random() % 56) + 2, cy = static_cast<int>(random() % 36) + 2;
+      for (int i = 0; i < 6; ++i) {
+        const int x = cx + static_cast<int>(random() % 5) - 2, y = cy + static_cast<int>(random() % 5) - 2;
+        truth.cells[static_cast<size_t>(y) * truth.width + x] = random() % 4 == 0 ? 0 : 1 + random() % 2;
+        changed.include(x, y);
+      }
+    }
+    const auto changes = bp::makeMapChanges(truth.cells, truth.width, truth.height, changed, keyframe.tick, 0, tick);
+    if (tick % 17 == 5 && !changed.empty()) {
+      auto damaged = changes;
+      damaged.data[damaged.data.size() / 2] ^= 0x5a;
+      EXPECT_THROW(assembler.mapOf(keyframe, &damaged), bp::ObstacleMapError);
+      ++refused;
+    }
+    newest = assembler.mapOf(keyframe, changed.empty() ? nullptr : &changes);
+    ASSERT_EQ(newest->cells, truth.cells) << "tick " << tick;
+    const bool differs = returned_before.empty() || returned_before != truth.cells;
+    EXPECT_EQ(assembler.lastChangedCells(), differs) << "tick " << tick;
+    unchanged_ticks += !differs;
+    returned_before = truth.cells;
+    // The map of two calls ago, let go of meanwhile, is the one returned now.
+    reused += !changed.empty() && before_last.lock() == newest && last.lock() != newest;
+    before_last = last;
+    last = newest;
+    // Now and then the map of an earlier tick of this keyframe again (a
+    // reader catching up): its rectangle is smaller than the one written.
+    if (tick % 25 == 0) history.clear();
+    history.emplace_back(changes, truth.cells);
+    if (tick % 9 == 4 && history.size() > 3) {
+      const auto& [earlier_changes, earlier_cells] = history[random() % (history.size() - 2)];
+      const auto earlier = assembler.mapOf(keyframe, earlier_changes.width > 0 ? &earlier_changes : nullptr);
+      ASSERT_EQ(earlier->cells, earlier_cells) << "tick " << tick << ", an earlier one";
+      EXPECT_EQ(assembler.lastChangedCells(), earlier_cells != returned_before);
+      returned_before = earlier_cells;
+      ++earlier_asked;
+      newest = earlier;
+      before_last = last;
+      last = newest;
+    }
+    if (random() % 7 == 0) held.emplace_back(newest, returned_before);  // a reader that keeps it
+  }
+  for (const auto& [map, cells] : held) EXPECT_EQ(map->cells, cells) << "a held map was written";
+  EXPECT_GT(reused, 100) << "maps let go are brought up to date, not made anew";
+  EXPECT_GT(unchanged_ticks, 50);
+  EXPECT_GT(refused, 5);
+  EXPECT_GT(earlier_asked, 20);
 }

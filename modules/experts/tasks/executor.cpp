@@ -40,8 +40,13 @@ void Executor::setObstacleMap(std::shared_ptr<const planners::ObstacleCells> map
   const bool same = map_ && map_->width == map->width && map_->height == map->height &&
                     map_->resolution == map->resolution && map_->origin_x == map->origin_x &&
                     map_->origin_y == map->origin_y && map_->cells == map->cells;
-  map_ = std::move(map);  // the same cells: kept all the same, so the next one compares at once
-  if (!same) map_changed_ = true;
+  setObstacleMap(std::move(map), !same);
+}
+
+void Executor::setObstacleMap(std::shared_ptr<const planners::ObstacleCells> map, bool cells_changed) {
+  if (map == nullptr) return;
+  map_ = std::move(map);  // the same cells too: the one before is let go
+  if (cells_changed) map_changed_ = true;
 }
 
 void Executor::onPlanResult(const beft::plan_result_t& result) {

@@ -64,8 +64,12 @@ class Executor {
   }
   // The latest obstacle map; a change that blocks the current path replans.
   void setObstacleMap(planners::ObstacleCells map);
-  // The same, shared: a map of two million cells is not copied.
+  // The same, shared: a map of two million cells is not copied. Compared
+  // with the map before to tell whether it changed, unless the caller knows
+  // (cells_changed: ObstacleMapInput's version, which compares only where
+  // the maps can differ).
   void setObstacleMap(std::shared_ptr<const planners::ObstacleCells> map);
+  void setObstacleMap(std::shared_ptr<const planners::ObstacleCells> map, bool cells_changed);
   // An answer of the planner service; kept only if it answers the request in flight.
   void onPlanResult(const beft::plan_result_t& result);
 

@@ -136,10 +136,10 @@ void TasksExpert::updateExecutorInputs(const expert::Firing& firing) {
   executor_->setObjectPositions(std::move(positions));
 
   try {
-    // Decoded once per change: an unchanged map keeps its version.
-    if (const auto map = map_.latest(); map != nullptr && map_.version() != map_version_) {
+    // Decoded once per change; the version grows only when cells changed.
+    if (const auto map = map_.latest(); map != nullptr) {
+      executor_->setObstacleMap(map, map_.version() != map_version_);
       map_version_ = map_.version();
-      executor_->setObstacleMap(map);
     }
   } catch (const std::exception& e) {
     if (!map_warned_) log::warn("OBSTACLE_MAP ignored: ", e.what());

@@ -22,7 +22,7 @@ std::shared_ptr<const planners::ObstacleCells> ObstacleMapInput::ofTick(int64_t 
   made_ = assembler_.mapOf(keyframe->message, &applied);
   made_from_keyframe_ = keyframe->sequence;
   made_from_changes_ = applied;
-  ++version_;
+  if (assembler_.lastChangedCells()) ++version_;
   return made_;
 }
 

@@ -29,7 +29,8 @@ class ObstacleMapInput
   std::shared_ptr<const planners::ObstacleCells> ofTick(int64_t tick) const;
   // The map of the newest tick that can be made, or null; throws as ofTick.
   std::shared_ptr<const planners::ObstacleCells> latest() const;
-  // Grows whenever the map last returned differs from the one before.
+  // Grows whenever the map last returned has other cells than the one before
+  // (a new keyframe of the same cells keeps it).
   uint64_t version() const { return version_; }
   bool has(int64_t tick) const { return partsOfTick(tick).keyframe != nullptr; }
 
