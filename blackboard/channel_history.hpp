@@ -23,9 +23,16 @@ class ChannelHistory {
 
   // Stores a message; the oldest is dropped when the history is full.
   uint64_t store(const Message& message, int64_t utime) { return store(Message(message), utime); }
-  uint64_t store(Message&& message, int64_t utime) {
+  uint64_t store(Message&& message, int64_t utime) { return store(std::move(message), utime, nullptr); }
+  // The same; the message dropped to make room, if one was, is moved to
+  // `dropped` (a reader decodes the next message over it: its strings' and
+  // arrays' storage is reused instead of freed and allocated again).
+  uint64_t store(Message&& message, int64_t utime, Message* dropped) {
     entries_.push_back(Entry{++last_sequence_, utime, std::move(message)});
-    while (entries_.size() > capacity_) entries_.pop_front();
+    while (entries_.size() > capacity_) {
+      if (dropped != nullptr) *dropped = std::move(entries_.front().message);
+      entries_.pop_front();
+    }
     return last_sequence_;
   }
 

@@ -103,3 +103,19 @@ TEST(ChannelHistory, DropOldestRemovesOneEntryAndKeepsSequences) {
   EXPECT_EQ(history.oldest()->message, 2);
   EXPECT_EQ(history.store(3, 3), 3u);
 }
+
+// The message dropped to make room is handed back (a reader decodes the
+// next one over it), the one before it stays dropped; none before full.
+TEST(ChannelHistory, HandsBackTheMessageDroppedToMakeRoom) {
+  ChannelHistory<std::string> history(2);
+  std::string dropped = "untouched";
+  history.store(std::string("first"), 100, &dropped);
+  history.store(std::string("second"), 200, &dropped);
+  EXPECT_EQ(dropped, "untouched");
+  history.store(std::string("third"), 300, &dropped);
+  EXPECT_EQ(dropped, "first");
+  history.store(std::string("fourth"), 400, &dropped);
+  EXPECT_EQ(dropped, "second");
+  EXPECT_EQ(history.oldest()->message, "third");
+  EXPECT_EQ(history.latest()->message, "fourth");
+}

@@ -79,15 +79,16 @@ class TickInput : public InputPortBase {
         optional_until_heard_(optional_until_heard) {}
 
   bool receive(const void* data, int size) override {
-    Message message{};
-    if (!decodeMessage(channel(), data, size, message)) return false;
+    // Decoded over the message the history dropped last (every field is
+    // written), so its strings and arrays keep their storage.
+    if (!decodeMessage(channel(), data, size, spare_)) return false;
     std::string why;
-    if (admit_ && !admit_(message, &why)) {
+    if (admit_ && !admit_(spare_, &why)) {
       wire::processRejects().count(channel(), {wire::Fault::kBadPayload, ""}, why);
       return false;
     }
-    const int64_t utime = message.utime;
-    history_.store(std::move(message), utime);  // moved: a camera frame's pixels are not copied again
+    const int64_t utime = spare_.utime;
+    history_.store(std::move(spare_), utime, &spare_);  // moved: a camera frame's pixels are not copied again
     return true;
   }
   void store(const Message& message) { history_.store(message, message.utime); }
@@ -110,6 +111,7 @@ class TickInput : public InputPortBase {
 
  private:
   blackboard::ChannelHistory<Message> history_;
+  Message spare_{};  // what the next message is decoded over
   Admit admit_;
   bool optional_until_heard_ = false;
 };

@@ -2,7 +2,10 @@
 // the newest one.
 #include <gtest/gtest.h>
 
+#include <beft/geometry_percepts_t.hpp>
 #include <beft/robot_state_t.hpp>
+
+#include <algorithm>
 
 #include "scene_builders.hpp"
 #include "expert.hpp"
@@ -48,6 +51,43 @@ TEST(TickInput, DecodesBytesAndRefusesGarbage) {
   const uint8_t garbage[5] = {1, 2, 3, 4, 5};
   EXPECT_FALSE(channel.receive(garbage, 5));
   EXPECT_EQ(channel.latest()->tick, 9);
+}
+
+// Messages are decoded over the one the history dropped last: a shorter
+// list after a longer one, other strings, or garbage in between leave
+// nothing of the message before in what is stored.
+TEST(TickInput, EachStoredMessageIsExactlyTheOneSent) {
+  PortOwner owner;
+  expert::TickInput<geometry_percepts_t> channel(owner, channels::kGeometry, 2);
+  std::vector<geometry_percepts_t> sent;
+  const int lengths[] = {5, 2, 7, 0, 3, 9, 1, 4};
+  for (int tick = 0; tick < 8; ++tick) {
+    geometry_percepts_t message{};
+    message.utime = tick * 100000;
+    message.tick = tick;
+    for (int i = 0; i < lengths[tick]; ++i) {
+      geometry_percept_t p{};
+      p.object_id = std::string(static_cast<size_t>(1 + (tick * 7 + i) % 13), static_cast<char>('a' + tick));
+      p.distance = tick + 0.1 * i;
+      p.acoustic = (tick + i) % 2 == 1;
+      message.percepts.push_back(p);
+    }
+    message.num_percepts = lengths[tick];
+    std::vector<uint8_t> bytes(message.getEncodedSize());
+    message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    ASSERT_TRUE(channel.receive(bytes.data(), static_cast<int>(bytes.size())));
+    bytes.resize(bytes.size() / 2);  // cut: refused, and nothing stored changes
+    EXPECT_FALSE(channel.receive(bytes.data(), static_cast<int>(bytes.size())));
+    sent.push_back(message);
+    for (int k = std::max(0, tick - 1); k <= tick; ++k) {
+      const geometry_percepts_t* stored = channel.ofTick(k);
+      ASSERT_NE(stored, nullptr) << "tick " << k;
+      std::vector<uint8_t> expected(sent[k].getEncodedSize()), got(stored->getEncodedSize());
+      sent[k].encode(expected.data(), 0, static_cast<int>(expected.size()));
+      stored->encode(got.data(), 0, static_cast<int>(got.size()));
+      EXPECT_EQ(got, expected) << "tick " << k << " after receiving tick " << tick;
+    }
+  }
 }
 
 TEST(TickInput, ARepeatedTickGivesTheNewestCopy) {
