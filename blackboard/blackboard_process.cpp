@@ -4,9 +4,11 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 #include <beft/bb_query_t.hpp>
+#include <beft/run_status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include "blackboard/message_decoder.hpp"
@@ -39,8 +41,17 @@ class Traffic {
       if (wire::decodeFrom(channel, message.data, message.size, query)) onQuery(query);
       return;
     }
+    if (channel == channels::kRunStatus) {
+      beft::run_status_t status{};
+      if (wire::decodeFrom(channel, message.data, message.size, status) &&
+          status.state == beft::run_status_t::STATE_WAITING)
+        arbiter_waiting_ = true;
+    }
     onAnyMessage(channel, message.data, static_cast<int>(message.size));
   }
+
+  // Whether an arbiter said it waits for heartbeats since the last call.
+  bool takeArbiterWaiting() { return std::exchange(arbiter_waiting_, false); }
 
   void onAnyMessage(const std::string& channel, const void* data, int size) {
     try {
@@ -93,6 +104,7 @@ class Traffic {
  private:
   lcm::LCM& lcm_;
   BlackboardService& service_;
+  bool arbiter_waiting_ = false;
 };
 
 std::string joined(const std::vector<std::string>& items) {
@@ -204,7 +216,12 @@ int BlackboardProcess::serve(service::Context& context) {
   log::info("listening on ", context.lcm_url, ": keeping ", options_.limits.history, " messages per channel (at most ",
             max_channel_mb_, " MiB), not storing ", excluded.empty() ? "nothing" : excluded);
   auto next_status = Clock::now() + seconds(status_period_);
+  // Heartbeats once it listens: the arbiter waits for the first (mission.xml:
+  // --wait-for blackboard), or a message sent before, such as the ground
+  // truth that goes out only when the scene changes, would never be held.
+  service::HeartbeatSender heartbeats(context.lcm, context.process_name);
   while (!context.stop.any()) {
+    heartbeats.update(traffic.takeArbiterWaiting());
     // A query wakes it at once; stored traffic is read at least every batch.
     transport::waitReadable({sources.wake->fd(), sources.queued && !gather ? sources.queued->fd() : -1},
                             gather ? batch_ms_ : 200);

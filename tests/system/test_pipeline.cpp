@@ -412,6 +412,56 @@ TEST(Launch, APlannerStartedLateChangesNothing) {
   EXPECT_EQ(comparison.differing, 0u) << "first difference: " << comparison.first_difference;
 }
 
+// The blackboard too: started after the run's first tick, it would never
+// hold the ground truth (sent only when the scene changes), and a process
+// joining late or restarted would get none from it. The arbiter waits for
+// its heartbeat (mission.xml: --wait-for blackboard).
+TEST(Launch, ABlackboardStartedLateStillHoldsTheScene) {
+  const std::string dir = makeTempDir("blackboard_late");
+  const pid_t runner = fork();
+  if (runner == 0) {
+    const std::string command = binDir() + "/beft-run " + sourceDir() +
+                                "/scenarios/yard.xml --max-ticks 30 --no-report --except blackboard --out " + dir +
+                                " > " + dir + "/run_output.txt 2>&1";
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::string url, run_id;
+  for (int i = 0; i < 100 && (url.empty() || run_id.empty()); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    const auto out = runCommand("cat " + dir + "/run_output.txt", 5).output;
+    const auto line = lineAfter(out, "[run] LCM ");
+    if (!line.empty()) url = line.substr(0, line.find(';'));
+    const auto env = lineAfter(out, "    BEFT_RUN_ID=");
+    if (!env.empty()) run_id = env.substr(0, env.find(' '));
+  }
+  ASSERT_FALSE(url.empty());
+  ASSERT_FALSE(run_id.empty());
+  std::this_thread::sleep_for(std::chrono::seconds(2));  // without the wait, the run would be over by now
+  const pid_t blackboard = fork();
+  if (blackboard == 0) {
+    const std::string command = "env BEFT_RUN_ID=" + run_id + " " + binDir() + "/beft-blackboard --lcm-url '" + url +
+                                "' > " + dir + "/blackboard_output.txt 2>&1";
+    execl("/bin/sh", "sh", "-c", ("exec " + command).c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  waitpid(runner, &status, 0);
+  const auto out = runCommand("cat " + dir + "/run_output.txt", 5).output;
+  // What the blackboard holds once the run is over.
+  const auto dump = runCommand("env BEFT_RUN_ID=" + run_id + " " + binDir() + "/beft-blackboard-dump --lcm-url '" +
+                                   url + "' --channel GT_OBJECTS --summary --timeout 5",
+                               30);
+  kill(blackboard, SIGTERM);
+  waitpid(blackboard, nullptr, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+  const std::string processes = runCommand("cat " + dir + "/processes.log", 5).output;
+  EXPECT_NE(processes.find("[arbiter] [arbiter] info: heard blackboard"), std::string::npos) << processes;
+  EXPECT_EQ(dump.exit_code, 0) << dump.output;
+  EXPECT_NE(dump.output.find("GT_OBJECTS"), std::string::npos) << "the blackboard never heard the scene:\n"
+                                                                << dump.output;
+}
+
 // A short run of peek.xml recorded when the message types were first fixed:
 // old logs must stay readable (types change by adding new ones; the one
 // edited since, camera_frame_t, is read from its earlier layout by the log
