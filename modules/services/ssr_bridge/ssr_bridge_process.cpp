@@ -169,8 +169,21 @@ int SsrBridgeProcess::serve(service::Context& context) {
       if (batch_ms_ > 0) std::this_thread::sleep_for(std::chrono::milliseconds(batch_ms_));
     }
   }
-  // What the run said last, so that SSR ends where the run ended.
+  // What the run said last, so that SSR ends where the run ended. A bridge
+  // that started late (it runs at background priority) may not have the
+  // scene yet: the blackboard, still up while listeners stop, is asked once more.
   receiver->drain(keep);
+  if (!heard_objects_ && link.connected()) {
+    next_query_ = std::chrono::steady_clock::now();
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+    while (!heard_objects_ && std::chrono::steady_clock::now() < give_up) {
+      askForTheScene(context.lcm);
+      pollfd fd{receiver->fd(), POLLIN, 0};
+      poll(&fd, 1, 50);
+      receiver->drain(keep);
+    }
+    if (!heard_objects_) log::warn("no scene heard from the run or the blackboard: SSR shows none");
+  }
   if (link.connected()) {
     tellSsr(link, mirror);
     if (!link.flush(std::chrono::milliseconds(1000))) log::warn("SSR did not take the last requests within 1 s");

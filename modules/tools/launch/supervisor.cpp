@@ -217,8 +217,11 @@ void stopSome(std::vector<Child>& children, Printer& printer, double grace_s,
   }
 }
 
-// The recorder last, so it records what the others send while stopping.
+// Listeners first (the SSR bridge: it may still ask the blackboard for the
+// state it ends on), the recorder last, so it records what the others send
+// while stopping.
 void stopAll(std::vector<Child>& children, Printer& printer, double grace_s) {
+  stopSome(children, printer, grace_s, [](const Child& child) { return child.spec.group == "listener"; });
   stopSome(children, printer, grace_s, [](const Child& child) { return child.spec.name != kRecorderName; });
   stopSome(children, printer, grace_s, [](const Child& child) { return child.spec.name == kRecorderName; });
   for (auto& child : children)

@@ -22,6 +22,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <thread>
@@ -59,12 +60,14 @@ bool onPath(const std::string& program) {
 
 // A program in the background, in a process group of its own (SSR starts a
 // player process per sound file), stopped with that whole group when this
-// goes, whatever the test's outcome: SIGTERM, then SIGKILL after 3 s.
+// goes, whatever the test's outcome: SIGTERM, then SIGKILL after grace_s
+// (SSR does not end on SIGTERM; a killed JACK server leaves its entry in
+// JACK's registry, so JACK is given time to end).
 class Background {
  public:
   Background(const std::vector<std::string>& argv, const std::map<std::string, std::string>& env,
-             const std::string& output)
-      : output_(output) {
+             const std::string& output, double grace_s = 3)
+      : output_(output), grace_s_(grace_s) {
     pid_ = fork();
     if (pid_ == 0) {
       setpgid(0, 0);
@@ -91,7 +94,7 @@ class Background {
   void stop() {
     if (pid_ <= 0) return;
     kill(-pid_, SIGTERM);
-    const auto deadline = Clock::now() + std::chrono::seconds(3);
+    const auto deadline = Clock::now() + std::chrono::duration<double>(grace_s_);
     while (running() && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(20));
     kill(-pid_, SIGKILL);  // the group: what the leader started, even if the leader is gone
     if (!reaped_) waitpid(pid_, nullptr, 0);
@@ -103,6 +106,7 @@ class Background {
   pid_t pid_ = -1;
   bool reaped_ = false;
   std::string output_;
+  double grace_s_;
 };
 
 // Polls `ready` every 50 ms until it holds or `seconds` pass.
@@ -236,18 +240,34 @@ TEST(SsrBridgeSystem, SsrShowsTheLastStateOfAYardRun) {
     if (!onPath(program))
       GTEST_SKIP() << program << " is not installed (Debian: jackd2, soundscaperenderer-nox; ./beft setup)";
   const std::string dir = makeTempDir("ssr_bridge");
-  const std::string jack_name = "beft_ssr_test_" + std::to_string(getpid());
-  // JACK_NO_AUDIO_RESERVATION: no D-Bus device reservation (none in a container);
-  // JACK_NO_START_SERVER: a client never starts a server of its own.
-  const std::map<std::string, std::string> jack_env = {{"JACK_DEFAULT_SERVER", jack_name},
-                                                       {"JACK_NO_AUDIO_RESERVATION", "1"},
-                                                       {"JACK_NO_START_SERVER", "1"}};
-  Background jack({"jackd", "-n", jack_name, "--no-realtime", "-d", "dummy", "-r", "44100", "-p", "1024"}, jack_env,
-                  dir + "/jackd.log");
-  const std::string jack_lsp = "JACK_DEFAULT_SERVER=" + jack_name + " JACK_NO_START_SERVER=1 jack_lsp";
-  ASSERT_TRUE(waitFor(20, [&] { return !jack.running() || runCommand(jack_lsp, 5).exit_code == 0; }) &&
-              jack.running())
-      << "JACK did not start:\n" << jack.output();
+  // JACK keeps a registry of at most 8 servers in shared memory and frees
+  // the entry of a server that died without unregistering (killed) only for
+  // a server of the same name: names from a fixed few, each tried in turn,
+  // so one another run is using is skipped and a dead one's is taken back.
+  std::unique_ptr<Background> jack;
+  std::string jack_name, jack_logs;
+  std::map<std::string, std::string> jack_env;
+  for (int slot = 0; slot < 8 && !jack; ++slot) {
+    jack_name = "beft_ssr_test_" + std::to_string(slot);
+    // JACK_NO_AUDIO_RESERVATION: no D-Bus device reservation (none in a container);
+    // JACK_NO_START_SERVER: a client never starts a server of its own.
+    jack_env = {{"JACK_DEFAULT_SERVER", jack_name}, {"JACK_NO_AUDIO_RESERVATION", "1"}, {"JACK_NO_START_SERVER", "1"}};
+    const std::string log = dir + "/jackd_" + std::to_string(slot) + ".log";
+    jack = std::make_unique<Background>(
+        std::vector<std::string>{"jackd", "-n", jack_name, "--no-realtime", "-d", "dummy", "-r", "44100", "-p", "1024"},
+        jack_env, log, /*grace_s=*/10);
+    const std::string jack_lsp = "JACK_DEFAULT_SERVER=" + jack_name + " JACK_NO_START_SERVER=1 jack_lsp";
+    bool up = waitFor(20, [&] { return !jack->running() || runCommand(jack_lsp, 5).exit_code == 0; });
+    // Still running a moment later: jack_lsp did not answer for a server of
+    // this name that another run has (this one then gives up).
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    up = up && jack->running();
+    if (!up) {
+      jack_logs += jack_name + ":\n" + jack->output() + "\n";
+      jack.reset();
+    }
+  }
+  ASSERT_TRUE(jack) << "JACK did not start under any of the names tried:\n" << jack_logs;
 
   const int ssr_port = freeTcpPort();
   ASSERT_GT(ssr_port, 0);
@@ -289,7 +309,7 @@ TEST(SsrBridgeSystem, SsrShowsTheLastStateOfAYardRun) {
   // file) and works through the bridge's requests in order: its reports are
   // read until they show the run's end, or for 40 s.
   SsrWatcher watcher(ssr_port);
-  ASSERT_TRUE(watcher.connected());
+  ASSERT_TRUE(watcher.connected()) << "SSR's log:\n" << ssr.output() << "\nJACK's log:\n" << jack->output();
   std::string difference = "nothing read from SSR";
   const auto deadline = Clock::now() + std::chrono::seconds(40);
   while (Clock::now() < deadline) {
@@ -298,7 +318,7 @@ TEST(SsrBridgeSystem, SsrShowsTheLastStateOfAYardRun) {
         (difference = differences(watcher.scene(), last_objects, last_robot)).empty())
       break;
   }
-  EXPECT_EQ(difference, "") << "SSR's log:\n" << ssr.output();
+  EXPECT_EQ(difference, "") << "SSR's log:\n" << ssr.output() << "\nJACK's log:\n" << jack->output();
   EXPECT_TRUE(ssr.running()) << ssr.output();
   std::printf("[test] the run's last tick %lld; the head at (%.3f, %.3f) looking along %.2f deg; SSR agrees\n",
               static_cast<long long>(last_robot.tick), last_robot.x, last_robot.y,

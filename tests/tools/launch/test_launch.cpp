@@ -181,6 +181,28 @@ TEST(Supervisor, PrefixesOutputRestartsOnFailureAndEndsWithTheArbiter) {
   EXPECT_EQ(readAll(counter), "started\nstarted\nstarted\n");  // first start + 2 restarts
 }
 
+// At the end, listeners (group="listener": the SSR bridge) are stopped
+// while the rest still runs: the bridge may ask the blackboard for the
+// state it ends on.
+TEST(Supervisor, StopsListenersWhileTheOthersStillRun) {
+  TempDir dir;
+  const std::string pid_file = dir.path + "/infra.pid", seen = dir.path + "/seen";
+  const auto file = dir.write("run.xml", R"(<launch>
+  <process name="blackboard" group="infra" command="sh" args="-c 'echo $$ > )" + pid_file +
+                                               R"(; trap &quot;exit 0&quot; TERM; while :; do sleep 0.05; done'" lcm_url="0"/>
+  <process name="bridge" group="listener" command="sh" args="-c 'trap &quot;sleep 0.3; kill -0 $(cat )" + pid_file +
+                                               R"() &amp;&amp; echo alive > )" + seen + R"( || echo gone > )" + seen +
+                                               R"(; exit 0&quot; TERM; while :; do sleep 0.05; done'" lcm_url="0"/>
+  <process name="arbiter" command="sh" args="-c 'sleep 1; exit 0'" role="arbiter" lcm_url="0"/>
+</launch>)");
+  SupervisorOptions options;
+  options.quiet_children = true;
+  options.output_file = dir.path + "/out.log";
+  const auto outcome = supervise(loadLaunchFile(file, {}), options);
+  EXPECT_TRUE(outcome.arbiter_ran);
+  EXPECT_EQ(readAll(seen), "alive\n") << readAll(options.output_file);
+}
+
 TEST(Supervisor, ExceptAndOtherHostsAreNotStarted) {
   TempDir dir;
   const std::string marker = dir.path + "/ran";
