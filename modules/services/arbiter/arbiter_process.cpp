@@ -74,9 +74,9 @@ void ArbiterProcess::addOptions(CLI::App& app) {
   app.add_option("--resend-period", config_.resend_period_s, "seconds between re-sends of a FIRE")
       ->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--spin-us", spin_us_,
-                 "while a firing runs, poll for its DONE this many microseconds before sleeping (0: sleep at "
-                 "once); a tick waits for one DONE after another, and waking a sleeping process costs more "
-                 "than the poll, on a virtual machine most (env BEFT_ARBITER_SPIN_US)")
+                 "while one firing runs (and no other), poll for its DONE this many microseconds before sleeping "
+                 "(0: sleep at once); a tick waits for one DONE after another, and waking a sleeping process "
+                 "costs more than the poll, on a virtual machine most (env BEFT_ARBITER_SPIN_US)")
       ->capture_default_str()->check(CLI::Range(0, 100000));
   app.add_option("--firing-log", firing_log_path_, "also write every firing to this CSV file");
   app.add_flag("--quiet", quiet_, "no line per firing on stdout");

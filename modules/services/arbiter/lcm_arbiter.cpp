@@ -144,7 +144,7 @@ bool runArbiterLoop(ArbiterEventQueue& queue, ArbiterCore& core, const Clock& cl
     const double wait_s = std::clamp(core.nextDeadline() - clock.now(), 0.0, kLongestWait_s);
     const int wait_ms = static_cast<int>(std::ceil(wait_s * 1e3));
     // Everything already there is taken at once, so one step sees it all.
-    if (!queue.receive(wait_ms, core.firingsInFlight() > 0 ? spin_us : 0)) {
+    if (!queue.receive(wait_ms, core.firingsInFlight() == 1 ? spin_us : 0)) {
       queue.deliverTo(core);
       core.onAbort("LCM receive failed");
       while (!core.done()) {

@@ -86,8 +86,9 @@ class ArbiterEventQueue {
 // SIGINT: the first ends the run after the tick, a second aborts; SIGTERM: end now.
 using StopSignals = service::StopSignals;
 
-// Runs the core until it is done (final status sent). While a firing is in
-// flight, each wait polls for up to `spin_us` microseconds before it sleeps.
+// Runs the core until it is done (final status sent). While exactly one
+// firing is in flight, each wait polls for up to `spin_us` microseconds
+// before it sleeps; with more, the firing experts have the cores.
 // Returns false if LCM stopped working (the run is then FAILED).
 bool runArbiterLoop(ArbiterEventQueue& queue, ArbiterCore& core, const Clock& clock,
                     const StopSignals* signals = nullptr, int spin_us = 0);
