@@ -316,3 +316,29 @@ TEST(Fusion, RestoredHypothesesKeepTheirVerdictsUntilNewEvidence) {
   after.restore(other);
   EXPECT_EQ(find(after.hypotheses(400000, 4), "ghost"), nullptr);
 }
+
+// Hypotheses are found again by id and new ones take the scenario's order,
+// also when the scene's objects change between ticks (one added, the list
+// reordered, one moved): what is seen is placed where the scene of its tick
+// has it.
+TEST(Fusion, FollowsTheSceneOfEachTickWhenItsObjectsChange) {
+  const auto crate = [](double x) { return test::boxObject("crate", "car", x, 2, 0, 1, 1, 1); };
+  const scene_object_t victim = test::cylinderObject("victim", "person", 10, 5, 0.3, 1.8);
+  const scene_object_t siren = test::sounding(test::boxObject("siren", "siren", 4, -3, 0, 0.5, 0.5, 1), "siren");
+  fusion::HypothesisFusion fusion;
+  fusion.update(Tick({victim, crate(3)}, 0).seen("crate", "car", 80, 0.9).evidence());
+  // The crate moved and comes first now; a siren appeared between them.
+  fusion.update(Tick({crate(6), siren, victim}, 1)
+                    .seen("victim", "person", 80, 0.9)
+                    .seen("crate", "car", 80, 0.9)
+                    .heard("siren", "siren", 0.5, 4.2, -3.1)
+                    .evidence());
+  const hypotheses_t out = fusion.hypotheses(100000, 1);
+  ASSERT_EQ(out.num_hypotheses, 3);
+  EXPECT_EQ(out.hypotheses[0].object_id, "crate");  // first perceived first
+  EXPECT_EQ(out.hypotheses[1].object_id, "siren");  // then tick 1's new ones in scenario order
+  EXPECT_EQ(out.hypotheses[2].object_id, "victim");
+  EXPECT_DOUBLE_EQ(find(out, "crate")->x, 6);  // where tick 1's scene has it
+  EXPECT_DOUBLE_EQ(find(out, "victim")->x, 10);
+  EXPECT_DOUBLE_EQ(find(out, "siren")->x, 4.2);  // heard only: the acoustic estimate
+}
