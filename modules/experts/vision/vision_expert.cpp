@@ -113,11 +113,16 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     // both threads: the helper starts on them, this thread takes the solids
     // left when its map is done.
     // Expected pixels only change with the camera or the objects' shapes and poses.
-    const bool recount =
-        expected_pose_.width == 0 || !samePose(*instance, expected_pose_) || !sameSolids(*scene, expected_scene_);
-    std::optional<camera::SceneGeometry> solids;
+    // The solids are made again only when the scene's objects change (rarely:
+    // hundreds of objects were turned into solids at every tick of a drive).
+    const bool scene_changed = !solids_ || !sameSolids(*scene, solids_scene_);
+    if (scene_changed) {
+      solids_.emplace(camera::SceneGeometry::fromMessage(*scene));
+      solids_scene_ = *scene;
+    }
+    const bool recount = scene_changed || expected_pose_.width == 0 || !samePose(*instance, expected_pose_);
+    const camera::SceneGeometry* solids = &*solids_;
     if (recount) {
-      solids.emplace(camera::SceneGeometry::fromMessage(*scene));
       // Objects the real image cannot show at all are out of view: 0
       // expected, O_v = 100, not counted.
       ray_caster_.prepareExpectedInView(camera::cameraOfFrame(*instance));
@@ -137,7 +142,6 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
       expected_ = std::move(own_counts);
       for (size_t i = 0; i < expected_.size() && i < helper_counts.size(); ++i) expected_[i] += helper_counts[i];
       expected_pose_ = poseOf(*instance);
-      expected_scene_ = *scene;
     }
     const visual_percepts_t percepts = estimateVisualOcclusion(*scene, visible, expected_);
     // Both at the end: a publish wakes the readers, who would take the cores from the work.

@@ -64,9 +64,10 @@ class VisionExpert : public expert::Expert {
   obstacle_map_changes_t changes_message_{};    // the changes as last encoded
   uint64_t changes_message_version_ = 0;        // mapper version they encode (0: none yet)
   camera::RayCaster ray_caster_;
-  std::vector<int> expected_;          // expected pixels per object for the pose and solids below
+  std::vector<int> expected_;          // expected pixels per object for the pose below and solids_
   camera_frame_t expected_pose_{};     // header only: the pixels do not matter to it
-  scene_objects_t expected_scene_{};
+  std::optional<camera::SceneGeometry> solids_;  // of solids_scene_'s objects
+  scene_objects_t solids_scene_{};
   expert::SceneInput scene_{*this};
   // Frames arrive compressed: unpacked (or refused, and counted) as they are kept.
   expert::TickInput<camera_frame_t> depth_{*this, channels::kCameraDepth, 4, unpackFrame};

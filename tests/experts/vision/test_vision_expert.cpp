@@ -120,6 +120,43 @@ TEST(VisionExpert, FiresOnlyWithTheInputsOfItsTick) {
   EXPECT_EQ(map.height, 100);
 }
 
+// The expected pixels follow the scene's objects, not only the camera: a
+// person that grows, then moves, before a still camera is counted anew
+// each time (the solids are kept while the objects stay the same).
+TEST(VisionExpert, ExpectedPixelsFollowTheObjectsOfEachTick) {
+  vision::VisionExpert vision;
+  vision.startUp();
+  const std::vector<std::pair<double, double>> radius_and_y = {{0.3, 5}, {0.3, 5}, {0.6, 5}, {0.6, 4.2}};
+  std::vector<int> expected;
+  for (int64_t tick = 0; tick < static_cast<int64_t>(radius_and_y.size()); ++tick) {
+    const auto [radius, y] = radius_and_y[static_cast<size_t>(tick)];
+    const auto s = test::scene({test::cylinderObject("victim", "person", 6, y, radius, 1.8)}, tick, 20, 10);
+    camera::Camera cam;
+    cam.pose = {2, 5, 1.6, 0, 0};
+    camera::CameraMessages frames;
+    camera::encodeCameraMessages(camera::renderFrame(camera::SceneGeometry::fromMessage(s), cam), s.utime, tick,
+                                 {"victim"}, frames);
+    ASSERT_TRUE(feed(vision, channels::kGroundTruth, s));
+    ASSERT_TRUE(feed(vision, channels::kCameraDepth, frames.depth));
+    ASSERT_TRUE(feed(vision, channels::kCameraInstance, frames.instance));
+    contact_t bumper{};
+    bumper.utime = s.utime;
+    bumper.tick = tick;
+    ASSERT_TRUE(feed(vision, channels::kContact, bumper));
+    Collected out;
+    ASSERT_TRUE(vision.fire(firingFor(tick, tick + 1), out).ok) << "tick " << tick;
+    const auto percepts = out.get<visual_percepts_t>(channels::kVision);
+    ASSERT_EQ(percepts.num_percepts, 1);
+    // Nothing hides it: all it is expected to show is shown.
+    EXPECT_GT(percepts.percepts[0].visible_pixels, 0);
+    EXPECT_EQ(percepts.percepts[0].expected_pixels, percepts.percepts[0].visible_pixels) << "tick " << tick;
+    expected.push_back(percepts.percepts[0].expected_pixels);
+  }
+  EXPECT_EQ(expected[1], expected[0]);  // nothing changed
+  EXPECT_GT(expected[2], expected[1]);  // grown
+  EXPECT_NE(expected[3], expected[2]);  // moved nearer the image's edge and farther
+}
+
 TEST(VisionExpert, ResumesTheMapOfAPreviousRunAndIgnoresItsOwnEcho) {
   // A map from before a restart: an obstacle seen earlier at (15, 2), out of view now.
   planners::ObstacleCells before;
