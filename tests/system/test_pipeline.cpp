@@ -356,6 +356,36 @@ TEST(Launch, AnExpertStartedByHandLaterCompletesTheRun) {
   EXPECT_GE(vision_done, 15);  // 20 ticks; the logger may lose a datagram
 }
 
+namespace {
+// A run of yard.xml in the background without the process `left_out`, its
+// output in dir/run_output.txt: its pid, and the URL and run id a process
+// started by hand needs (read from what beft-run prints).
+struct RunWithoutOne {
+  pid_t pid = -1;
+  std::string url, run_id;
+};
+RunWithoutOne startRunWithout(const std::string& left_out, int ticks, const std::string& dir) {
+  RunWithoutOne run;
+  run.pid = fork();
+  if (run.pid == 0) {
+    const std::string command = binDir() + "/beft-run " + sourceDir() + "/scenarios/yard.xml --max-ticks " +
+                                std::to_string(ticks) + " --no-report --except " + left_out + " --out " + dir + " > " +
+                                dir + "/run_output.txt 2>&1";
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  for (int i = 0; i < 100 && (run.url.empty() || run.run_id.empty()); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    const auto out = runCommand("cat " + dir + "/run_output.txt", 5).output;
+    const auto line = lineAfter(out, "[run] LCM ");
+    if (!line.empty()) run.url = line.substr(0, line.find(';'));
+    const auto env = lineAfter(out, "    BEFT_RUN_ID=");
+    if (!env.empty()) run.run_id = env.substr(0, env.find(' '));
+  }
+  return run;
+}
+}  // namespace
+
 // The planner is a service the experts ask within a tick: a run that started
 // before it was up lost the first plan request (yard.xml asks at tick 49),
 // the executor waited 2 s for an answer that never came, and the mission
@@ -370,23 +400,9 @@ TEST(Launch, APlannerStartedLateChangesNothing) {
   ASSERT_EQ(reference.exit_code, 0) << reference.output;
 
   const std::string dir = makeTempDir("planner_late");
-  const pid_t runner = fork();
-  if (runner == 0) {
-    const std::string command = binDir() + "/beft-run " + sourceDir() + "/scenarios/yard.xml --max-ticks " +
-                                std::to_string(kTicks) + " --no-report --except planner --out " + dir + " > " + dir +
-                                "/run_output.txt 2>&1";
-    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  std::string url, run_id;
-  for (int i = 0; i < 100 && (url.empty() || run_id.empty()); ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    const auto out = runCommand("cat " + dir + "/run_output.txt", 5).output;
-    const auto line = lineAfter(out, "[run] LCM ");
-    if (!line.empty()) url = line.substr(0, line.find(';'));
-    const auto env = lineAfter(out, "    BEFT_RUN_ID=");
-    if (!env.empty()) run_id = env.substr(0, env.find(' '));
-  }
+  const RunWithoutOne run = startRunWithout("planner", kTicks, dir);
+  const pid_t runner = run.pid;
+  const std::string &url = run.url, &run_id = run.run_id;
   ASSERT_FALSE(url.empty());
   ASSERT_FALSE(run_id.empty());
   std::this_thread::sleep_for(std::chrono::seconds(2));  // without the wait, the run would be past tick 49
@@ -418,23 +434,9 @@ TEST(Launch, APlannerStartedLateChangesNothing) {
 // its heartbeat (mission.xml: --wait-for blackboard).
 TEST(Launch, ABlackboardStartedLateStillHoldsTheScene) {
   const std::string dir = makeTempDir("blackboard_late");
-  const pid_t runner = fork();
-  if (runner == 0) {
-    const std::string command = binDir() + "/beft-run " + sourceDir() +
-                                "/scenarios/yard.xml --max-ticks 30 --no-report --except blackboard --out " + dir +
-                                " > " + dir + "/run_output.txt 2>&1";
-    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  std::string url, run_id;
-  for (int i = 0; i < 100 && (url.empty() || run_id.empty()); ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    const auto out = runCommand("cat " + dir + "/run_output.txt", 5).output;
-    const auto line = lineAfter(out, "[run] LCM ");
-    if (!line.empty()) url = line.substr(0, line.find(';'));
-    const auto env = lineAfter(out, "    BEFT_RUN_ID=");
-    if (!env.empty()) run_id = env.substr(0, env.find(' '));
-  }
+  const RunWithoutOne run = startRunWithout("blackboard", 30, dir);
+  const pid_t runner = run.pid;
+  const std::string &url = run.url, &run_id = run.run_id;
   ASSERT_FALSE(url.empty());
   ASSERT_FALSE(run_id.empty());
   std::this_thread::sleep_for(std::chrono::seconds(2));  // without the wait, the run would be over by now

@@ -59,18 +59,15 @@ bool feed(expert::Expert& e, const std::string& channel, const Message& m) {
   return e.onMessage(channel, bytes.data(), static_cast<int>(bytes.size()));
 }
 
-// One tick of the world: a person 4 m in front of the camera at (2, 5), or
-// further right as the tick grows (moving), frames raw or compressed as the
-// world publishes them; the platform touched something at `contact` when one
-// is given.
-void feedTick(expert::Expert& e, int64_t tick, bool moving = false, bool compressed = false,
-              std::optional<std::pair<double, double>> contact = std::nullopt) {
-  const double y = moving ? 5 - 0.2 * static_cast<double>(tick) : 5;
-  const auto s = test::scene({test::cylinderObject("victim", "person", 6, y, 0.3, 1.8)}, tick, 20, 10);
+// One tick of the world `s` seen by a camera at (2, 5) looking along +x,
+// frames raw or compressed as the world publishes them; the platform touched
+// something at `contact` when one is given.
+void feedScene(expert::Expert& e, const scene_objects_t& s, bool compressed = false,
+               std::optional<std::pair<double, double>> contact = std::nullopt) {
   camera::Camera cam;
   cam.pose = {2, 5, 1.6, 0, 0};
   camera::CameraMessages frames;
-  camera::encodeCameraMessages(camera::renderFrame(camera::SceneGeometry::fromMessage(s), cam), s.utime, tick,
+  camera::encodeCameraMessages(camera::renderFrame(camera::SceneGeometry::fromMessage(s), cam), s.utime, s.tick,
                                {"victim"}, frames);
   if (compressed) {
     camera::CameraMessages packed;
@@ -83,12 +80,21 @@ void feedTick(expert::Expert& e, int64_t tick, bool moving = false, bool compres
   ASSERT_TRUE(feed(e, channels::kCameraInstance, frames.instance));
   contact_t bumper{};
   bumper.utime = s.utime;
-  bumper.tick = tick;
+  bumper.tick = s.tick;
   bumper.touching = contact.has_value();
   bumper.x = contact ? contact->first : 0;
   bumper.y = contact ? contact->second : 0;
   bumper.heading = 0;  // moving along +x
   ASSERT_TRUE(feed(e, channels::kContact, bumper));
+}
+
+// A person 4 m in front of the camera at (6, 5), or further right as the
+// tick grows (moving).
+void feedTick(expert::Expert& e, int64_t tick, bool moving = false, bool compressed = false,
+              std::optional<std::pair<double, double>> contact = std::nullopt) {
+  const double y = moving ? 5 - 0.2 * static_cast<double>(tick) : 5;
+  feedScene(e, test::scene({test::cylinderObject("victim", "person", 6, y, 0.3, 1.8)}, tick, 20, 10), compressed,
+            contact);
 }
 
 expert::Firing firingFor(int64_t tick, int64_t id) {
@@ -130,19 +136,7 @@ TEST(VisionExpert, ExpectedPixelsFollowTheObjectsOfEachTick) {
   std::vector<int> expected;
   for (int64_t tick = 0; tick < static_cast<int64_t>(radius_and_y.size()); ++tick) {
     const auto [radius, y] = radius_and_y[static_cast<size_t>(tick)];
-    const auto s = test::scene({test::cylinderObject("victim", "person", 6, y, radius, 1.8)}, tick, 20, 10);
-    camera::Camera cam;
-    cam.pose = {2, 5, 1.6, 0, 0};
-    camera::CameraMessages frames;
-    camera::encodeCameraMessages(camera::renderFrame(camera::SceneGeometry::fromMessage(s), cam), s.utime, tick,
-                                 {"victim"}, frames);
-    ASSERT_TRUE(feed(vision, channels::kGroundTruth, s));
-    ASSERT_TRUE(feed(vision, channels::kCameraDepth, frames.depth));
-    ASSERT_TRUE(feed(vision, channels::kCameraInstance, frames.instance));
-    contact_t bumper{};
-    bumper.utime = s.utime;
-    bumper.tick = tick;
-    ASSERT_TRUE(feed(vision, channels::kContact, bumper));
+    feedScene(vision, test::scene({test::cylinderObject("victim", "person", 6, y, radius, 1.8)}, tick, 20, 10));
     Collected out;
     ASSERT_TRUE(vision.fire(firingFor(tick, tick + 1), out).ok) << "tick " << tick;
     const auto percepts = out.get<visual_percepts_t>(channels::kVision);
