@@ -406,6 +406,31 @@ std::vector<TaskRequest> pushesOf(const Decision& decision) {
   return pushes;
 }
 
+// An explorer's view of the world: the map and a robot standing at (x, y).
+Observation observationAt(planners::ObstacleCells cells, double x, double y) {
+  Observation o;
+  o.map = std::make_shared<const planners::ObstacleCells>(std::move(cells));
+  o.map_version = 1;
+  o.robot_known = true;
+  o.robot_x = x;
+  o.robot_y = y;
+  o.stack_known = true;
+  return o;
+}
+
+// A person heard at (x, y), not yet seen; weight -1: DW gave none.
+HypothesisView heardPerson(const std::string& id, double x, double y, double weight = -1) {
+  HypothesisView h;
+  h.object_id = id;
+  h.x = x;
+  h.y = y;
+  h.heard = true;
+  h.best_category = "person";
+  h.confidence = h.person_confidence = 0.7;
+  h.weight = weight;
+  return h;
+}
+
 // The explorer searches outwards and stops once no farther hypothesis can
 // win: it must choose what scoring every hypothesis's best viewpoint chooses.
 TEST(ExplorerChoice, TheBoundedSearchChoosesWhatTheExhaustiveOneDoes) {
@@ -417,24 +442,13 @@ TEST(ExplorerChoice, TheBoundedSearchChoosesWhatTheExhaustiveOneDoes) {
   parameters.look_around = false;
   int chosen = 0, not_nearest = 0, far = 0;
   for (int world = 0; world < 60; ++world) {
-    Observation o;
-    o.map = std::make_shared<const planners::ObstacleCells>(randomWorld(rng, 140, 20));
-    o.map_version = 1;
-    o.robot_known = true;
-    o.robot_x = x(rng);
-    o.robot_y = y(rng);
-    o.stack_known = true;
+    auto cells = randomWorld(rng, 140, 20);
+    const double robot_x = x(rng), robot_y = y(rng);  // in this order: the worlds stay those of the seed
+    Observation o = observationAt(std::move(cells), robot_x, robot_y);
     const int hypotheses = 1 + world % 8;
     for (int i = 0; i < hypotheses; ++i) {
-      HypothesisView h;
-      h.object_id = "h" + std::to_string(i);
-      h.x = x(rng);
-      h.y = y(rng);
-      h.heard = true;
-      h.best_category = "person";
-      h.confidence = h.person_confidence = 0.7;
-      h.weight = weights[rng() % 4];
-      o.hypotheses.push_back(h);
+      const double hx = x(rng), hy = y(rng);
+      o.hypotheses.push_back(heardPerson("h" + std::to_string(i), hx, hy, weights[rng() % 4]));
     }
     // The reference: every hypothesis's best viewpoint, the lowest score, the first of equals.
     const KnownMap map(*o.map, o.robot_radius + parameters.safety_margin_m);
@@ -483,24 +497,8 @@ TEST(ExplorerChoice, TheBoundedSearchChoosesWhatTheExhaustiveOneDoes) {
 TEST(ExplorerChoice, AFarHypothesisThatMattersBeatsANearOneThatDoesNot) {
   ExplorerParameters parameters;
   parameters.look_around = false;
-  Observation o;
-  o.map = std::make_shared<const planners::ObstacleCells>(makeCells(100, 10, kFree));
-  o.map_version = 1;
-  o.robot_known = true;
-  o.robot_x = 5;
-  o.robot_y = 5;
-  o.stack_known = true;
-  for (const auto& [id, x, weight] : {std::tuple<const char*, double, double>{"near", 20, -1}, {"far", 38, 1}}) {
-    HypothesisView h;
-    h.object_id = id;
-    h.x = x;
-    h.y = 5;
-    h.heard = true;
-    h.best_category = "person";
-    h.confidence = h.person_confidence = 0.7;
-    h.weight = weight;
-    o.hypotheses.push_back(h);
-  }
+  Observation o = observationAt(makeCells(100, 10, kFree), 5, 5);
+  o.hypotheses = {heardPerson("near", 20, 5, -1), heardPerson("far", 38, 5, 1)};
   Explorer explorer(parameters);
   const auto pushes = pushesOf(explorer.step(o));
   ASSERT_FALSE(pushes.empty());
@@ -526,24 +524,9 @@ TEST(ExplorerChoice, AnOpenHypothesisBeatsANearerWalledOne) {
   ASSERT_TRUE(open);
   ASSERT_LT(open->cost, walled->cost);
   ASSERT_GT(open->cost, walled->cost - 1.5);
-  Observation o;
-  o.map = std::make_shared<const planners::ObstacleCells>(cells);
-  o.map_version = 1;
-  o.robot_known = true;
-  o.robot_x = 30;
-  o.robot_y = 13;
+  Observation o = observationAt(cells, 30, 13);
   o.robot_radius = 0.35;
-  o.stack_known = true;
-  for (const auto& [id, x] : {std::pair<const char*, double>{"walled", 34.5}, {"open", open_x}}) {
-    HypothesisView h;
-    h.object_id = id;
-    h.x = x;
-    h.y = 13;
-    h.heard = true;
-    h.best_category = "person";
-    h.confidence = h.person_confidence = 0.7;
-    o.hypotheses.push_back(h);
-  }
+  o.hypotheses = {heardPerson("walled", 34.5, 13), heardPerson("open", open_x, 13)};
   Explorer explorer(parameters);
   const auto pushes = pushesOf(explorer.step(o));
   ASSERT_FALSE(pushes.empty());
