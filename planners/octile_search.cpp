@@ -90,12 +90,6 @@ OctileSearchResult octileAStar(const GridMap& grid, GridCell start, GridCell goa
 
 OctileWavefront::OctileWavefront(GridMap grid, GridCell goal, int reach)
     : grid_(std::move(grid)), goal_(goal), reach_(std::max(reach, 1)) {
-  for (int m = 0; m < 8; ++m) {
-    // A diagonal passes between the cells beside it; a straight move checks its target twice.
-    const bool diagonal = kMoves[m].dy != 0 && kMoves[m].dx != 0;
-    side_x_[m] = diagonal ? kMoves[m].dx : 0;
-    side_y_[m] = diagonal ? kMoves[m].dy : 0;
-  }
   if (grid_.blocked(goal.x, goal.y)) return;  // nothing reachable: exhausted from the start
   startIn(reach_);
 }
@@ -113,7 +107,6 @@ void OctileWavefront::startIn(int reach) {
   // check in the inner loop, and a move is a fixed index offset.
   open_.assign(padded_cells, 0);
   field_.assign(padded_cells, kInfinity);
-  done_.assign(padded_cells, 0);
   const std::vector<uint8_t>& cells = grid_.cells();
   for (int y = window_y_; y < window_y_ + window_height_; ++y) {
     const uint8_t* row = cells.data() + grid_.index(window_x_, y);
@@ -131,7 +124,6 @@ void OctileWavefront::startIn(int reach) {
     if (window_y_ > 0) mark_edge(x, window_y_);
     if (bottom < grid_.height() - 1) mark_edge(x, bottom);
   }
-  for (int m = 0; m < 8; ++m) offset_[m] = kMoves[m].dx + kMoves[m].dy * padded_width_;
   for (auto& bucket : ring_) bucket.clear();
   const int32_t goal_index = padded(goal_.x, goal_.y);
   field_[goal_index] = 0;
@@ -146,28 +138,41 @@ void OctileWavefront::startIn(int reach) {
 bool OctileWavefront::expandNextBucket() {
   const int64_t k = next_bucket_++;
   std::vector<int32_t>& bucket = ring_[k & (kRing - 1)];
+  uint8_t* const open = open_.data();
+  double* const field = field_.data();
+  const int32_t row = padded_width_;
   for (size_t i = 0; i < bucket.size(); ++i) {
     const int32_t index = bucket[i];
     // Skip cells finished already or since moved to an earlier bucket.
-    if (done_[index] || static_cast<int64_t>(field_[index]) != k) continue;
+    const uint8_t flags = open[index];
+    if ((flags & kDone) || static_cast<int64_t>(field[index]) != k) continue;
     // A path through this cell may leave the window: this window is too small.
-    if (open_[index] & kOnEdge) return false;
-    done_[index] = 1;
+    if (flags & kOnEdge) return false;
+    open[index] = flags | kDone;
     if (first_done_ < 0 || index < first_done_) first_done_ = index;
     last_done_ = std::max(last_done_, index);
-    for (int m = 0; m < 8; ++m) {
-      // Moves are symmetric, so distances to the goal equal distances from it.
-      const int32_t next = index + offset_[m];
-      const int32_t beside_x = side_x_[m] != 0 ? index + side_x_[m] : next;
-      const int32_t beside_y = side_y_[m] != 0 ? index + side_y_[m] * padded_width_ : next;
-      if (!(open_[next] & open_[beside_x] & open_[beside_y] & kFree)) continue;
-      const double cost = field_[index] + kMoves[m].cost;
-      if (cost < field_[next]) {
-        field_[next] = cost;
+    const double here = field[index];
+    // Moves are symmetric, so distances to the goal equal distances from it.
+    // Straight moves need their target free; a diagonal also the two cells it
+    // passes between (no corner cutting).
+    const bool east = open[index + 1] & kFree, west = open[index - 1] & kFree;
+    const bool south = open[index + row] & kFree, north = open[index - row] & kFree;
+    const auto relax = [&](int32_t next, double cost) {
+      if (cost < field[next]) {
+        field[next] = cost;
         ring_[static_cast<int64_t>(cost) & (kRing - 1)].push_back(next);
         ++queued_;
       }
-    }
+    };
+    if (east) relax(index + 1, here + 1.0);
+    if (west) relax(index - 1, here + 1.0);
+    if (south) relax(index + row, here + 1.0);
+    if (north) relax(index - row, here + 1.0);
+    const double diagonal = here + kSqrt2;
+    if (east && south && (open[index + row + 1] & kFree)) relax(index + row + 1, diagonal);
+    if (east && north && (open[index - row + 1] & kFree)) relax(index - row + 1, diagonal);
+    if (west && south && (open[index + row - 1] & kFree)) relax(index + row - 1, diagonal);
+    if (west && north && (open[index - row - 1] & kFree)) relax(index - row - 1, diagonal);
   }
   queued_ -= bucket.size();
   bucket.clear();
@@ -189,7 +194,7 @@ void OctileWavefront::growUntilFinal(GridCell cell) {
     growThroughBucket(std::numeric_limits<int64_t>::max());  // never reached
     return;
   }
-  while (queued_ > 0 && !(inWindow(cell.x, cell.y) && done_[padded(cell.x, cell.y)])) expandOrWiden();
+  while (queued_ > 0 && !(inWindow(cell.x, cell.y) && (open_[padded(cell.x, cell.y)] & kDone))) expandOrWiden();
 }
 
 void OctileWavefront::growAround(GridCell start, double slack, double margin) {
@@ -209,11 +214,12 @@ bool OctileWavefront::finiteBounds(int& x0, int& y0, int& x1, int& y1) const {
   const int row_last = last_done_ / padded_width_ - 1 + window_y_;
   int col_first = window_width_, col_last = -1;
   for (int y = row_first; y <= row_last; ++y) {
-    const uint8_t* row = done_.data() + padded(window_x_, y);
-    const uint8_t* first = std::find(row, row + window_width_, uint8_t{1});
+    const uint8_t* row = open_.data() + padded(window_x_, y);
+    const auto finished = [](uint8_t flags) { return (flags & kDone) != 0; };
+    const uint8_t* first = std::find_if(row, row + window_width_, finished);
     if (first == row + window_width_) continue;
-    const uint8_t* last = std::find(std::make_reverse_iterator(row + window_width_), std::make_reverse_iterator(row),
-                                    uint8_t{1}).base() - 1;
+    const uint8_t* last = std::find_if(std::make_reverse_iterator(row + window_width_), std::make_reverse_iterator(row),
+                                       finished).base() - 1;
     col_first = std::min(col_first, static_cast<int>(first - row));
     col_last = std::max(col_last, static_cast<int>(last - row));
   }
@@ -227,7 +233,7 @@ bool OctileWavefront::finiteBounds(int& x0, int& y0, int& x1, int& y1) const {
 bool OctileWavefront::isFinal(int x, int y) const {
   if (!grid_.inside(x, y)) return false;
   if (queued_ == 0) return true;
-  return inWindow(x, y) && done_[padded(x, y)] != 0;
+  return inWindow(x, y) && (open_[padded(x, y)] & kDone) != 0;
 }
 
 double OctileWavefront::value(int x, int y) const {

@@ -80,6 +80,7 @@ class OctileWavefront {
   static constexpr int kRing = 4;        // a label lies within sqrt(2) of its parent's
   static constexpr uint8_t kFree = 1;    // open_ flags
   static constexpr uint8_t kOnEdge = 2;  // on the window's edge, inside the grid
+  static constexpr uint8_t kDone = 4;    // finished: its value is final
   // Starts over in the window of `reach` cells around the goal.
   void startIn(int reach);
   // False when it finished a cell on the window's edge (start over larger).
@@ -96,11 +97,9 @@ class OctileWavefront {
   GridCell goal_;
   int reach_ = 0;
   int window_x_ = 0, window_y_ = 0, window_width_ = 0, window_height_ = 0, padded_width_ = 0;
-  std::vector<uint8_t> open_;   // kFree | kOnEdge; a ring of blocked cells frames the window
+  std::vector<uint8_t> open_;   // kFree | kOnEdge | kDone; a ring of blocked cells frames the window
   std::vector<double> field_;
-  std::vector<uint8_t> done_;
   std::vector<int32_t> ring_[kRing];
-  int32_t offset_[8], side_x_[8], side_y_[8];
   size_t queued_ = 0;
   int64_t next_bucket_ = 0;
   int32_t first_done_ = -1, last_done_ = -1;  // lowest and highest padded index finished
