@@ -119,6 +119,7 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     if (scene_changed) {
       solids_.emplace(camera::SceneGeometry::fromMessage(*scene));
       solids_scene_ = *scene;
+      scene_index_ = indexOfObjects(*scene);
     }
     const bool recount = scene_changed || expected_pose_.width == 0 || !samePose(*instance, expected_pose_);
     const camera::SceneGeometry* solids = &*solids_;
@@ -132,7 +133,7 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     std::vector<int> visible;
     percepting_.start([&] {
       if (recount) ray_caster_.countExpected(*solids, next_solid, helper_counts);
-      visible = countVisiblePixels(*instance, *scene);
+      visible = countVisiblePixels(*instance, scene_index_, scene->objects.size());
     });
     expert::WaitOnExit perceived(percepting_);  // also when the map throws
     updateMap(*scene, *depth, contact, firing.tick);

@@ -18,6 +18,7 @@
 #include "expert.hpp"
 #include "scene_input.hpp"
 #include "helper_task.hpp"
+#include "visual_occlusion.hpp"
 #include "obstacle_mapper.hpp"
 #include "ray_caster.hpp"
 
@@ -68,6 +69,7 @@ class VisionExpert : public expert::Expert {
   camera_frame_t expected_pose_{};     // header only: the pixels do not matter to it
   std::optional<camera::SceneGeometry> solids_;  // of solids_scene_'s objects
   scene_objects_t solids_scene_{};
+  SceneIndex scene_index_;             // solids_scene_'s object ids -> index
   expert::SceneInput scene_{*this};
   // Frames arrive compressed: unpacked (or refused, and counted) as they are kept.
   expert::TickInput<camera_frame_t> depth_{*this, channels::kCameraDepth, 4, unpackFrame};

@@ -7,7 +7,19 @@
 
 namespace beft::vision {
 
+SceneIndex indexOfObjects(const scene_objects_t& scene) {
+  SceneIndex index;
+  index.reserve(scene.objects.size());
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) index[scene.objects[i].id] = static_cast<int>(i);
+  return index;
+}
+
 std::vector<int> countVisiblePixels(const camera_frame_t& instance, const scene_objects_t& scene) {
+  return countVisiblePixels(instance, indexOfObjects(scene), scene.objects.size());
+}
+
+std::vector<int> countVisiblePixels(const camera_frame_t& instance, const SceneIndex& scene_index,
+                                    std::size_t object_count) {
   if (instance.encoding != camera_frame_t::ENCODING_INSTANCE16)
     throw std::invalid_argument("instance frame has encoding " + std::to_string(instance.encoding) +
                                 ", expected INSTANCE16");
@@ -20,8 +32,6 @@ std::vector<int> countVisiblePixels(const camera_frame_t& instance, const scene_
                                 std::to_string(2 * pixels) + " for " + std::to_string(instance.width) + "x" +
                                 std::to_string(instance.height));
 
-  std::unordered_map<std::string, int> scene_index;
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) scene_index[scene.objects[i].id] = static_cast<int>(i);
   std::vector<int> object_of_value(instance.instance_ids.size() + 1, -1);  // pixel value -> scene index
   for (std::size_t v = 0; v < instance.instance_ids.size(); ++v) {
     const auto it = scene_index.find(instance.instance_ids[v]);
@@ -36,7 +46,7 @@ std::vector<int> countVisiblePixels(const camera_frame_t& instance, const scene_
                                   " but the frame lists " + std::to_string(instance.instance_ids.size()) + " ids");
     ++count_of_value[value];
   }
-  std::vector<int> visible(scene.objects.size(), 0);
+  std::vector<int> visible(object_count, 0);
   for (std::size_t v = 1; v < count_of_value.size(); ++v)
     if (object_of_value[v] >= 0) visible[object_of_value[v]] += count_of_value[v];
   return visible;

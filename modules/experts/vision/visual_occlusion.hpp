@@ -7,6 +7,8 @@
 // view or beyond range counts as occluded. Out of view gives 100.
 #pragma once
 
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <beft/camera_frame_t.hpp>
@@ -20,6 +22,14 @@ namespace beft::vision {
 // that is not INSTANCE16, has a wrong data size or a pixel value beyond its id
 // list; ids not in the scene are ignored.
 std::vector<int> countVisiblePixels(const camera_frame_t& instance, const scene_objects_t& scene);
+
+// Each object's index in scene.objects, by id.
+using SceneIndex = std::unordered_map<std::string, int>;
+SceneIndex indexOfObjects(const scene_objects_t& scene);
+
+// The same with the scene's index made already (object_count objects).
+std::vector<int> countVisiblePixels(const camera_frame_t& instance, const SceneIndex& scene_index,
+                                    std::size_t object_count);
 
 // One percept per object with a visual that the camera's view covers
 // (expected pixels > 0), in scene order; an object out of view has none (its

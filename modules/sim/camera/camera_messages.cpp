@@ -36,9 +36,9 @@ inline uint16_t getUint16(const beft::camera_frame_t& frame, int u, int v) {
   return static_cast<uint16_t>(frame.data[2 * pixel] | (frame.data[2 * pixel + 1] << 8));
 }
 
-// The headers and data sizes of a frame's three messages.
-void prepareMessages(const Camera& camera, int64_t utime, int64_t tick, const std::vector<std::string>& object_ids,
-                     CameraMessages& out) {
+// The headers and data sizes of a frame's three messages. The instance
+// message lists its objects once its pixels are in (listShownObjects).
+void prepareMessages(const Camera& camera, int64_t utime, int64_t tick, CameraMessages& out) {
   fillHeader(camera, utime, tick, beft::camera_frame_t::ENCODING_RGB8, out.color);
   fillHeader(camera, utime, tick, beft::camera_frame_t::ENCODING_DEPTH_MM16, out.depth);
   fillHeader(camera, utime, tick, beft::camera_frame_t::ENCODING_INSTANCE16, out.instance);
@@ -49,15 +49,14 @@ void prepareMessages(const Camera& camera, int64_t utime, int64_t tick, const st
   out.color.data_size = static_cast<int32_t>(out.color.data.size());
   out.depth.data_size = static_cast<int32_t>(out.depth.data.size());
   out.instance.data_size = static_cast<int32_t>(out.instance.data.size());
-  out.instance.instance_ids = object_ids;
-  out.instance.num_ids = static_cast<int32_t>(object_ids.size());
 }
 
-// Pixels [first, first + count) of the three messages. Raw pointers: byte
-// stores through the vectors would make the compiler reload their data
-// pointers for every pixel.
+// Pixels [first, first + count) of the three messages; an instance pixel
+// holds its object's index + 1 (0 for none or an object without an id) until
+// listShownObjects renumbers them. Raw pointers: byte stores through the
+// vectors would make the compiler reload their data pointers for every pixel.
 void encodePixels(size_t first, size_t count, const float* depth, const int32_t* object, const uint8_t* rgb,
-                  CameraMessages& out) {
+                  int32_t id_count, CameraMessages& out) {
   std::copy_n(rgb, 3 * count, out.color.data.data() + 3 * first);
   uint8_t* depth_bytes = out.depth.data.data();
   for (size_t i = 0; i < count; ++i) {
@@ -67,7 +66,7 @@ void encodePixels(size_t first, size_t count, const float* depth, const int32_t*
     putUint16(depth_bytes, first + i, value);
   }
   uint8_t* instance_bytes = out.instance.data.data();
-  const int32_t id_count = std::min(out.instance.num_ids, 65535);
+  id_count = std::min(id_count, 65535);
   for (size_t i = 0; i < count; ++i) {
     const int32_t index = object[i];
     putUint16(instance_bytes, first + i, index >= 0 && index < id_count ? static_cast<uint16_t>(index + 1) : 0);
@@ -76,15 +75,39 @@ void encodePixels(size_t first, size_t count, const float* depth, const int32_t*
 
 class MessageRowWriter : public FrameRowWriter {
  public:
-  explicit MessageRowWriter(CameraMessages& out) : out_(out) {}
+  MessageRowWriter(int32_t id_count, CameraMessages& out) : id_count_(id_count), out_(out) {}
   void writeRow(int v, const float* depth, const int32_t* object, const uint8_t* rgb) override {
     const size_t width = static_cast<size_t>(out_.color.width);
-    encodePixels(static_cast<size_t>(v) * width, width, depth, object, rgb, out_);
+    encodePixels(static_cast<size_t>(v) * width, width, depth, object, rgb, id_count_, out_);
   }
 
  private:
+  int32_t id_count_;
   CameraMessages& out_;
 };
+
+int32_t idCount(const std::vector<std::string>& object_ids) {
+  return static_cast<int32_t>(std::min<size_t>(object_ids.size(), 65535));
+}
+
+// The instance frame lists only the objects it shows, in the ground truth's
+// order, and its pixels are renumbered to match: at hundreds of objects the
+// whole list was most of the message, at every tick.
+void listShownObjects(const std::vector<std::string>& object_ids, beft::camera_frame_t& instance) {
+  uint8_t* const bytes = instance.data.data();
+  const size_t pixels = instance.data.size() / 2;
+  std::vector<uint16_t> renumbered(static_cast<size_t>(idCount(object_ids)) + 1, 0);  // old value -> new value
+  for (size_t p = 0; p < pixels; ++p) renumbered[bytes[2 * p] | (bytes[2 * p + 1] << 8)] = 1;
+  instance.instance_ids.clear();
+  for (size_t value = 1; value < renumbered.size(); ++value) {
+    if (renumbered[value] == 0) continue;
+    instance.instance_ids.push_back(object_ids[value - 1]);
+    renumbered[value] = static_cast<uint16_t>(instance.instance_ids.size());
+  }
+  renumbered[0] = 0;
+  instance.num_ids = static_cast<int32_t>(instance.instance_ids.size());
+  for (size_t p = 0; p < pixels; ++p) putUint16(bytes, p, renumbered[bytes[2 * p] | (bytes[2 * p + 1] << 8)]);
+}
 
 }  // namespace
 
@@ -93,16 +116,18 @@ void encodeCameraMessages(const RenderedFrame& frame, int64_t utime, int64_t tic
   Camera camera = frame.camera;
   camera.intrinsics.width = frame.width;
   camera.intrinsics.height = frame.height;
-  prepareMessages(camera, utime, tick, object_ids, out);
+  prepareMessages(camera, utime, tick, out);
   encodePixels(0, static_cast<size_t>(frame.width) * frame.height, frame.depth.data(), frame.object.data(),
-               frame.rgb.data(), out);
+               frame.rgb.data(), idCount(object_ids), out);
+  listShownObjects(object_ids, out.instance);
 }
 
 void renderCameraMessages(RayCaster& caster, const SceneGeometry& scene, const Camera& camera, int64_t utime,
                           int64_t tick, const std::vector<std::string>& object_ids, CameraMessages& out) {
-  prepareMessages(camera, utime, tick, object_ids, out);
-  MessageRowWriter writer(out);
+  prepareMessages(camera, utime, tick, out);
+  MessageRowWriter writer(idCount(object_ids), out);
   caster.render(scene, camera, writer);
+  listShownObjects(object_ids, out.instance);
 }
 
 int bytesPerPixel(int8_t encoding) {
@@ -160,7 +185,7 @@ double depthAt(const beft::camera_frame_t& depth_frame, int u, int v) {
   return getUint16(depth_frame, u, v) / 1000.0;
 }
 
-int objectAt(const beft::camera_frame_t& instance_frame, int u, int v) {
+int instanceAt(const beft::camera_frame_t& instance_frame, int u, int v) {
   return static_cast<int>(getUint16(instance_frame, u, v)) - 1;
 }
 

@@ -6,7 +6,8 @@
 // RGB8: 3 bytes per pixel. DEPTH_MM16: z-depth in millimetres as little-endian
 // uint16, 0 = no return (nothing within range, or deeper than 65.535 m).
 // INSTANCE16: little-endian uint16, 0 = no object (ground or sky), v > 0 shows
-// the object instance_ids[v - 1] = ground-truth object index v - 1.
+// the object instance_ids[v - 1]. The frame lists only the objects it shows,
+// in the ground truth's order.
 #pragma once
 
 #include <cstdint>
@@ -24,7 +25,7 @@ struct CameraMessages {
 };
 
 // Fills the three messages of one frame. object_ids: the ground-truth object
-// ids in list order (carried by the instance message).
+// ids in list order (the instance message carries those the frame shows).
 void encodeCameraMessages(const RenderedFrame& frame, int64_t utime, int64_t tick,
                           const std::vector<std::string>& object_ids, CameraMessages& out);
 
@@ -53,6 +54,6 @@ bool validCameraFrame(const beft::camera_frame_t& frame, std::string* why = null
 
 // Readers for valid frames; (u, v) must be inside the image.
 double depthAt(const beft::camera_frame_t& depth_frame, int u, int v);     // [m], 0 = no return
-int objectAt(const beft::camera_frame_t& instance_frame, int u, int v);    // object index, -1 = none
+int instanceAt(const beft::camera_frame_t& instance_frame, int u, int v);  // index into instance_ids, -1 = none
 
 }  // namespace beft::camera

@@ -51,7 +51,7 @@ TEST(Camera, BoxStraightAheadGivesItsDistanceAtTheCentrePixel) {
   CameraMessages messages;
   encodeCameraMessages(frame, 1000, 7, {"crate"}, messages);
   EXPECT_NEAR(depthAt(messages.depth, 80, 60), 5.0, 1e-9);
-  EXPECT_EQ(objectAt(messages.instance, 80, 60), 0);
+  EXPECT_EQ(instanceAt(messages.instance, 80, 60), 0);
   EXPECT_EQ(messages.instance.instance_ids.at(0), "crate");
   // A flat face square to the axis has the same z-depth at every pixel on it.
   EXPECT_NEAR(depthAt(messages.depth, 70, 55), 5.0, 1e-9);
@@ -412,9 +412,50 @@ TEST(CameraMessages, RenderingStraightIntoMessagesGivesTheEncodedFrame) {
       EXPECT_EQ(bytes(m->instance), bytes(encoded.instance)) << "view " << view;
     }
     for (int v = 0; v < frame.height; v += 7)
-      for (int u = 0; u < frame.width; u += 7) with_objects += objectAt(direct.instance, u, v) >= 0;
+      for (int u = 0; u < frame.width; u += 7) with_objects += instanceAt(direct.instance, u, v) >= 0;
   }
   EXPECT_GT(with_objects, 0) << "no view saw an object with an id";
+}
+
+// The instance frame lists only the objects it shows, in the ground truth's
+// order, and every pixel still names the object the renderer put there.
+TEST(CameraMessages, InstanceFrameListsExactlyTheObjectsItShows) {
+  RandomYard yard(5, 120);
+  std::vector<std::string> ids;
+  for (int i = 0; i < 100; ++i) ids.push_back("object_" + std::to_string(i));  // objects 100.. have no id
+  RayCaster caster;
+  int views_with_objects = 0;
+  for (int view = 0; view < 12; ++view) {
+    RenderedFrame frame;
+    caster.render(yard.scene, yard.view(view * 3.0 - 15.0), frame);
+    CameraMessages messages;
+    encodeCameraMessages(frame, 0, view, ids, messages);
+    std::string why;
+    ASSERT_TRUE(validCameraFrame(messages.instance, &why)) << why;
+    std::set<std::string> shown;
+    for (int v = 0; v < frame.height; ++v)
+      for (int u = 0; u < frame.width; ++u) {
+        const int object = frame.object[static_cast<size_t>(v) * frame.width + u];
+        const int listed = instanceAt(messages.instance, u, v);
+        if (object < 0 || object >= static_cast<int>(ids.size())) {
+          EXPECT_EQ(listed, -1) << "view " << view << " pixel " << u << "," << v;
+          continue;
+        }
+        ASSERT_GE(listed, 0) << "view " << view << " pixel " << u << "," << v;
+        ASSERT_LT(listed, messages.instance.num_ids);
+        EXPECT_EQ(messages.instance.instance_ids[listed], ids[object]) << "view " << view;
+        shown.insert(ids[object]);
+      }
+    // Nothing listed that no pixel shows, and in the ground truth's order.
+    EXPECT_EQ(std::set<std::string>(messages.instance.instance_ids.begin(), messages.instance.instance_ids.end()),
+              shown)
+        << "view " << view;
+    std::vector<int> order;
+    for (const auto& id : messages.instance.instance_ids) order.push_back(std::stoi(id.substr(7)));
+    EXPECT_TRUE(std::is_sorted(order.begin(), order.end())) << "view " << view;
+    views_with_objects += !shown.empty();
+  }
+  EXPECT_GE(views_with_objects, 6);
 }
 
 // The threads take short runs of rows as they come: every row is rendered

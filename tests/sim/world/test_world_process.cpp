@@ -304,7 +304,7 @@ TEST(WorldProcess, LockstepPublishesEachTickAsTheInProcessWorldDoes) {
   // victim_seen stands in plain view of the start pose.
   int victim_pixels = 0;
   for (int v = 0; v < instances[0].height; ++v)
-    for (int u = 0; u < instances[0].width; ++u) victim_pixels += beft::camera::objectAt(instances[0], u, v) == 0;
+    for (int u = 0; u < instances[0].width; ++u) victim_pixels += beft::camera::instanceAt(instances[0], u, v) == 0;
   EXPECT_GT(victim_pixels, 50);
   EXPECT_NE(world.output().find("non-finite"), std::string::npos);  // the refused command was logged
 
@@ -394,7 +394,7 @@ TEST(WorldProcess, FreeRunningPublishesEveryTickAndTakesCommands) {
   // = 6.75 m.
   const auto depth = listener.frames(beft::channels::kCameraDepth).at(0);
   const auto instance = listener.frames(beft::channels::kCameraInstance).at(0);
-  EXPECT_EQ(beft::camera::objectAt(instance, 20, 15), 0);
+  EXPECT_EQ(beft::camera::instanceAt(instance, 20, 15), 0);
   EXPECT_NEAR(beft::camera::depthAt(depth, 20, 15), 6.752, 0.002);
 }
 
