@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
+#include <new>
 
 namespace beft::planners {
 namespace {
@@ -79,9 +81,25 @@ namespace {
 
 constexpr int kZstdLevel = 1;  // the fastest: a map is packed at every tick
 
+// One context per thread, kept: making one costs about half of packing or
+// unpacking a tick's change of the map. The bytes are those of
+// ZSTD_compress at the same level.
+ZSTD_CCtx* compressionContext() {
+  thread_local const std::unique_ptr<ZSTD_CCtx, size_t (*)(ZSTD_CCtx*)> context(ZSTD_createCCtx(), ZSTD_freeCCtx);
+  if (!context) throw std::bad_alloc();
+  return context.get();
+}
+
+ZSTD_DCtx* decompressionContext() {
+  thread_local const std::unique_ptr<ZSTD_DCtx, size_t (*)(ZSTD_DCtx*)> context(ZSTD_createDCtx(), ZSTD_freeDCtx);
+  if (!context) throw std::bad_alloc();
+  return context.get();
+}
+
 std::vector<uint8_t> compressZstd(const std::vector<uint8_t>& bytes) {
   std::vector<uint8_t> packed(ZSTD_compressBound(bytes.size()));
-  const size_t size = ZSTD_compress(packed.data(), packed.size(), bytes.data(), bytes.size(), kZstdLevel);
+  const size_t size =
+      ZSTD_compressCCtx(compressionContext(), packed.data(), packed.size(), bytes.data(), bytes.size(), kZstdLevel);
   if (ZSTD_isError(size)) throw ObstacleMapError(std::string("zstd: ") + ZSTD_getErrorName(size));
   packed.resize(size);
   return packed;
@@ -95,7 +113,8 @@ std::vector<uint8_t> decompressZstd(const std::vector<uint8_t>& packed, size_t m
     throw ObstacleMapError("RLE_ZSTD data unpacks to " + std::to_string(size) + " bytes, more than the " +
                            std::to_string(max_bytes) + " the map's RLE can take");
   std::vector<uint8_t> bytes(static_cast<size_t>(size));
-  const size_t got = ZSTD_decompress(bytes.data(), bytes.size(), packed.data(), packed.size());
+  const size_t got =
+      ZSTD_decompressDCtx(decompressionContext(), bytes.data(), bytes.size(), packed.data(), packed.size());
   if (ZSTD_isError(got) || got != bytes.size())
     throw ObstacleMapError(std::string("RLE_ZSTD data does not unpack: ") +
                            (ZSTD_isError(got) ? ZSTD_getErrorName(got) : "short frame"));
