@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "acoustic_labeller.hpp"
 #include "model.hpp"
@@ -166,4 +167,54 @@ TEST(AcousticLabeller, EqualsTheModelLibraryAndHonoursTheAzimuthVariance) {
   // The paper's printed s = 90 makes a_w(30 deg) tiny.
   EXPECT_NEAR(model::acousticPerceptibility(6, 0, 30, literal) / model::acousticPerceptibility(6, 0, 0, literal),
               std::exp(-5.0), 1e-12);
+}
+
+// A labeller used tick after tick writes over its earlier entries: each tick
+// must give what labelling that tick alone gives, whether the lists grow or
+// shrink, percepts lack geometry, or ids repeat (the last one counts).
+TEST(Labellers, ReusedTickAfterTickEqualLabellingEachTickAlone) {
+  std::mt19937 random(3);
+  std::vector<scene_object_t> objects;
+  for (int i = 0; i < 40; ++i) {
+    scene_object_t o = test::sounding(test::boxObject("o" + std::to_string(i), i % 3 ? "person" : "car", i, 0, 0, 1, 1, 1),
+                                      "yelling", i % 4 == 0 ? "" : (i % 2 ? "person" : "siren"));
+    objects.push_back(o);
+  }
+  const auto s = test::scene(objects);
+  acoustic_labels::AcousticLabeller acoustic;
+  visual_labels::VisualLabeller visual;
+  std::uniform_int_distribution<int> count(0, 45), pick(0, 44), pixels(-1, 3);
+  std::uniform_real_distribution<double> value(0, 100);
+  const auto bytes = [](const labels_t& labels) {
+    std::vector<uint8_t> out(labels.getEncodedSize());
+    labels.encode(out.data(), 0, static_cast<int>(out.size()));
+    return out;
+  };
+  for (int tick = 0; tick < 60; ++tick) {
+    std::vector<std::tuple<std::string, double, double>> rows;
+    for (int n = count(random); n > 0; --n) rows.emplace_back("o" + std::to_string(pick(random)), value(random) / 5, value(random));
+    const geometry_percepts_t geometry = geometryOf(rows);  // ids o40.. are in no scene; some repeat
+    acoustic_percepts_t audio{};
+    visual_percepts_t vision{};
+    audio.tick = vision.tick = tick;
+    for (int n = count(random); n > 0; --n) {
+      audio.percepts.push_back(acousticPercept("o" + std::to_string(pick(random)), value(random), ""));
+      if (n % 3 == 0) audio.percepts.back().acoustic_label = "person";
+      visual_percept_t v = visualPercept("o" + std::to_string(pick(random)), value(random));
+      v.visible_pixels = pixels(random);
+      vision.percepts.push_back(v);
+    }
+    audio.num_percepts = static_cast<int32_t>(audio.percepts.size());
+    vision.num_percepts = static_cast<int32_t>(vision.percepts.size());
+    const auto& reused_acoustic = acoustic.label(s, geometry, audio, model::Parameters{});
+    const auto alone_acoustic = acoustic_labels::labelAcoustically(s, geometry, audio, model::Parameters{});
+    EXPECT_EQ(bytes(reused_acoustic.labels), bytes(alone_acoustic.labels)) << "tick " << tick;
+    EXPECT_EQ(reused_acoustic.labels.objects.size(), alone_acoustic.labels.objects.size()) << "tick " << tick;
+    EXPECT_EQ(reused_acoustic.skipped, alone_acoustic.skipped) << "tick " << tick;
+    const auto& reused_visual = visual.label(s, geometry, vision, model::Parameters{});
+    const auto alone_visual = visual_labels::labelVisually(s, geometry, vision, model::Parameters{});
+    EXPECT_EQ(bytes(reused_visual.labels), bytes(alone_visual.labels)) << "tick " << tick;
+    EXPECT_EQ(reused_visual.labels.objects.size(), alone_visual.labels.objects.size()) << "tick " << tick;
+    EXPECT_EQ(reused_visual.skipped, alone_visual.skipped) << "tick " << tick;
+  }
 }

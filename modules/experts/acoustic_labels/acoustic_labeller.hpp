@@ -13,6 +13,7 @@
 #include <beft/labels_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
+#include "id_index.hpp"
 #include "model.hpp"
 
 namespace beft::acoustic_labels {
@@ -22,7 +23,20 @@ struct AcousticLabelling {
   std::vector<std::string> skipped;   // percepts left out, each with the reason
 };
 
-// Stamped with the audio percepts' utime and tick.
+// Labels tick after tick, keeping its indices and its result's storage.
+class AcousticLabeller {
+ public:
+  // Stamped with the audio percepts' utime and tick; valid until the next call.
+  const AcousticLabelling& label(const scene_objects_t& scene, const geometry_percepts_t& geometry,
+                                 const acoustic_percepts_t& audio, const model::Parameters& parameters);
+
+ private:
+  expert::IdIndex<geometry_percept_t> geometry_by_id_;
+  expert::IdIndex<scene_object_t> object_by_id_;
+  AcousticLabelling result_;
+};
+
+// One tick's labels (AcousticLabeller::label once).
 AcousticLabelling labelAcoustically(const scene_objects_t& scene, const geometry_percepts_t& geometry,
                                     const acoustic_percepts_t& audio, const model::Parameters& parameters);
 

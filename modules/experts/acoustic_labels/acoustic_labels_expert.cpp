@@ -1,6 +1,5 @@
 #include "acoustic_labels_expert.hpp"
 
-#include "acoustic_labeller.hpp"
 #include "channels.hpp"
 #include "log.hpp"
 
@@ -32,7 +31,7 @@ expert::Outcome AcousticLabelsExpert::fire(const expert::Firing& firing, expert:
     return expert::Outcome::failure(std::string("no ") +
                                     (scene == nullptr ? "GT_OBJECTS" : geometry == nullptr ? "GEOMETRY" : "AUDIO") +
                                     " for tick " + std::to_string(firing.tick));
-  const AcousticLabelling result = labelAcoustically(*scene, *geometry, *audio, model_);
+  const AcousticLabelling& result = labeller_.label(*scene, *geometry, *audio, model_);
   for (const auto& reason : result.skipped) log::warn("tick ", firing.tick, ": not labelled: ", reason);
   labels_acoustic_out_.publish(out, result.labels);
   return expert::Outcome::success();

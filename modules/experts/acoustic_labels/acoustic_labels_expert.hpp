@@ -6,6 +6,7 @@
 #include <beft/geometry_percepts_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
+#include "acoustic_labeller.hpp"
 #include "expert.hpp"
 #include "scene_input.hpp"
 #include "model.hpp"
@@ -24,6 +25,7 @@ class AcousticLabelsExpert : public expert::Expert {
 
  private:
   model::Parameters model_;
+  AcousticLabeller labeller_;
   expert::SceneInput scene_{*this};
   expert::TickInput<geometry_percepts_t> geometry_{*this, channels::kGeometry};
   expert::TickInput<acoustic_percepts_t> audio_{*this, channels::kAudio};

@@ -1,44 +1,47 @@
 #include "visual_labeller.hpp"
 
-#include <unordered_map>
-
 namespace beft::visual_labels {
 
-VisualLabelling labelVisually(const scene_objects_t& scene, const geometry_percepts_t& geometry,
-                              const visual_percepts_t& vision, const model::Parameters& parameters) {
-  std::unordered_map<std::string, const geometry_percept_t*> geometry_by_id;
-  for (const auto& percept : geometry.percepts) geometry_by_id[percept.object_id] = &percept;
-  std::unordered_map<std::string, const scene_object_t*> object_by_id;
-  for (const auto& object : scene.objects) object_by_id[object.id] = &object;
+const VisualLabelling& VisualLabeller::label(const scene_objects_t& scene, const geometry_percepts_t& geometry,
+                                             const visual_percepts_t& vision, const model::Parameters& parameters) {
+  geometry_by_id_.rebuild(geometry.percepts, &geometry_percept_t::object_id);
+  object_by_id_.rebuild(scene.objects, &scene_object_t::id);
 
-  VisualLabelling result;
+  VisualLabelling& result = result_;
+  result.skipped.clear();
   result.labels.utime = vision.utime;
   result.labels.tick = vision.tick;
   result.labels.modality = labels_t::MODALITY_VISUAL;
+  std::size_t count = 0;  // entries written: those of earlier ticks are written over
   for (const auto& percept : vision.percepts) {
     // Only what the camera shows is labelled: fusion takes visual evidence
     // from visible pixels alone, and at hundreds of objects the rest (v_P 0)
     // was most of the message.
     if (percept.visible_pixels <= 0) continue;
-    const auto geometry_it = geometry_by_id.find(percept.object_id);
-    const auto object_it = object_by_id.find(percept.object_id);
-    if (geometry_it == geometry_by_id.end() || object_it == object_by_id.end()) {
-      result.skipped.push_back(percept.object_id + (geometry_it == geometry_by_id.end()
-                                                        ? ": not in GEOMETRY"
-                                                        : ": not in GT_OBJECTS"));
+    const geometry_percept_t* g = geometry_by_id_.find(percept.object_id);
+    const scene_object_t* object = object_by_id_.find(percept.object_id);
+    if (g == nullptr || object == nullptr) {
+      result.skipped.push_back(percept.object_id + (g == nullptr ? ": not in GEOMETRY" : ": not in GT_OBJECTS"));
       continue;
     }
-    object_labels_t entry;
+    if (count == result.labels.objects.size()) result.labels.objects.emplace_back();
+    object_labels_t& entry = result.labels.objects[count++];
     entry.object_id = percept.object_id;
-    entry.perceptibility = model::visualPerceptibility(geometry_it->second->distance, percept.occlusion);  // eq. 1
+    entry.perceptibility = model::visualPerceptibility(g->distance, percept.occlusion);  // eq. 1
     entry.categories = scene.categories;
-    entry.confidence = model::labelConfidences(scene.categories, object_it->second->label,  // eq. 3
-                                               entry.perceptibility, parameters);
+    model::labelConfidences(scene.categories, object->label, entry.perceptibility, parameters,  // eq. 3
+                            entry.confidence);
     entry.num_categories = static_cast<int32_t>(entry.categories.size());
-    result.labels.objects.push_back(std::move(entry));
   }
-  result.labels.num_objects = static_cast<int32_t>(result.labels.objects.size());
+  result.labels.objects.resize(count);
+  result.labels.num_objects = static_cast<int32_t>(count);
   return result;
+}
+
+VisualLabelling labelVisually(const scene_objects_t& scene, const geometry_percepts_t& geometry,
+                              const visual_percepts_t& vision, const model::Parameters& parameters) {
+  VisualLabeller labeller;
+  return labeller.label(scene, geometry, vision, parameters);
 }
 
 }  // namespace beft::visual_labels

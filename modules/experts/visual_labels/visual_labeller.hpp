@@ -12,6 +12,7 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/visual_percepts_t.hpp>
 
+#include "id_index.hpp"
 #include "model.hpp"
 
 namespace beft::visual_labels {
@@ -21,7 +22,20 @@ struct VisualLabelling {
   std::vector<std::string> skipped;   // percepts left out, each with the reason
 };
 
-// Stamped with the vision percepts' utime and tick.
+// Labels tick after tick, keeping its indices and its result's storage.
+class VisualLabeller {
+ public:
+  // Stamped with the vision percepts' utime and tick; valid until the next call.
+  const VisualLabelling& label(const scene_objects_t& scene, const geometry_percepts_t& geometry,
+                               const visual_percepts_t& vision, const model::Parameters& parameters);
+
+ private:
+  expert::IdIndex<geometry_percept_t> geometry_by_id_;
+  expert::IdIndex<scene_object_t> object_by_id_;
+  VisualLabelling result_;
+};
+
+// One tick's labels (VisualLabeller::label once).
 VisualLabelling labelVisually(const scene_objects_t& scene, const geometry_percepts_t& geometry,
                               const visual_percepts_t& vision, const model::Parameters& parameters);
 

@@ -2,7 +2,6 @@
 
 #include "channels.hpp"
 #include "log.hpp"
-#include "visual_labeller.hpp"
 
 namespace beft::visual_labels {
 
@@ -31,7 +30,7 @@ expert::Outcome VisualLabelsExpert::fire(const expert::Firing& firing, expert::O
     return expert::Outcome::failure(std::string("no ") +
                                     (scene == nullptr ? "GT_OBJECTS" : geometry == nullptr ? "GEOMETRY" : "VISION") +
                                     " for tick " + std::to_string(firing.tick));
-  const VisualLabelling result = labelVisually(*scene, *geometry, *vision, model_);
+  const VisualLabelling& result = labeller_.label(*scene, *geometry, *vision, model_);
   for (const auto& reason : result.skipped) log::warn("tick ", firing.tick, ": not labelled: ", reason);
   labels_visual_out_.publish(out, result.labels);
   return expert::Outcome::success();

@@ -7,6 +7,7 @@
 #include <beft/visual_percepts_t.hpp>
 
 #include "expert.hpp"
+#include "visual_labeller.hpp"
 #include "scene_input.hpp"
 #include "model.hpp"
 
@@ -24,6 +25,7 @@ class VisualLabelsExpert : public expert::Expert {
 
  private:
   model::Parameters model_;
+  VisualLabeller labeller_;
   expert::SceneInput scene_{*this};
   expert::TickInput<geometry_percepts_t> geometry_{*this, channels::kGeometry};
   expert::TickInput<visual_percepts_t> vision_{*this, channels::kVision};

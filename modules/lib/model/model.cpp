@@ -63,10 +63,15 @@ std::vector<double> labelConfidences(const std::vector<std::string>& categories,
                                      const std::string& true_label, double perceptibility,
                                      const Parameters& p) {
   std::vector<double> confidences;
-  confidences.reserve(categories.size());
-  for (const auto& category : categories)
-    confidences.push_back(labelConfidence(category == true_label, perceptibility, p));
+  labelConfidences(categories, true_label, perceptibility, p, confidences);
   return confidences;
+}
+
+void labelConfidences(const std::vector<std::string>& categories, const std::string& true_label,
+                      double perceptibility, const Parameters& p, std::vector<double>& out) {
+  out.clear();
+  out.reserve(categories.size());
+  for (const auto& category : categories) out.push_back(labelConfidence(category == true_label, perceptibility, p));
 }
 
 namespace {

@@ -61,6 +61,9 @@ double labelConfidence(bool is_true_category, double perceptibility, const Param
 std::vector<double> labelConfidences(const std::vector<std::string>& categories,
                                      const std::string& true_label, double perceptibility,
                                      const Parameters& p = {});
+// The same into out (its storage reused).
+void labelConfidences(const std::vector<std::string>& categories, const std::string& true_label,
+                      double perceptibility, const Parameters& p, std::vector<double>& out);
 
 // ---- Dynamic weighting, eq. 4 ----
 
