@@ -1,24 +1,58 @@
 #include "audio_estimator.hpp"
 
+#include <atomic>
+
 #include "acoustic_occlusion.hpp"
 #include "object_geometry.hpp"
 
 namespace beft::audio {
 
+namespace {
+
+// O_a of each of the objects (indices into scene.objects), in their order.
+// The two threads take objects one at a time as they come.
+std::vector<double> occlusionsOf(const scene_objects_t& scene, const camera::SceneGeometry& solids,
+                                 const std::vector<std::size_t>& objects, const robot_state_t& robot,
+                                 expert::HelperTask* helper) {
+  const Eigen::Vector3d left_ear = geometry::leftEar(robot);
+  const Eigen::Vector3d right_ear = geometry::rightEar(robot);
+  std::vector<double> occlusion(objects.size(), 0.0);
+  std::atomic<std::size_t> next{0};
+  const auto work = [&] {
+    for (std::size_t k = next++; k < objects.size(); k = next++) {
+      const std::size_t i = objects[k];
+      occlusion[k] = acousticOcclusion(solids, static_cast<int>(i), sourceSamplePoints(scene.objects[i]), left_ear,
+                                       right_ear);
+    }
+  };
+  if (helper != nullptr && objects.size() > 1) {
+    helper->start(work);
+    expert::WaitOnExit helped(*helper);  // also when this thread throws
+    work();
+    helper->wait();
+  } else {
+    work();
+  }
+  return occlusion;
+}
+
+}  // namespace
+
 acoustic_percepts_t estimateAudio(const scene_objects_t& scene, const camera::SceneGeometry& solids,
-                                  const robot_state_t& robot, const AudioConfig& config) {
+                                  const robot_state_t& robot, const AudioConfig& config,
+                                  expert::HelperTask* helper) {
   acoustic_percepts_t out{};
   out.utime = scene.utime;
   out.tick = scene.tick;
-  const Eigen::Vector3d left_ear = geometry::leftEar(robot);
-  const Eigen::Vector3d right_ear = geometry::rightEar(robot);
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    const auto& object = scene.objects[i];
-    if (!geometry::isSounding(object)) continue;
+  std::vector<std::size_t> sounding;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i)
+    if (geometry::isSounding(scene.objects[i])) sounding.push_back(i);
+  const std::vector<double> occlusion = occlusionsOf(scene, solids, sounding, robot, helper);
+  for (std::size_t k = 0; k < sounding.size(); ++k) {
+    const auto& object = scene.objects[sounding[k]];
     acoustic_percept_t percept;
     percept.object_id = object.id;
-    percept.occlusion =
-        acousticOcclusion(solids, static_cast<int>(i), sourceSamplePoints(object), left_ear, right_ear);
+    percept.occlusion = occlusion[k];
     Eigen::Vector2d offset = Eigen::Vector2d::Zero();
     if (config.noise.enabled) {
       const double a_p = model::acousticPerceptibility(geometry::objectDistance(robot, object), percept.occlusion,

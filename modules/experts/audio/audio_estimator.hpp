@@ -8,6 +8,7 @@
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
+#include "helper_task.hpp"
 #include "model.hpp"
 #include "position_noise.hpp"
 #include "scene_geometry.hpp"
@@ -20,7 +21,10 @@ struct AudioConfig {
 };
 
 // solids: the scene's geometry built from the same message (camera::SceneGeometry::fromMessage).
+// helper, if given, computes part of the occlusions meanwhile (the same
+// percepts either way: each object's O_a depends on nothing else).
 acoustic_percepts_t estimateAudio(const scene_objects_t& scene, const camera::SceneGeometry& solids,
-                                  const robot_state_t& robot, const AudioConfig& config);
+                                  const robot_state_t& robot, const AudioConfig& config,
+                                  expert::HelperTask* helper = nullptr);
 
 }  // namespace beft::audio

@@ -137,8 +137,8 @@ expert::Outcome AudioExpert::fireHearing(const expert::Firing& firing, const sce
   for (const auto& object : scene.objects)
     if (geometry::isSounding(object)) sounding.push_back({object.id, signatureOf(object.sound)});
   heard_->hear(localiser_->localise(left, right), *block, sounding);
-  const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(scene);
-  audio_out_.publish(out, heardPercepts(scene, solids, robot, *heard_));
+  solids_.update(scene);
+  audio_out_.publish(out, heardPercepts(scene, solids_.solids(), robot, *heard_));
   askForHeadTurn(firing, robot, out);
   return expert::Outcome::success();
 }
@@ -150,8 +150,10 @@ expert::Outcome AudioExpert::fire(const expert::Firing& firing, expert::Output& 
     return expert::Outcome::failure(std::string("no ") + (scene == nullptr ? "GT_OBJECTS" : "ROBOT_STATE") +
                                     " for tick " + std::to_string(firing.tick));
   if (acoustics_ == Acoustics::Binaural) return fireHearing(firing, *scene, *robot, out);
-  const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
-  audio_out_.publish(out, estimateAudio(*scene, solids, *robot, config_));
+  // The solids are made again only when the objects change; the occlusions
+  // are shared with a helper thread (estimateAudio).
+  solids_.update(*scene);
+  audio_out_.publish(out, estimateAudio(*scene, solids_.solids(), *robot, config_, &occluding_));
   return expert::Outcome::success();
 }
 

@@ -19,6 +19,8 @@
 #include "expert.hpp"
 #include "scene_input.hpp"
 #include "heard_sources.hpp"
+#include "helper_task.hpp"
+#include "scene_solids.hpp"
 #include "sound_bank.hpp"
 
 namespace beft::audio {
@@ -59,6 +61,8 @@ class AudioExpert : public expert::Expert {
   expert::TickInput<binaural_block_t> ears_{*this, channels::kEars, 16, admitBlock, /*optional_until_heard=*/true};
   expert::OutputPort<acoustic_percepts_t> audio_out_{*this, channels::kAudio};
   expert::OutputPort<task_command_t> task_command_out_{*this, channels::kTaskCommand};
+  camera::SceneSolids solids_;      // of the scene last fired
+  expert::HelperTask occluding_;    // last: its thread ends before the state it works on goes
 
   static bool admitBlock(binaural_block_t& block, std::string* why);
 };

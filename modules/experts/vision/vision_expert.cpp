@@ -83,19 +83,6 @@ bool VisionExpert::unpackFrame(camera_frame_t& frame, std::string* why) {
   return camera::decodeCameraFrame(frame, why);
 }
 
-// Two scenes hold the same solids: same objects with the same shapes and poses.
-bool VisionExpert::sameSolids(const scene_objects_t& a, const scene_objects_t& b) {
-  if (a.objects.size() != b.objects.size()) return false;
-  for (std::size_t i = 0; i < a.objects.size(); ++i) {
-    const auto& p = a.objects[i];
-    const auto& q = b.objects[i];
-    if (p.id != q.id || p.shape != q.shape || p.x != q.x || p.y != q.y || p.z != q.z || p.yaw != q.yaw ||
-        p.size_x != q.size_x || p.size_y != q.size_y || p.size_z != q.size_z || p.radius != q.radius)
-      return false;
-  }
-  return true;
-}
-
 expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output& out) {
   const auto* scene = scene_.ofTick(firing.tick);
   const auto* depth = depth_.ofTick(firing.tick);
@@ -115,14 +102,10 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     // Expected pixels only change with the camera or the objects' shapes and poses.
     // The solids are made again only when the scene's objects change (rarely:
     // hundreds of objects were turned into solids at every tick of a drive).
-    const bool scene_changed = !solids_ || !sameSolids(*scene, solids_scene_);
-    if (scene_changed) {
-      solids_.emplace(camera::SceneGeometry::fromMessage(*scene));
-      solids_scene_ = *scene;
-      scene_index_ = indexOfObjects(*scene);
-    }
+    const bool scene_changed = solids_.update(*scene);
+    if (scene_changed) scene_index_ = indexOfObjects(*scene);
     const bool recount = scene_changed || expected_pose_.width == 0 || !samePose(*instance, expected_pose_);
-    const camera::SceneGeometry* solids = &*solids_;
+    const camera::SceneGeometry* solids = &solids_.solids();
     if (recount) {
       // Objects the real image cannot show at all are out of view: 0
       // expected, O_v = 100, not counted.

@@ -21,6 +21,7 @@
 #include "visual_occlusion.hpp"
 #include "obstacle_mapper.hpp"
 #include "ray_caster.hpp"
+#include "scene_solids.hpp"
 
 namespace beft::vision {
 
@@ -45,7 +46,6 @@ class VisionExpert : public expert::Expert {
   static camera_frame_t poseOf(const camera_frame_t& frame);
   // The same pose and the same pixels.
   static bool sameView(const camera_frame_t& a, const camera_frame_t& b);
-  static bool sameSolids(const scene_objects_t& a, const scene_objects_t& b);
   static bool unpackFrame(camera_frame_t& frame, std::string* why);
 
   ObstacleMapConfig map_config_;
@@ -67,9 +67,8 @@ class VisionExpert : public expert::Expert {
   camera::RayCaster ray_caster_;
   std::vector<int> expected_;          // expected pixels per object for the pose below and solids_
   camera_frame_t expected_pose_{};     // header only: the pixels do not matter to it
-  std::optional<camera::SceneGeometry> solids_;  // of solids_scene_'s objects
-  scene_objects_t solids_scene_{};
-  SceneIndex scene_index_;             // solids_scene_'s object ids -> index
+  camera::SceneSolids solids_;         // of the scene last fired
+  SceneIndex scene_index_;             // its object ids -> index
   expert::SceneInput scene_{*this};
   // Frames arrive compressed: unpacked (or refused, and counted) as they are kept.
   expert::TickInput<camera_frame_t> depth_{*this, channels::kCameraDepth, 4, unpackFrame};

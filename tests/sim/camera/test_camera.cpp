@@ -17,6 +17,7 @@
 #include "ray_caster.hpp"
 #include "row_workers.hpp"
 #include "scene_geometry.hpp"
+#include "scene_solids.hpp"
 
 using namespace beft::camera;
 
@@ -481,4 +482,54 @@ TEST(RowWorkers, EveryRowIsDoneExactlyOnceWhoeverTakesIt) {
       ASSERT_LE(workers_seen.size(), static_cast<std::size_t>(threads));
     }
   }
+}
+
+// The kept solids are made again exactly when something they are made of
+// changes, and then answer like solids made afresh from the message.
+TEST(SceneSolids, RemadeOnlyWhenAnObjectsShapePoseOrColourChanges) {
+  beft::scene_objects_t scene{};
+  for (int i = 0; i < 30; ++i) {
+    beft::scene_object_t o{};
+    o.id = "o" + std::to_string(i);
+    o.shape = i % 2 ? beft::scene_object_t::SHAPE_BOX : beft::scene_object_t::SHAPE_CYLINDER;
+    o.x = 2.0 * i;
+    o.y = 5.0 + (i % 5);
+    o.size_x = o.size_y = 1.0;
+    o.size_z = 2.0;
+    o.radius = 0.5;
+    scene.objects.push_back(o);
+  }
+  scene.num_objects = static_cast<int32_t>(scene.objects.size());
+  SceneSolids kept;
+  EXPECT_TRUE(kept.update(scene));
+  beft::scene_objects_t next = scene;
+  next.tick = 7;
+  next.objects[3].label = "person";  // neither makes a solid
+  next.objects[3].activity = "yelling";
+  EXPECT_FALSE(kept.update(next));
+  const auto changed = [&](auto change) {
+    beft::scene_objects_t moved = scene;
+    change(moved);
+    const bool remade = kept.update(moved);
+    // Rays along the row of objects, from both ends, meet what fresh solids meet.
+    const SceneGeometry fresh = SceneGeometry::fromMessage(moved);
+    for (double y = 4.0; y <= 10.0; y += 0.25)
+      for (const double dx : {1.0, -1.0}) {
+        const Eigen::Vector3d o(dx > 0 ? -5.0 : 70.0, y, 1.0), d(dx, 0.0, 0.0);
+        const auto a = kept.solids().firstHit(o, d, 0, 100), b = fresh.firstHit(o, d, 0, 100);
+        EXPECT_EQ(a.solid, b.solid);
+        EXPECT_EQ(a.t, b.t);
+      }
+    kept.update(scene);
+    return remade;
+  };
+  EXPECT_TRUE(changed([](beft::scene_objects_t& s) { s.objects[4].y += 0.5; }));
+  EXPECT_TRUE(changed([](beft::scene_objects_t& s) { s.objects[5].radius = 0.9; }));
+  EXPECT_TRUE(changed([](beft::scene_objects_t& s) { s.objects[6].size_z = 0.5; }));
+  EXPECT_TRUE(changed([](beft::scene_objects_t& s) { s.objects[7].color_rgb = 0x00ff00; }));
+  EXPECT_TRUE(changed([](beft::scene_objects_t& s) {
+    s.objects.pop_back();
+    s.num_objects -= 1;
+  }));
+  EXPECT_TRUE(changed([](beft::scene_objects_t& s) { std::swap(s.objects[0], s.objects[1]); }));
 }
