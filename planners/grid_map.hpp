@@ -40,4 +40,10 @@ class GridMap {
 // radius_cells = 0 returns the map unchanged.
 GridMap inflate(const GridMap& map, double radius_cells);
 
+// inflate(map, radius_cells), found from an earlier map of the same size and
+// its inflation by the same radius: only around the cells that differ is the
+// inflation made again (a map grows by a few cells a tick; inflating the
+// whole of a 160 x 120 m map was an eighth of a plan's time).
+GridMap inflate(const GridMap& map, double radius_cells, const GridMap& earlier, const GridMap& earlier_inflated);
+
 }  // namespace beft::planners

@@ -241,6 +241,14 @@ double OctileWavefront::value(int x, int y) const {
   return field_[padded(x, y)];
 }
 
+void OctileWavefront::rowValues(int y, int x0, int x1, double* out) const {
+  if (x1 < x0) return;
+  std::fill(out, out + (x1 - x0 + 1), kInfinity);
+  if (y < window_y_ || y >= window_y_ + window_height_) return;
+  const int from = std::max(x0, window_x_), to = std::min(x1, window_x_ + window_width_ - 1);
+  if (from <= to) std::copy_n(field_.data() + padded(from, y), to - from + 1, out + (from - x0));
+}
+
 std::vector<double> OctileWavefront::values() const {
   std::vector<double> out(static_cast<size_t>(grid_.width()) * grid_.height(), kInfinity);
   for (int y = window_y_; y < window_y_ + window_height_; ++y)

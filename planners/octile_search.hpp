@@ -72,6 +72,8 @@ class OctileWavefront {
   double value(int x, int y) const;
   // Every cell's value, row-major.
   std::vector<double> values() const;
+  // value(x, y) for x = x0 .. x1 of row y into out[0 .. x1 - x0].
+  void rowValues(int y, int x0, int x1, double* out) const;
   // The smallest rectangle, inclusive, outside which every value is still
   // +infinity; false when none is finite.
   bool finiteBounds(int& x0, int& y0, int& x1, int& y1) const;

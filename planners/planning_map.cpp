@@ -20,6 +20,13 @@ inline int lastCell(double hi) { return static_cast<int>(std::floor(hi + kTouchT
 PlanningMap::PlanningMap(GridMap raw, double robot_radius_cells)
     : raw_(std::move(raw)), inflated_(inflate(raw_, robot_radius_cells)), radius_(robot_radius_cells) {}
 
+PlanningMap::PlanningMap(GridMap raw, double robot_radius_cells, const PlanningMap& earlier)
+    : raw_(std::move(raw)),
+      inflated_(earlier.radius_ == robot_radius_cells
+                    ? inflate(raw_, robot_radius_cells, earlier.raw_, earlier.inflated_)
+                    : inflate(raw_, robot_radius_cells)),
+      radius_(robot_radius_cells) {}
+
 void PlanningMap::labelNearestObstacles() const {
   if (raw_.blockedCount() == 0) return;
   const int w = raw_.width();

@@ -23,6 +23,9 @@ namespace beft::planners {
 class PlanningMap {
  public:
   PlanningMap(GridMap raw, double robot_radius_cells);
+  // The same, inflated from an earlier planning map (of any size and radius:
+  // it is used only when both match).
+  PlanningMap(GridMap raw, double robot_radius_cells, const PlanningMap& earlier);
 
   const GridMap& raw() const { return raw_; }
   const GridMap& inflated() const { return inflated_; }

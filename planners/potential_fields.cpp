@@ -106,20 +106,23 @@ cv::Mat geodesicTargetDistance(const GridMap& grid, GridCell goal, GridCell star
   // One more cell around, infinite (or the grid's edge): the gradient and the
   // interpolation between cells read what they would over the whole grid.
   region = cv::Rect(x0 - 1, y0 - 1, x1 - x0 + 3, y1 - y0 + 3) & cv::Rect(0, 0, grid.width(), grid.height());
+  // The bounded field, row by row, then scaled by its largest finite value.
+  const int width = x1 - x0 + 1;
+  std::vector<double> values(static_cast<size_t>(width) * (y1 - y0 + 1));
   double max_value = 0;
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x) {
-      const double d = wavefront.value(x, y);
-      if (std::isfinite(d)) max_value = std::max(max_value, d);
-    }
+  for (int y = y0; y <= y1; ++y) {
+    double* row = values.data() + static_cast<size_t>(y - y0) * width;
+    wavefront.rowValues(y, x0, x1, row);
+    for (int i = 0; i < width; ++i)
+      if (std::isfinite(row[i])) max_value = std::max(max_value, row[i]);
+  }
   const double scale = max_value > 0 ? 1.0 / max_value : 1.0;
   cv::Mat distance(region.size(), CV_32F, cv::Scalar(std::numeric_limits<float>::infinity()));
   for (int y = y0; y <= y1; ++y) {
-    float* row = distance.ptr<float>(y - region.y);
-    for (int x = x0; x <= x1; ++x) {
-      const double d = wavefront.value(x, y);
-      if (std::isfinite(d)) row[x - region.x] = static_cast<float>(d * scale);
-    }
+    const double* row = values.data() + static_cast<size_t>(y - y0) * width;
+    float* out = distance.ptr<float>(y - region.y) + (x0 - region.x);
+    for (int i = 0; i < width; ++i)
+      if (std::isfinite(row[i])) out[i] = static_cast<float>(row[i] * scale);
   }
   return distance;
 }

@@ -235,6 +235,13 @@ TEST(OctileWavefront, GrownBucketByBucketFinishesCellsInOrderOfDistance) {
     OctileWavefront around(grid, goal, reach);
     around.growAround({70, 10}, 1.2, 5.0);
     EXPECT_EQ(around.values(), octileDistanceField(grid, goal, {70, 10}, 1.2, 5.0)) << "reach " << reach;
+    // A row's values at once, across the window's and the grid's edges: value() of each cell.
+    for (int y = -2; y < grid.height() + 2; y += 3) {
+      const int x0 = static_cast<int>(rng() % 100) - 5, x1 = x0 + static_cast<int>(rng() % 100);
+      std::vector<double> row(static_cast<size_t>(x1 - x0 + 1), -1.0);
+      around.rowValues(y, x0, x1, row.data());
+      for (int x = x0; x <= x1; ++x) ASSERT_EQ(row[x - x0], around.value(x, y)) << x << "," << y << ", reach " << reach;
+    }
   }
   // A walled-in goal: exhausted inside a small window, everything else unreachable.
   GridMap box(40, 40);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -57,6 +58,42 @@ TEST(Inflation, AnyPointOfAFreeCellClearsObstaclesByTheRadius) {
     }
   }
   EXPECT_GT(free_points, 200);
+}
+
+// Inflated from an earlier map, only around what changed: the same cells as
+// inflating the whole map, whatever changed (cells added and removed, near the
+// edges, in one place or spread out, nothing) and for radii of every size.
+TEST(Inflation, FromAnEarlierMapEqualsInflatingTheWholeMap) {
+  std::mt19937 random(21);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::uniform_int_distribution<int> side(1, 90);
+    const int width = side(random), height = side(random);
+    std::uniform_int_distribution<int> x_of(0, width - 1), y_of(0, height - 1);
+    GridMap earlier(width, height);
+    for (int n = std::uniform_int_distribution<int>(0, width * height / 8)(random); n > 0; --n)
+      earlier.setBlocked(x_of(random), y_of(random));
+    const double radius = std::uniform_real_distribution<double>(0.0, 6.0)(random);
+    const GridMap earlier_inflated = inflate(earlier, radius);
+    GridMap map = earlier;
+    const int changes = std::uniform_int_distribution<int>(0, 12)(random);
+    const bool clustered = trial % 2 == 0;
+    const int cx = x_of(random), cy = y_of(random);
+    for (int n = 0; n < changes; ++n) {
+      int x = x_of(random), y = y_of(random);
+      if (clustered) {
+        x = std::clamp(cx + std::uniform_int_distribution<int>(-3, 3)(random), 0, width - 1);
+        y = std::clamp(cy + std::uniform_int_distribution<int>(-3, 3)(random), 0, height - 1);
+      }
+      map.setBlocked(x, y, !map.blocked(x, y));
+    }
+    ASSERT_EQ(inflate(map, radius, earlier, earlier_inflated).cells(), inflate(map, radius).cells())
+        << "trial " << trial << ": " << width << " x " << height << ", radius " << radius << ", " << changes
+        << " changes";
+  }
+  // An earlier map of another size is not used.
+  GridMap small(5, 5), large(8, 8);
+  large.setBlocked(7, 7);
+  EXPECT_EQ(inflate(large, 1.5, small, inflate(small, 1.5)).cells(), inflate(large, 1.5).cells());
 }
 
 TEST(ValidityChecker, DiagonalThroughACornerNeedsBothSideCells) {

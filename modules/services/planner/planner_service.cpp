@@ -81,7 +81,10 @@ std::shared_ptr<const bp::PlanningMap> PlannerService::planningMap() {
     std::transform(cells_->cells.begin(), cells_->cells.end(), occupied.begin(),
                    [](uint8_t cell) { return cell == beft::obstacle_map_t::CELL_OCCUPIED ? 1 : 0; });
     bp::GridMap grid(cells_->width, cells_->height, std::move(occupied));
-    planning_map_ = std::make_shared<bp::PlanningMap>(std::move(grid), config_.robot_radius / cells_->resolution);
+    // Inflated again only around what changed since the map planned on last.
+    const double radius_cells = config_.robot_radius / cells_->resolution;
+    planning_map_ = planning_map_ ? std::make_shared<bp::PlanningMap>(std::move(grid), radius_cells, *planning_map_)
+                                  : std::make_shared<bp::PlanningMap>(std::move(grid), radius_cells);
     planning_map_version_ = map_version_;
   }
   return planning_map_;
