@@ -139,7 +139,7 @@ std::shared_ptr<const planners::ObstacleCells> PlannerProcess::mapFor(const beft
 void PlannerProcess::useMap(const std::shared_ptr<const planners::ObstacleCells>& map) {
   if (map == nullptr || map == map_in_use_) return;
   map_in_use_ = map;
-  planner_->setObstacleMap(*map);
+  planner_->setObstacleMap(map);
 }
 
 void PlannerProcess::answerRequests(lcm::LCM& lcm) {

@@ -65,7 +65,11 @@ void PlannerService::setObstacleMap(const beft::obstacle_map_t& message) {
 }
 
 void PlannerService::setObstacleMap(const bp::ObstacleCells& map) {
-  auto cells = std::make_shared<bp::ObstacleCells>(map);
+  setObstacleMap(std::make_shared<const bp::ObstacleCells>(map));
+}
+
+void PlannerService::setObstacleMap(std::shared_ptr<const bp::ObstacleCells> cells) {
+  if (cells == nullptr) return;
   const bool same = cells_ && cells_->width == cells->width && cells_->height == cells->height &&
                     cells_->resolution == cells->resolution && cells_->origin_x == cells->origin_x &&
                     cells_->origin_y == cells->origin_y && cells_->cells == cells->cells;

@@ -57,6 +57,8 @@ class PlannerService {
   // Keeps the newest map; throws planners::ObstacleMapError when malformed.
   void setObstacleMap(const beft::obstacle_map_t& message);
   void setObstacleMap(const planners::ObstacleCells& cells);
+  // The same, shared rather than copied (the map must not change afterwards).
+  void setObstacleMap(std::shared_ptr<const planners::ObstacleCells> cells);
   bool hasMap() const { return cells_ != nullptr; }
   int64_t mapVersion() const { return map_version_; }
 
@@ -88,7 +90,7 @@ class PlannerService {
   bool remember(int64_t request_id);
 
   ServiceConfig config_;
-  std::shared_ptr<planners::ObstacleCells> cells_;
+  std::shared_ptr<const planners::ObstacleCells> cells_;
   std::shared_ptr<const planners::PlanningMap> planning_map_;
   int64_t map_version_ = 0;
   int64_t planning_map_version_ = -1;
