@@ -81,11 +81,8 @@ GridMap inflate(const GridMap& map, double radius_cells) {
 
 GridMap inflate(const GridMap& map, double radius_cells, const GridMap& earlier, const GridMap& earlier_inflated) {
   checkRadius(radius_cells);
-  if (radius_cells == 0 || map.width() == 0) return map;
   const int width = map.width(), height = map.height();
-  if (earlier.width() != width || earlier.height() != height || earlier_inflated.width() != width ||
-      earlier_inflated.height() != height)
-    return inflate(map, radius_cells);
+  if (earlier.width() != width || earlier.height() != height) return inflate(map, radius_cells);
   // The rectangle of the cells that differ, row by row.
   int x0 = width, x1 = -1, y0 = height, y1 = -1;
   for (int y = 0; y < height; ++y) {
@@ -100,8 +97,17 @@ GridMap inflate(const GridMap& map, double radius_cells, const GridMap& earlier,
     y0 = std::min(y0, y);
     y1 = y;
   }
+  return inflate(map, radius_cells, earlier_inflated, x0, y0, x1, y1);
+}
+
+GridMap inflate(const GridMap& map, double radius_cells, const GridMap& earlier_inflated, int x0, int y0, int x1,
+                int y1) {
+  checkRadius(radius_cells);
+  if (radius_cells == 0 || map.width() == 0) return map;
+  const int width = map.width(), height = map.height();
+  if (earlier_inflated.width() != width || earlier_inflated.height() != height) return inflate(map, radius_cells);
   std::vector<uint8_t> cells = earlier_inflated.cells();
-  if (x1 < 0) return GridMap(width, height, std::move(cells));
+  if (x1 < x0 || y1 < y0) return GridMap(width, height, std::move(cells));
   // Cells within reach of a changed one may change; each of them depends on
   // the cells within reach of it.
   int reach = 0;
@@ -109,6 +115,7 @@ GridMap inflate(const GridMap& map, double radius_cells, const GridMap& earlier,
   const cv::Rect grid(0, 0, width, height);
   const cv::Rect changed(x0 - reach, y0 - reach, x1 - x0 + 1 + 2 * reach, y1 - y0 + 1 + 2 * reach);
   const cv::Rect redone = changed & grid;
+  if (redone.empty()) return GridMap(width, height, std::move(cells));
   const cv::Rect read = cv::Rect(changed.x - reach, changed.y - reach, changed.width + 2 * reach,
                                  changed.height + 2 * reach) & grid;
   const cv::Mat source(height, width, CV_8U, const_cast<uint8_t*>(map.cells().data()));

@@ -95,7 +95,9 @@ const KnownMap* Explorer::knownMap(const Observation& o) {
   if (!o.map) return nullptr;
   const double radius = o.robot_radius + parameters_.safety_margin_m;
   if (!map_ || map_version_ != o.map_version || map_radius_ != radius) {
-    map_ = std::make_unique<KnownMap>(*o.map, radius);
+    // The map known before goes along: the standing grid is then inflated
+    // again only where the map changed.
+    map_ = map_ ? std::make_unique<KnownMap>(*o.map, radius, std::move(*map_)) : std::make_unique<KnownMap>(*o.map, radius);
     map_version_ = o.map_version;
     map_radius_ = radius;
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <beft/obstacle_map_t.hpp>
@@ -30,13 +31,28 @@ KnownMap::KnownMap(planners::ObstacleCells cells, double radius) : cells_(std::m
   }
 }
 
+KnownMap::KnownMap(planners::ObstacleCells cells, double radius, KnownMap&& earlier)
+    : KnownMap(std::move(cells), radius) {
+  if (earlier.radius_cells_ != radius_cells_) return;
+  if (earlier.standing_) {
+    earlier_cells_ = std::move(earlier.cells_);
+    earlier_standing_ = std::move(earlier.standing_);
+  } else if (earlier.earlier_standing_) {
+    earlier_cells_ = std::move(earlier.earlier_cells_);
+    earlier_standing_ = std::move(earlier.earlier_standing_);
+  }
+}
+
 const planners::GridMap& KnownMap::standing() const {
   if (standing_) return *standing_;
   std::vector<uint8_t> flags(cells_.cells.size());
   std::transform(cells_.cells.begin(), cells_.cells.end(), flags.begin(),
                  [](uint8_t cell) { return cell == obstacle_map_t::CELL_OCCUPIED ? 1 : 0; });
   const planners::GridMap occupied(cells_.width, cells_.height, std::move(flags));
-  planners::GridMap standing = planners::inflate(occupied, radius_cells_);
+  // From the earlier map's grid when there is one of the same size: its
+  // border is filled, as this one's is below, and every cell within reach of
+  // a changed one is inflated again.
+  planners::GridMap standing = inflatedAgain(occupied);
   if (border_ > 0) {
     standing.fillRect(0, 0, cells_.width - 1, border_ - 1);
     standing.fillRect(0, cells_.height - border_, cells_.width - 1, cells_.height - 1);
@@ -45,6 +61,30 @@ const planners::GridMap& KnownMap::standing() const {
   }
   standing_ = std::move(standing);
   return *standing_;
+}
+
+planners::GridMap KnownMap::inflatedAgain(const planners::GridMap& occupied) const {
+  const bool same_size = earlier_cells_ && earlier_standing_ && earlier_cells_->width == cells_.width &&
+                         earlier_cells_->height == cells_.height;
+  if (!same_size) return planners::inflate(occupied, radius_cells_);
+  // The rectangle of the cells that changed, row by row.
+  int x0 = cells_.width, x1 = -1, y0 = cells_.height, y1 = -1;
+  for (int y = 0; y < cells_.height; ++y) {
+    const uint8_t* now = cells_.cells.data() + static_cast<size_t>(y) * cells_.width;
+    const uint8_t* before = earlier_cells_->cells.data() + static_cast<size_t>(y) * cells_.width;
+    if (std::memcmp(now, before, static_cast<size_t>(cells_.width)) == 0) continue;
+    int first = 0, last = cells_.width - 1;
+    while (now[first] == before[first]) ++first;
+    while (now[last] == before[last]) --last;
+    x0 = std::min(x0, first);
+    x1 = std::max(x1, last);
+    y0 = std::min(y0, y);
+    y1 = y;
+  }
+  planners::GridMap standing = planners::inflate(occupied, radius_cells_, *earlier_standing_, x0, y0, x1, y1);
+  earlier_cells_.reset();
+  earlier_standing_.reset();
+  return standing;
 }
 
 bool KnownMap::standable(int x, int y) const {

@@ -29,6 +29,9 @@ class KnownMap {
  public:
   // radius: robot footprint radius plus safety margin [m].
   KnownMap(planners::ObstacleCells cells, double radius);
+  // The same, with the map known before (taken over): standing() is then
+  // inflated again only around the cells that differ from it.
+  KnownMap(planners::ObstacleCells cells, double radius, KnownMap&& earlier);
 
   int width() const { return cells_.width; }
   int height() const { return cells_.height; }
@@ -53,11 +56,16 @@ class KnownMap {
   SightLine sight(double ax, double ay, double bx, double by, double ignore_near_b) const;
 
  private:
+  planners::GridMap inflatedAgain(const planners::GridMap& occupied) const;
+
   planners::ObstacleCells cells_;
   double radius_cells_ = 0;
   int border_ = 0;                                   // cells along the world's edge that are never standable
   std::vector<std::pair<int, int>> reach_offsets_;   // offsets of occupied cells that forbid standing
   mutable std::optional<planners::GridMap> standing_;  // 1 = the robot's centre may not be here
+  // The latest earlier map whose standing() was made, and that grid, until standing() is made.
+  mutable std::optional<planners::ObstacleCells> earlier_cells_;
+  mutable std::optional<planners::GridMap> earlier_standing_;
 };
 
 // Travel distances [m] from the robot to every cell over standable cells

@@ -4,8 +4,8 @@
 // retrying, giving up and stopping.
 #include <cmath>
 #include <limits>
-#include <random>
 #include <memory>
+#include <random>
 #include <string>
 #include <tuple>
 
@@ -252,6 +252,35 @@ planners::ObstacleCells randomWorld(std::mt19937& rng, double width = 40, double
     fillRect(cells, x0, y0, x0 + 3, y0 + 3, kUnknown);
   }
   return cells;
+}
+
+// A map made from the one known before inflates only around what changed:
+// its standing grid is the one made afresh, whether the map before made its
+// own (or only one before it did), the radius or the size changed, or
+// occupied cells came and went next to the border.
+TEST(KnownMap, StandingFromTheMapKnownBeforeEqualsItMadeAfresh) {
+  std::mt19937 rng(17);
+  for (int trial = 0; trial < 30; ++trial) {
+    planners::ObstacleCells cells = randomWorld(rng, 20, 15);
+    const double radius = trial % 5 == 4 ? 0.3 : 0.45;
+    std::unique_ptr<KnownMap> known = std::make_unique<KnownMap>(cells, 0.45);
+    for (int step = 0; step < 6; ++step) {
+      if (step % 3 != 1) known->standing();  // sometimes the map before never made its grid
+      std::uniform_real_distribution<double> x(-0.5, 20.5), y(-0.5, 15.5);
+      for (int n = static_cast<int>(rng() % 4); n > 0; --n) {
+        const double x0 = x(rng), y0 = y(rng);
+        fillRect(cells, x0, y0, x0 + 0.6, y0 + 0.3, rng() % 3 ? kOccupied : kFree);
+      }
+      known = std::make_unique<KnownMap>(cells, step == 3 ? radius : 0.45, std::move(*known));
+      const KnownMap fresh(cells, step == 3 ? radius : 0.45);
+      ASSERT_EQ(known->standing().cells(), fresh.standing().cells()) << "trial " << trial << " step " << step;
+    }
+  }
+  // A map of another size is made afresh.
+  KnownMap small(makeCells(5, 5, kFree), 0.45);
+  small.standing();
+  const auto larger = makeCells(6, 5, kOccupied);
+  EXPECT_EQ(KnownMap(larger, 0.45, std::move(small)).standing().cells(), KnownMap(larger, 0.45).standing().cells());
 }
 
 TEST(TravelField, WithinALimitIsTheFullAnswerUpToIt) {
