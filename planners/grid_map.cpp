@@ -79,24 +79,30 @@ GridMap inflate(const GridMap& map, double radius_cells) {
   return GridMap(map.width(), map.height(), std::vector<uint8_t>(grown.datastart, grown.dataend));
 }
 
-GridMap inflate(const GridMap& map, double radius_cells, const GridMap& earlier, const GridMap& earlier_inflated) {
-  checkRadius(radius_cells);
-  const int width = map.width(), height = map.height();
-  if (earlier.width() != width || earlier.height() != height) return inflate(map, radius_cells);
-  // The rectangle of the cells that differ, row by row.
-  int x0 = width, x1 = -1, y0 = height, y1 = -1;
-  for (int y = 0; y < height; ++y) {
-    const uint8_t* now = map.cells().data() + map.index(0, y);
-    const uint8_t* before = earlier.cells().data() + earlier.index(0, y);
-    if (std::memcmp(now, before, static_cast<size_t>(width)) == 0) continue;
+bool differingRectangle(const uint8_t* a, const uint8_t* b, int width, int height, int& x0, int& y0, int& x1,
+                        int& y1) {
+  x0 = width, x1 = -1, y0 = height, y1 = -1;
+  for (int y = 0; y < height; ++y) {  // whole rows compared first: most are the same
+    const uint8_t* row_a = a + static_cast<size_t>(y) * width;
+    const uint8_t* row_b = b + static_cast<size_t>(y) * width;
+    if (std::memcmp(row_a, row_b, static_cast<size_t>(width)) == 0) continue;
     int first = 0, last = width - 1;
-    while (now[first] == before[first]) ++first;
-    while (now[last] == before[last]) --last;
+    while (row_a[first] == row_b[first]) ++first;
+    while (row_a[last] == row_b[last]) --last;
     x0 = std::min(x0, first);
     x1 = std::max(x1, last);
     y0 = std::min(y0, y);
     y1 = y;
   }
+  return x1 >= 0;
+}
+
+GridMap inflate(const GridMap& map, double radius_cells, const GridMap& earlier, const GridMap& earlier_inflated) {
+  checkRadius(radius_cells);
+  const int width = map.width(), height = map.height();
+  if (earlier.width() != width || earlier.height() != height) return inflate(map, radius_cells);
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+  differingRectangle(map.cells().data(), earlier.cells().data(), width, height, x0, y0, x1, y1);
   return inflate(map, radius_cells, earlier_inflated, x0, y0, x1, y1);
 }
 

@@ -46,6 +46,12 @@ GridMap inflate(const GridMap& map, double radius_cells);
 // whole of a 160 x 120 m map was an eighth of a plan's time).
 GridMap inflate(const GridMap& map, double radius_cells, const GridMap& earlier, const GridMap& earlier_inflated);
 
+// The smallest rectangle, columns x0 .. x1 of rows y0 .. y1, holding every cell
+// in which two row-major grids of width x height cells differ; false (and
+// x1 < x0) when none does.
+bool differingRectangle(const uint8_t* a, const uint8_t* b, int width, int height, int& x0, int& y0, int& x1,
+                        int& y1);
+
 // The same when the caller knows that the map differs from the earlier one at
 // most inside columns x0 .. x1 of rows y0 .. y1 (none when x1 < x0).
 GridMap inflate(const GridMap& map, double radius_cells, const GridMap& earlier_inflated, int x0, int y0, int x1,

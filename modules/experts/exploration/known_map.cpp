@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 #include <beft/obstacle_map_t.hpp>
@@ -67,20 +66,9 @@ planners::GridMap KnownMap::inflatedAgain(const planners::GridMap& occupied) con
   const bool same_size = earlier_cells_ && earlier_standing_ && earlier_cells_->width == cells_.width &&
                          earlier_cells_->height == cells_.height;
   if (!same_size) return planners::inflate(occupied, radius_cells_);
-  // The rectangle of the cells that changed, row by row.
-  int x0 = cells_.width, x1 = -1, y0 = cells_.height, y1 = -1;
-  for (int y = 0; y < cells_.height; ++y) {
-    const uint8_t* now = cells_.cells.data() + static_cast<size_t>(y) * cells_.width;
-    const uint8_t* before = earlier_cells_->cells.data() + static_cast<size_t>(y) * cells_.width;
-    if (std::memcmp(now, before, static_cast<size_t>(cells_.width)) == 0) continue;
-    int first = 0, last = cells_.width - 1;
-    while (now[first] == before[first]) ++first;
-    while (now[last] == before[last]) --last;
-    x0 = std::min(x0, first);
-    x1 = std::max(x1, last);
-    y0 = std::min(y0, y);
-    y1 = y;
-  }
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // the cells that changed
+  planners::differingRectangle(cells_.cells.data(), earlier_cells_->cells.data(), cells_.width, cells_.height, x0, y0,
+                               x1, y1);
   planners::GridMap standing = planners::inflate(occupied, radius_cells_, *earlier_standing_, x0, y0, x1, y1);
   earlier_cells_.reset();
   earlier_standing_.reset();
