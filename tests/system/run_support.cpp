@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <poll.h>
 #include <fcntl.h>
@@ -261,6 +262,34 @@ std::string lineAfter(const std::string& output, const std::string& prefix) {
     pos = end + 1;
   }
   return "";
+}
+
+std::string writeCurbScenario(const std::string& dir) {
+  const std::string path = dir + "/curb.xml";
+  std::ofstream out(path);
+  out << R"(<?xml version="1.0"?>
+<scenario name="curb" dt="0.1" duration="150" seed="3">
+  <world width="20" height="10"/>
+  <robot x="2" y="3" yaw="0"/>
+  <object id="caller" label="person" x="15" y="3" activity="yelling">
+    <visual shape="cylinder" radius="0.3" height="1.8" color="#d04040"/>
+    <acoustic sound=")" << sourceDir() << R"(/scenarios/sounds/help.wav"/>
+  </object>
+  <object id="curb" label="wall" x="8" y="3.5" yaw="90">
+    <visual shape="box" size="7 0.3 0.1" color="#707070"/>
+  </object>
+</scenario>
+)";
+  return path;
+}
+
+std::vector<Contact> contactsWith(const std::string& processes_log, const std::string& object) {
+  const std::regex line(R"(collision at tick (\d+): stopped at contact with object ')" + object +
+                        R"(' at \(([-\d.]+), ([-\d.]+)\))");
+  std::vector<Contact> contacts;
+  for (std::sregex_iterator it(processes_log.begin(), processes_log.end(), line), end; it != end; ++it)
+    contacts.push_back({std::stoll((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3])});
+  return contacts;
 }
 
 }  // namespace beft::system_test

@@ -82,4 +82,18 @@ std::vector<beft::hypotheses_t> hypothesesOfEachTick(const std::vector<LoggedMes
 // The first line of `output` that starts with `prefix`, without it; "" if none.
 std::string lineAfter(const std::string& output, const std::string& prefix);
 
+// Writes dir/curb.xml and returns its path: a curb 0.1 m high (below the
+// vision expert's 0.15 m obstacle height: the camera sees floor there) lies
+// across the way to a calling person, with a gap at its north end, so the
+// robot drives into it unaware (first at tick 110).
+std::string writeCurbScenario(const std::string& dir);
+
+// Where a run's processes said the robot touched `object`, in order:
+// "collision at tick T: stopped at contact with object 'ID' at (X, Y) ...".
+struct Contact {
+  int64_t tick = 0;
+  double x = 0, y = 0;
+};
+std::vector<Contact> contactsWith(const std::string& processes_log, const std::string& object);
+
 }  // namespace beft::system_test

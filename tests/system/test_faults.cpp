@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -199,6 +200,32 @@ TEST(KilledWorld, AfterASceneChangeItNamesTheSameGroundTruthAndTheRunWritesTheSa
         for (const auto& o : truth.objects) silenced = silenced || (o.id == "siren1" && !o.sound_active);
     EXPECT_TRUE(silenced) << "no GT_OBJECTS at tick 105 with the siren silent";
   }
+  expectSameDataMessages(killed, clean);
+}
+
+// Killed after the robot touched what its camera cannot map: the restarted
+// vision expert marks the contacts again (from OBSTACLE_MAP_FELT), so the
+// robot does not touch the curb again where it already did, and the run
+// writes the same data messages.
+TEST(KilledVision, AfterContactsMarksThemAgainAndTheRunWritesTheSameDataMessages) {
+  const std::string scenario = writeCurbScenario(makeTempDir("curb_scenario"));
+  const FaultRun clean = runScenario("curb_clean", scenario, "");
+  ASSERT_EQ(clean.result.exit_code, 0) << clean.result.output;
+  const auto before_kill = [](const std::vector<Contact>& contacts) {
+    int count = 0;
+    for (const Contact& contact : contacts) count += contact.tick < 160;
+    return count;
+  };
+  ASSERT_GE(before_kill(contactsWith(processLog(clean), "curb")), 2) << "too few contacts before the kill to test";
+  const FaultRun killed = runScenario("curb_killed", scenario, "--kill vision@160");
+  ASSERT_EQ(killed.result.exit_code, 0) << killed.result.output << processLog(killed);
+  EXPECT_NE(processLog(killed).find("vision killed by signal"), std::string::npos);
+  const std::vector<Contact> contacts = contactsWith(processLog(killed), "curb");
+  ASSERT_EQ(contacts.size(), contactsWith(processLog(clean), "curb").size());
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    for (std::size_t j = i + 1; j < contacts.size(); ++j)
+      EXPECT_GT(std::hypot(contacts[i].x - contacts[j].x, contacts[i].y - contacts[j].y), 0.3)
+          << "touched the curb twice at one place after the restart";
   expectSameDataMessages(killed, clean);
 }
 

@@ -6,8 +6,6 @@
 #include <unistd.h>
 
 #include <cmath>
-#include <fstream>
-#include <regex>
 
 #include <gtest/gtest.h>
 
@@ -86,43 +84,22 @@ TEST(LargeScene, TwoRunsSideBySideWriteTheSameDataMessages) {
   EXPECT_GT(plan_requests, 5);
 }
 
-// A curb 0.1 m high (below the vision expert's 0.15 m obstacle height: the
-// camera sees floor there) lies across the way to a calling person, with a
-// gap at its north end. The robot drives into it unaware; each contact enters
-// the obstacle map, so it never touches the curb twice at one place, and it
-// reaches the person round the gap.
+// The curb (writeCurbScenario) lies across the way to a calling person, with
+// a gap at its north end. The robot drives into it unaware; each contact
+// enters the obstacle map, so it never touches the curb twice at one place,
+// and it reaches the person round the gap.
 TEST(UnseenObstacle, IsFeltOnceAtEachPlaceAndDrivenAround) {
   const std::string dir = makeTempDir("curb");
-  const std::string scenario = dir + "/curb.xml";
-  {
-    std::ofstream out(scenario);
-    out << R"(<?xml version="1.0"?>
-<scenario name="curb" dt="0.1" duration="150" seed="3">
-  <world width="20" height="10"/>
-  <robot x="2" y="3" yaw="0"/>
-  <object id="caller" label="person" x="15" y="3" activity="yelling">
-    <visual shape="cylinder" radius="0.3" height="1.8" color="#d04040"/>
-    <acoustic sound=")" << sourceDir() << R"(/scenarios/sounds/help.wav"/>
-  </object>
-  <object id="curb" label="wall" x="8" y="3.5" yaw="90">
-    <visual shape="box" size="7 0.3 0.1" color="#707070"/>
-  </object>
-</scenario>
-)";
-  }
+  const std::string scenario = writeCurbScenario(dir);
   const ProgramResult run = runCommand(kRecorderInFront + binDir() + "/beft-run " + scenario + " --out " + dir, 600);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const std::string processes = runCommand("cat " + dir + "/processes.log", 10).output;
-  // "collision at tick T: stopped at contact with object 'curb' at (X, Y) ..."
-  const std::regex contact_line(R"(collision at tick \d+: stopped at contact with object 'curb' at \(([-\d.]+), ([-\d.]+)\))");
-  std::vector<std::pair<double, double>> contacts;
-  for (std::sregex_iterator it(processes.begin(), processes.end(), contact_line), end; it != end; ++it)
-    contacts.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]));
+  const std::vector<Contact> contacts = contactsWith(processes, "curb");
   ASSERT_GE(contacts.size(), 1u) << "the robot never touched the curb: the test does not test the bumper";
   for (std::size_t i = 0; i < contacts.size(); ++i)
     for (std::size_t j = i + 1; j < contacts.size(); ++j)
-      EXPECT_GT(std::hypot(contacts[i].first - contacts[j].first, contacts[i].second - contacts[j].second), 0.3)
-          << "touched the curb twice at one place: (" << contacts[i].first << ", " << contacts[i].second << ")";
+      EXPECT_GT(std::hypot(contacts[i].x - contacts[j].x, contacts[i].y - contacts[j].y), 0.3)
+          << "touched the curb twice at one place: (" << contacts[i].x << ", " << contacts[i].y << ")";
   const auto report = readJson(dir + "/report.json");
   EXPECT_EQ(report["completed"], true) << report.dump(2);
   EXPECT_EQ(report["rejected_total"], 0) << report.dump(2);
