@@ -99,6 +99,7 @@ bool differingRectangle(const uint8_t* a, const uint8_t* b, int width, int heigh
 
 GridMap inflate(const GridMap& map, double radius_cells, const GridMap& earlier, const GridMap& earlier_inflated) {
   checkRadius(radius_cells);
+  if (radius_cells == 0 || map.width() == 0) return map;
   const int width = map.width(), height = map.height();
   if (earlier.width() != width || earlier.height() != height) return inflate(map, radius_cells);
   int x0 = 0, y0 = 0, x1 = -1, y1 = -1;

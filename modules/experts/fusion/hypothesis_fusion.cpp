@@ -40,26 +40,13 @@ HypothesisFusion::Hypothesis& HypothesisFusion::hypothesisFor(const std::string&
   return hypotheses_.back();
 }
 
-const std::unordered_map<std::string, std::size_t>& HypothesisFusion::sceneIndex(const scene_objects_t& scene) {
-  bool same = scene_ids_.size() == scene.objects.size();
-  for (std::size_t i = 0; same && i < scene_ids_.size(); ++i) same = scene_ids_[i] == scene.objects[i].id;
-  if (same) return scene_index_;
-  scene_ids_.clear();
-  scene_index_.clear();
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    scene_ids_.push_back(scene.objects[i].id);
-    scene_index_[scene.objects[i].id] = i;  // a repeated id: its last place, as before
-  }
-  return scene_index_;
-}
-
 void HypothesisFusion::update(const TickEvidence& evidence) {
   if (evidence.scene == nullptr) throw std::invalid_argument("fusion needs the scene of the tick");
   const scene_objects_t& scene = *evidence.scene;
   const int64_t utime = scene.utime;
   categories_ = scene.categories;
 
-  const std::unordered_map<std::string, std::size_t>& scene_index = sceneIndex(scene);
+  const auto& scene_index = scene_positions_.of(scene.objects, &scene_object_t::id);
   std::unordered_map<std::string, int> visible_pixels;
   if (evidence.vision != nullptr)
     for (const auto& p : evidence.vision->percepts) visible_pixels[p.object_id] = p.visible_pixels;

@@ -39,6 +39,8 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/visual_percepts_t.hpp>
 
+#include "id_index.hpp"
+
 namespace beft::fusion {
 
 // How the best visual and the best acoustic evidence combine into one
@@ -107,16 +109,11 @@ class HypothesisFusion {
   // Every field of `out` is written.
   void writeMessage(const Hypothesis& h, const std::vector<std::string>& categories, hypothesis_t& out) const;
 
-  // Where each object of the scene is in its list; made again only when the
-  // scene's objects (by id, in order) change.
-  const std::unordered_map<std::string, std::size_t>& sceneIndex(const scene_objects_t& scene);
-
   FusionConfig config_;
   std::vector<std::string> categories_;  // of the latest scene
   std::vector<Hypothesis> hypotheses_;   // only ever appended to
   std::unordered_map<std::string, std::size_t> hypothesis_index_;  // object id -> place in hypotheses_
-  std::vector<std::string> scene_ids_;                             // what scene_index_ was made of
-  std::unordered_map<std::string, std::size_t> scene_index_;
+  expert::IdPositions<scene_object_t> scene_positions_;           // where each object of the scene is in its list
 };
 
 }  // namespace beft::fusion

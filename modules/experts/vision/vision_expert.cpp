@@ -103,7 +103,7 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     // The solids are made again only when the scene's objects change (rarely:
     // hundreds of objects were turned into solids at every tick of a drive).
     const bool scene_changed = solids_.update(*scene);
-    if (scene_changed) scene_index_ = indexOfObjects(*scene);
+    const auto& scene_index = scene_positions_.of(scene->objects, &scene_object_t::id);
     const bool recount = scene_changed || expected_pose_.width == 0 || !samePose(*instance, expected_pose_);
     const camera::SceneGeometry* solids = &solids_.solids();
     if (recount) {
@@ -116,7 +116,7 @@ expert::Outcome VisionExpert::fire(const expert::Firing& firing, expert::Output&
     std::vector<int> visible;
     percepting_.start([&] {
       if (recount) ray_caster_.countExpected(*solids, next_solid, helper_counts);
-      visible = countVisiblePixels(*instance, scene_index_, scene->objects.size());
+      visible = countVisiblePixels(*instance, scene_index, scene->objects.size());
     });
     expert::WaitOnExit perceived(percepting_);  // also when the map throws
     updateMap(*scene, *depth, contact, firing.tick);

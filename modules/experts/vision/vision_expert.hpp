@@ -18,6 +18,7 @@
 #include "expert.hpp"
 #include "scene_input.hpp"
 #include "helper_task.hpp"
+#include "id_index.hpp"
 #include "visual_occlusion.hpp"
 #include "obstacle_mapper.hpp"
 #include "ray_caster.hpp"
@@ -68,7 +69,7 @@ class VisionExpert : public expert::Expert {
   std::vector<int> expected_;          // expected pixels per object for the pose below and solids_
   camera_frame_t expected_pose_{};     // header only: the pixels do not matter to it
   camera::SceneSolids solids_;         // of the scene last fired
-  SceneIndex scene_index_;             // its object ids -> index
+  expert::IdPositions<scene_object_t> scene_positions_;  // where each of its objects is in the list
   expert::SceneInput scene_{*this};
   // Frames arrive compressed: unpacked (or refused, and counted) as they are kept.
   expert::TickInput<camera_frame_t> depth_{*this, channels::kCameraDepth, 4, unpackFrame};

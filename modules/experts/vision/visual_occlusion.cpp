@@ -5,20 +5,17 @@
 #include <string>
 #include <unordered_map>
 
+#include "id_index.hpp"
+
 namespace beft::vision {
 
-SceneIndex indexOfObjects(const scene_objects_t& scene) {
-  SceneIndex index;
-  index.reserve(scene.objects.size());
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) index[scene.objects[i].id] = static_cast<int>(i);
-  return index;
-}
-
 std::vector<int> countVisiblePixels(const camera_frame_t& instance, const scene_objects_t& scene) {
-  return countVisiblePixels(instance, indexOfObjects(scene), scene.objects.size());
+  expert::IdPositions<scene_object_t> positions;
+  return countVisiblePixels(instance, positions.of(scene.objects, &scene_object_t::id), scene.objects.size());
 }
 
-std::vector<int> countVisiblePixels(const camera_frame_t& instance, const SceneIndex& scene_index,
+std::vector<int> countVisiblePixels(const camera_frame_t& instance,
+                                    const std::unordered_map<std::string, std::size_t>& scene_index,
                                     std::size_t object_count) {
   if (instance.encoding != camera_frame_t::ENCODING_INSTANCE16)
     throw std::invalid_argument("instance frame has encoding " + std::to_string(instance.encoding) +
@@ -35,7 +32,7 @@ std::vector<int> countVisiblePixels(const camera_frame_t& instance, const SceneI
   std::vector<int> object_of_value(instance.instance_ids.size() + 1, -1);  // pixel value -> scene index
   for (std::size_t v = 0; v < instance.instance_ids.size(); ++v) {
     const auto it = scene_index.find(instance.instance_ids[v]);
-    if (it != scene_index.end()) object_of_value[v + 1] = it->second;
+    if (it != scene_index.end()) object_of_value[v + 1] = static_cast<int>(it->second);
   }
 
   std::vector<int> count_of_value(object_of_value.size(), 0);

@@ -23,12 +23,10 @@ namespace beft::vision {
 // list; ids not in the scene are ignored.
 std::vector<int> countVisiblePixels(const camera_frame_t& instance, const scene_objects_t& scene);
 
-// Each object's index in scene.objects, by id.
-using SceneIndex = std::unordered_map<std::string, int>;
-SceneIndex indexOfObjects(const scene_objects_t& scene);
-
-// The same with the scene's index made already (object_count objects).
-std::vector<int> countVisiblePixels(const camera_frame_t& instance, const SceneIndex& scene_index,
+// The same with the scene's index made already: each object's place in
+// scene.objects by id (expert::IdPositions), of object_count objects.
+std::vector<int> countVisiblePixels(const camera_frame_t& instance,
+                                    const std::unordered_map<std::string, std::size_t>& scene_index,
                                     std::size_t object_count);
 
 // One percept per object with a visual that the camera's view covers
