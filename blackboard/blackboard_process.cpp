@@ -11,13 +11,13 @@
 #include <beft/run_status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "blackboard/message_decoder.hpp"
-#include "channels.hpp"
-#include "guarded_decode.hpp"
-#include "log.hpp"
-#include "log_reader.hpp"
-#include "run_identity.hpp"
-#include "transport.hpp"
+#include "lib/wire/message_decoder.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "lib/wire/run_identity.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace beft::blackboard {
 

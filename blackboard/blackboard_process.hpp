@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "blackboard/blackboard_service.hpp"
-#include "service.hpp"
+#include "lib/service/service.hpp"
 
 namespace beft::blackboard {
 

@@ -3,9 +3,9 @@
 #include <cstdio>
 
 #include "blackboard/snapshot.hpp"
-#include "channels.hpp"
-#include "message_check.hpp"
-#include "reject_counter.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/message_check.hpp"
+#include "lib/wire/reject_counter.hpp"
 
 namespace beft::blackboard {
 

@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include "channels.hpp"
+#include "lib/common/channels.hpp"
 
 namespace beft::blackboard {
 

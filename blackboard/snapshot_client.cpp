@@ -7,8 +7,8 @@
 #include <beft/bb_query_t.hpp>
 
 #include "blackboard/snapshot.hpp"
-#include "channels.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::blackboard {
 namespace {

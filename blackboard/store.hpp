@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "blackboard/channel_history.hpp"
+#include "lib/wire/channel_history.hpp"
 
 namespace beft::blackboard {
 

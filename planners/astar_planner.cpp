@@ -1,7 +1,7 @@
-#include "astar_planner.hpp"
+#include "planners/astar_planner.hpp"
 
-#include "octile_search.hpp"
-#include "path_tools.hpp"
+#include "planners/octile_search.hpp"
+#include "planners/path_tools.hpp"
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 // optimal grid baseline. Start and goal are joined to their cells' centres.
 #pragma once
 
-#include "planner.hpp"
+#include "planners/planner.hpp"
 
 namespace beft::planners {
 

@@ -1,4 +1,4 @@
-#include "grid_map.hpp"
+#include "planners/grid_map.hpp"
 
 #include <opencv2/imgproc.hpp>
 

@@ -1,4 +1,4 @@
-#include "movingai.hpp"
+#include "planners/movingai.hpp"
 
 #include <fstream>
 #include <sstream>

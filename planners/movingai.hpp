@@ -2,7 +2,7 @@
 // `.map.scen` query lists. x is the column, y the row, row 0 the top row.
 #pragma once
 
-#include "grid_map.hpp"
+#include "planners/grid_map.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -1,4 +1,4 @@
-#include "octile_search.hpp"
+#include "planners/octile_search.hpp"
 
 #include <algorithm>
 #include <cmath>

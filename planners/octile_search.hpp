@@ -3,8 +3,8 @@
 // cutting): the rule of MovingAI's octile benchmarks.
 #pragma once
 
-#include "grid_map.hpp"
-#include "planner.hpp"
+#include "planners/grid_map.hpp"
+#include "planners/planner.hpp"
 
 #include <cstdint>
 #include <limits>

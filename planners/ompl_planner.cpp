@@ -1,6 +1,6 @@
-#include "ompl_planner.hpp"
+#include "planners/ompl_planner.hpp"
 
-#include "ompl_space.hpp"
+#include "planners/ompl_space.hpp"
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>

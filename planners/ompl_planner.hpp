@@ -9,7 +9,7 @@
 // seedOmpl() at start-up for reproducible sampling.
 #pragma once
 
-#include "planner.hpp"
+#include "planners/planner.hpp"
 
 #include <ompl/base/Planner.h>
 #include <ompl/base/SpaceInformation.h>

@@ -1,6 +1,6 @@
-#include "ompl_potential_field.hpp"
+#include "planners/ompl_potential_field.hpp"
 
-#include "ompl_space.hpp"
+#include "planners/ompl_space.hpp"
 
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/goals/GoalSampleableRegion.h>

@@ -5,8 +5,8 @@
 // uses the next seed, so repeated benchmark runs see different particles.
 #pragma once
 
-#include "planning_map.hpp"
-#include "potential_field_planner.hpp"
+#include "planners/planning_map.hpp"
+#include "planners/potential_field_planner.hpp"
 
 #include <ompl/base/Planner.h>
 

@@ -1,4 +1,4 @@
-#include "ompl_space.hpp"
+#include "planners/ompl_space.hpp"
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 

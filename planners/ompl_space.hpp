@@ -4,8 +4,8 @@
 // planners see.
 #pragma once
 
-#include "geometry.hpp"
-#include "planning_map.hpp"
+#include "planners/geometry.hpp"
+#include "planners/planning_map.hpp"
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/SpaceInformation.h>

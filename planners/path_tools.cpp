@@ -1,4 +1,4 @@
-#include "path_tools.hpp"
+#include "planners/path_tools.hpp"
 
 #include <algorithm>
 #include <cmath>

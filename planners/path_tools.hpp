@@ -3,8 +3,8 @@
 // figures (length, turning, clearance).
 #pragma once
 
-#include "geometry.hpp"
-#include "planning_map.hpp"
+#include "planners/geometry.hpp"
+#include "planners/planning_map.hpp"
 
 #include <vector>
 

@@ -1,6 +1,6 @@
-#include "planner.hpp"
+#include "planners/planner.hpp"
 
-#include "path_tools.hpp"
+#include "planners/path_tools.hpp"
 
 #include <stdexcept>
 

@@ -4,8 +4,8 @@
 // waypoints (tightenPath) are done here, identically for every planner.
 #pragma once
 
-#include "geometry.hpp"
-#include "planning_map.hpp"
+#include "planners/geometry.hpp"
+#include "planners/planning_map.hpp"
 
 #include <chrono>
 #include <cstdint>

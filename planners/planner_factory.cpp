@@ -1,7 +1,7 @@
-#include "planner_factory.hpp"
+#include "planners/planner_factory.hpp"
 
-#include "astar_planner.hpp"
-#include "ompl_planner.hpp"
+#include "planners/astar_planner.hpp"
+#include "planners/ompl_planner.hpp"
 
 #include <stdexcept>
 

@@ -6,8 +6,8 @@
 //                          ompl:InformedRRTstar, ompl:BITstar, ompl:PRMstar
 #pragma once
 
-#include "planner.hpp"
-#include "potential_field_planner.hpp"
+#include "planners/planner.hpp"
+#include "planners/potential_field_planner.hpp"
 
 #include <memory>
 #include <string>

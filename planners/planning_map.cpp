@@ -1,4 +1,4 @@
-#include "planning_map.hpp"
+#include "planners/planning_map.hpp"
 
 #include <opencv2/imgproc.hpp>
 

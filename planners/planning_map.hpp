@@ -10,8 +10,8 @@
 // the robot's disc clear of every obstacle cell.
 #pragma once
 
-#include "geometry.hpp"
-#include "grid_map.hpp"
+#include "planners/geometry.hpp"
+#include "planners/grid_map.hpp"
 
 #include <opencv2/core.hpp>
 

@@ -1,6 +1,6 @@
-#include "potential_field_planner.hpp"
+#include "planners/potential_field_planner.hpp"
 
-#include "path_tools.hpp"
+#include "planners/path_tools.hpp"
 
 #include <algorithm>
 #include <array>

@@ -32,10 +32,10 @@
 //    reaches a reachable goal.
 #pragma once
 
-#include "declared_parameters.hpp"
-#include "octile_search.hpp"
-#include "planner.hpp"
-#include "potential_fields.hpp"
+#include "lib/common/declared_parameters.hpp"
+#include "planners/octile_search.hpp"
+#include "planners/planner.hpp"
+#include "planners/potential_fields.hpp"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "potential_fields.hpp"
+#include "planners/potential_fields.hpp"
 
 #include <opencv2/imgproc.hpp>
 

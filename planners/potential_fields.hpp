@@ -2,9 +2,9 @@
 // M_D and M_T, as OpenCV matrices over the grid (one value per cell centre).
 #pragma once
 
-#include "geometry.hpp"
-#include "grid_map.hpp"
-#include "octile_search.hpp"
+#include "planners/geometry.hpp"
+#include "planners/grid_map.hpp"
+#include "planners/octile_search.hpp"
 
 #include <opencv2/core.hpp>
 

@@ -1,4 +1,4 @@
-#include "render.hpp"
+#include "planners/render.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>

@@ -3,8 +3,8 @@
 // its waypoints and their headings, start green, goal blue.
 #pragma once
 
-#include "geometry.hpp"
-#include "planning_map.hpp"
+#include "planners/geometry.hpp"
+#include "planners/planning_map.hpp"
 
 #include <opencv2/core.hpp>
 

@@ -1,4 +1,4 @@
-#include "synthetic_maps.hpp"
+#include "planners/synthetic_maps.hpp"
 
 namespace beft::planners {
 

@@ -4,8 +4,8 @@
 // whose teeth each form a small trap. Cell units, point robot.
 #pragma once
 
-#include "geometry.hpp"
-#include "grid_map.hpp"
+#include "planners/geometry.hpp"
+#include "planners/grid_map.hpp"
 
 #include <string>
 #include <utility>

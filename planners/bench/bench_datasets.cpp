@@ -1,10 +1,10 @@
-#include "bench_datasets.hpp"
+#include "planners/bench/bench_datasets.hpp"
 
-#include "load_scenario.hpp"
-#include "movingai.hpp"
-#include "octile_search.hpp"
-#include "scenario_raster.hpp"
-#include "synthetic_maps.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "planners/movingai.hpp"
+#include "planners/octile_search.hpp"
+#include "planners/bench/scenario_raster.hpp"
+#include "planners/synthetic_maps.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,8 +3,8 @@
 // synthetic traps.
 #pragma once
 
-#include "geometry.hpp"
-#include "planning_map.hpp"
+#include "planners/geometry.hpp"
+#include "planners/planning_map.hpp"
 
 #include <cstdint>
 #include <memory>

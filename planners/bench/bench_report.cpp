@@ -1,4 +1,4 @@
-#include "bench_report.hpp"
+#include "planners/bench/bench_report.hpp"
 
 #include <opencv2/imgproc.hpp>
 

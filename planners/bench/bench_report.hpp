@@ -2,7 +2,7 @@
 // ratio against planning time per planner (drawn with OpenCV).
 #pragma once
 
-#include "bench_stats.hpp"
+#include "planners/bench/bench_stats.hpp"
 
 #include <opencv2/core.hpp>
 

@@ -1,4 +1,4 @@
-#include "bench_stats.hpp"
+#include "planners/bench/bench_stats.hpp"
 
 #include <algorithm>
 #include <cmath>

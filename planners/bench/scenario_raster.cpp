@@ -1,6 +1,6 @@
-#include "scenario_raster.hpp"
+#include "planners/bench/scenario_raster.hpp"
 
-#include "footprint.hpp"
+#include "lib/scenario/footprint.hpp"
 
 #include <algorithm>
 #include <cmath>

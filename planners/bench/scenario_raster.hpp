@@ -3,9 +3,9 @@
 // resolution, as the camera would eventually map it.
 #pragma once
 
-#include "geometry.hpp"
-#include "grid_map.hpp"
-#include "scenario.hpp"
+#include "planners/geometry.hpp"
+#include "planners/grid_map.hpp"
+#include "lib/scenario/scenario.hpp"
 
 #include <string>
 

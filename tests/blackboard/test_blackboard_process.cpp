@@ -26,7 +26,7 @@
 #include <beft/robot_state_t.hpp>
 
 #include "blackboard/snapshot_client.hpp"
-#include "lcm_url.hpp"
+#include "lib/common/lcm_url.hpp"
 
 extern char** environ;
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "blackboard/channel_history.hpp"
+#include "lib/wire/channel_history.hpp"
 
 using beft::blackboard::ChannelHistory;
 

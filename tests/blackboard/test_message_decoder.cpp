@@ -15,8 +15,8 @@
 #include <beft_test/sample_t.hpp>
 
 #include "all_beft_types.hpp"
-#include "blackboard/message_decoder.hpp"
-#include "lcm_schema.hpp"
+#include "lib/wire/message_decoder.hpp"
+#include "lib/wire/lcm_schema.hpp"
 
 using namespace beft::blackboard;
 using namespace beft::wire;

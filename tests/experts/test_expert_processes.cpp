@@ -27,15 +27,15 @@
 #include <beft/visual_percepts_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "camera_messages.hpp"
-#include "channels.hpp"
-#include "geometry_estimator.hpp"
-#include "lcm_url.hpp"
-#include "model.hpp"
-#include "obstacle_map_codec.hpp"
-#include "ray_caster.hpp"
-#include "scene_builders.hpp"
-#include "scene_geometry.hpp"
+#include "lib/camera/camera_messages.hpp"
+#include "lib/common/channels.hpp"
+#include "experts/geometry/geometry_estimator.hpp"
+#include "lib/common/lcm_url.hpp"
+#include "lib/model/model.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
+#include "lib/scene/ray_caster.hpp"
+#include "tests/experts/support/scene_builders.hpp"
+#include "lib/scene/scene_geometry.hpp"
 
 extern char** environ;
 

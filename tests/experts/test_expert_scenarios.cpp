@@ -9,11 +9,11 @@
 #include <beft/hypotheses_t.hpp>
 #include <beft/obstacle_map_t.hpp>
 
-#include "channels.hpp"
-#include "expert_chain.hpp"
-#include "load_scenario.hpp"
-#include "obstacle_map_codec.hpp"
-#include "world_simulation.hpp"
+#include "lib/common/channels.hpp"
+#include "tools/bench_experts/expert_chain.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
+#include "sim/world/world_simulation.hpp"
 
 using namespace beft;
 

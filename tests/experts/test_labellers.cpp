@@ -5,10 +5,10 @@
 #include <cmath>
 #include <random>
 
-#include "acoustic_labeller.hpp"
-#include "model.hpp"
-#include "scene_builders.hpp"
-#include "visual_labeller.hpp"
+#include "experts/acoustic_labels/acoustic_labeller.hpp"
+#include "lib/model/model.hpp"
+#include "tests/experts/support/scene_builders.hpp"
+#include "experts/visual_labels/visual_labeller.hpp"
 
 using namespace beft;
 

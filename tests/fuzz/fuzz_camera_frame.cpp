@@ -9,9 +9,9 @@
 
 #include <beft/camera_frame_t.hpp>
 
-#include "camera_messages.hpp"
-#include "frame_decoding.hpp"
-#include "guarded_decode.hpp"
+#include "lib/camera/camera_messages.hpp"
+#include "lib/camera/frame_decoding.hpp"
+#include "lib/wire/guarded_decode.hpp"
 
 namespace {
 

@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "blackboard/message_decoder.hpp"
+#include "lib/wire/message_decoder.hpp"
 #include "every_beft_type.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {

@@ -1,8 +1,8 @@
 // The log reader on any bytes, every event then through the guard: it ends,
 // without throwing, whatever the file holds.
-#include "fuzz_input.hpp"
-#include "log_reader.hpp"
-#include "message_check.hpp"
+#include "tests/fuzz/fuzz_input.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "lib/wire/message_check.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   beft::fuzz::InputFile file(data, size, ".lcmlog");

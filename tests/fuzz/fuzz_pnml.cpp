@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "net_analysis.hpp"
-#include "pnml_reader.hpp"
+#include "lib/petri/net_analysis.hpp"
+#include "lib/petri/pnml_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -3,8 +3,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "fuzz_input.hpp"
-#include "load_scenario.hpp"
+#include "tests/fuzz/fuzz_input.hpp"
+#include "lib/scenario/load_scenario.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   beft::fuzz::InputFile file(data, size, ".xml");

@@ -2,8 +2,8 @@
 // PlanningMap's row scan), the shared maps folder, and small maps.
 #pragma once
 
-#include "geometry.hpp"
-#include "grid_map.hpp"
+#include "planners/geometry.hpp"
+#include "planners/grid_map.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
 // Every planner, on the same maps, returns a path that is collision-free on
 // the inflated map, checked cell by cell (not with the planners' own checker).
-#include "movingai.hpp"
-#include "ompl_planner.hpp"
-#include "path_tools.hpp"
-#include "planner_factory.hpp"
-#include "planner_test_support.hpp"
-#include "synthetic_maps.hpp"
+#include "planners/movingai.hpp"
+#include "planners/ompl_planner.hpp"
+#include "planners/path_tools.hpp"
+#include "planners/planner_factory.hpp"
+#include "tests/planners/planner_test_support.hpp"
+#include "planners/synthetic_maps.hpp"
 
 #include <gtest/gtest.h>
 

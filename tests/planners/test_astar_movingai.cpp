@@ -1,7 +1,7 @@
-#include "astar_planner.hpp"
-#include "movingai.hpp"
-#include "octile_search.hpp"
-#include "planner_test_support.hpp"
+#include "planners/astar_planner.hpp"
+#include "planners/movingai.hpp"
+#include "planners/octile_search.hpp"
+#include "tests/planners/planner_test_support.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-#include "bench_datasets.hpp"
-#include "bench_report.hpp"
-#include "bench_stats.hpp"
-#include "scenario_raster.hpp"
+#include "planners/bench/bench_datasets.hpp"
+#include "planners/bench/bench_report.hpp"
+#include "planners/bench/bench_stats.hpp"
+#include "planners/bench/scenario_raster.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // The potential-field planner as an ompl::base::Planner: OMPL's SimpleSetup
 // and benchmark tooling run it beside OMPL's own planners.
-#include "ompl_potential_field.hpp"
-#include "ompl_space.hpp"
-#include "planner_test_support.hpp"
-#include "synthetic_maps.hpp"
+#include "planners/ompl_potential_field.hpp"
+#include "planners/ompl_space.hpp"
+#include "tests/planners/planner_test_support.hpp"
+#include "planners/synthetic_maps.hpp"
 
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/geometric/SimpleSetup.h>

@@ -1,7 +1,7 @@
 // beft-plan as users run it: JSON output on a MovingAI map, and clear errors
 // with a non-zero exit for bad input.
-#include "movingai.hpp"
-#include "planner_test_support.hpp"
+#include "planners/movingai.hpp"
+#include "tests/planners/planner_test_support.hpp"
 
 #include <nlohmann/json.hpp>
 

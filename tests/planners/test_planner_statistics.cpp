@@ -1,10 +1,10 @@
 // Statistical tests in the style of OMPL's planner tests: many seeds per
 // planner, then assertions on the success rate and the mean path length
 // relative to the octile optimum.
-#include "octile_search.hpp"
-#include "planner_factory.hpp"
-#include "planner_test_support.hpp"
-#include "synthetic_maps.hpp"
+#include "planners/octile_search.hpp"
+#include "planners/planner_factory.hpp"
+#include "tests/planners/planner_test_support.hpp"
+#include "planners/synthetic_maps.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "path_tools.hpp"
-#include "planner_test_support.hpp"
-#include "planning_map.hpp"
+#include "planners/path_tools.hpp"
+#include "tests/planners/planner_test_support.hpp"
+#include "planners/planning_map.hpp"
 
 #include <gtest/gtest.h>
 

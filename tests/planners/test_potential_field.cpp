@@ -1,7 +1,7 @@
-#include "octile_search.hpp"
-#include "planner_test_support.hpp"
-#include "potential_field_planner.hpp"
-#include "synthetic_maps.hpp"
+#include "planners/octile_search.hpp"
+#include "tests/planners/planner_test_support.hpp"
+#include "planners/potential_field_planner.hpp"
+#include "planners/synthetic_maps.hpp"
 
 #include <gtest/gtest.h>
 

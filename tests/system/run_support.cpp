@@ -1,7 +1,7 @@
-#include "run_support.hpp"
+#include "tests/system/run_support.hpp"
 
-#include "obstacle_map_changes.hpp"
-#include "obstacle_map_codec.hpp"
+#include "lib/wire/obstacle_map_changes.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -19,13 +19,13 @@
 
 #include <beft/camera_frame_t.hpp>
 
-#include "channels.hpp"
-#include "frame_decoding.hpp"
-#include "guarded_decode.hpp"
-#include "hypothesis_changes.hpp"
-#include "log_reader.hpp"
-#include "message_check.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/camera/frame_decoding.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/wire/hypothesis_changes.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "lib/wire/message_check.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::system_test {
 

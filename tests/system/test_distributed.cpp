@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "run_support.hpp"
+#include "tests/system/run_support.hpp"
 
 using namespace beft::system_test;
 

@@ -18,7 +18,7 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/scene_version_t.hpp>
 
-#include "run_support.hpp"
+#include "tests/system/run_support.hpp"
 
 using namespace beft::system_test;
 

@@ -16,8 +16,8 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/task_command_t.hpp>
 
-#include "model.hpp"
-#include "run_support.hpp"
+#include "lib/model/model.hpp"
+#include "tests/system/run_support.hpp"
 
 using namespace beft::system_test;
 

@@ -23,10 +23,10 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/visual_percepts_t.hpp>
 
-#include "frame_decoding.hpp"
-#include "model.hpp"
-#include "run_identity.hpp"
-#include "run_support.hpp"
+#include "lib/camera/frame_decoding.hpp"
+#include "lib/model/model.hpp"
+#include "lib/wire/run_identity.hpp"
+#include "tests/system/run_support.hpp"
 
 using namespace beft::system_test;
 

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "run_support.hpp"
+#include "tests/system/run_support.hpp"
 
 using namespace beft::system_test;
 

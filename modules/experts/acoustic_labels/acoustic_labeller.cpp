@@ -1,4 +1,4 @@
-#include "acoustic_labeller.hpp"
+#include "experts/acoustic_labels/acoustic_labeller.hpp"
 
 namespace beft::acoustic_labels {
 

@@ -13,8 +13,8 @@
 #include <beft/labels_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
-#include "id_index.hpp"
-#include "model.hpp"
+#include "lib/expert/id_index.hpp"
+#include "lib/model/model.hpp"
 
 namespace beft::acoustic_labels {
 

@@ -1,7 +1,7 @@
-#include "acoustic_labels_expert.hpp"
+#include "experts/acoustic_labels/acoustic_labels_expert.hpp"
 
-#include "channels.hpp"
-#include "log.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/common/log.hpp"
 
 namespace beft::acoustic_labels {
 

@@ -6,10 +6,10 @@
 #include <beft/geometry_percepts_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
-#include "acoustic_labeller.hpp"
-#include "expert.hpp"
-#include "scene_input.hpp"
-#include "model.hpp"
+#include "experts/acoustic_labels/acoustic_labeller.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/expert/scene_input.hpp"
+#include "lib/model/model.hpp"
 
 namespace beft::acoustic_labels {
 

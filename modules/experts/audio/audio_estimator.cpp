@@ -1,9 +1,9 @@
-#include "audio_estimator.hpp"
+#include "experts/audio/audio_estimator.hpp"
 
 #include <atomic>
 
-#include "acoustic_occlusion.hpp"
-#include "object_geometry.hpp"
+#include "lib/scene/acoustic_occlusion.hpp"
+#include "lib/scene/object_geometry.hpp"
 
 namespace beft::audio {
 

@@ -8,10 +8,10 @@
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
-#include "helper_task.hpp"
-#include "model.hpp"
-#include "position_noise.hpp"
-#include "scene_geometry.hpp"
+#include "lib/expert/helper_task.hpp"
+#include "lib/model/model.hpp"
+#include "experts/audio/position_noise.hpp"
+#include "lib/scene/scene_geometry.hpp"
 
 namespace beft::audio {
 

@@ -1,15 +1,15 @@
-#include "audio_expert.hpp"
+#include "experts/audio/audio_expert.hpp"
 
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
 
-#include "channels.hpp"
-#include "heard_percepts.hpp"
-#include "log.hpp"
-#include "object_geometry.hpp"
-#include "task_messages.hpp"
+#include "lib/common/channels.hpp"
+#include "experts/audio/heard_percepts.hpp"
+#include "lib/common/log.hpp"
+#include "lib/scene/object_geometry.hpp"
+#include "lib/task/task_messages.hpp"
 
 namespace beft::audio {
 

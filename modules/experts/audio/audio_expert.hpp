@@ -13,15 +13,15 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/task_command_t.hpp>
 
-#include "audio_estimator.hpp"
-#include "band_signature.hpp"
-#include "block_localiser.hpp"
-#include "expert.hpp"
-#include "scene_input.hpp"
-#include "heard_sources.hpp"
-#include "helper_task.hpp"
-#include "scene_solids.hpp"
-#include "sound_bank.hpp"
+#include "experts/audio/audio_estimator.hpp"
+#include "lib/hearing/band_signature.hpp"
+#include "lib/hearing/block_localiser.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/expert/scene_input.hpp"
+#include "experts/audio/heard_sources.hpp"
+#include "lib/expert/helper_task.hpp"
+#include "lib/scene/scene_solids.hpp"
+#include "lib/hearing/sound_bank.hpp"
 
 namespace beft::audio {
 

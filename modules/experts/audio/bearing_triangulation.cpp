@@ -1,4 +1,4 @@
-#include "bearing_triangulation.hpp"
+#include "experts/audio/bearing_triangulation.hpp"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
-#include "heard_percepts.hpp"
+#include "experts/audio/heard_percepts.hpp"
 
-#include "acoustic_occlusion.hpp"
-#include "object_geometry.hpp"
+#include "lib/scene/acoustic_occlusion.hpp"
+#include "lib/scene/object_geometry.hpp"
 
 namespace beft::audio {
 

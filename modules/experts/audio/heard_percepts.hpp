@@ -10,8 +10,8 @@
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
-#include "heard_sources.hpp"
-#include "scene_geometry.hpp"
+#include "experts/audio/heard_sources.hpp"
+#include "lib/scene/scene_geometry.hpp"
 
 namespace beft::audio {
 

@@ -1,4 +1,4 @@
-#include "heard_sources.hpp"
+#include "experts/audio/heard_sources.hpp"
 
 #include <algorithm>
 #include <array>

@@ -28,10 +28,10 @@
 #include <Eigen/Core>
 #include <beft/binaural_block_t.hpp>
 
-#include "azimuth_posterior.hpp"
-#include "band_signature.hpp"
-#include "bearing_triangulation.hpp"
-#include "block_localiser.hpp"
+#include "lib/hearing/azimuth_posterior.hpp"
+#include "lib/hearing/band_signature.hpp"
+#include "experts/audio/bearing_triangulation.hpp"
+#include "lib/hearing/block_localiser.hpp"
 
 namespace beft::audio {
 

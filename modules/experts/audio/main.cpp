@@ -1,6 +1,6 @@
 // beft-audio: the low-level audio expert process (see --help).
-#include "audio_expert.hpp"
-#include "run_expert.hpp"
+#include "experts/audio/audio_expert.hpp"
+#include "lib/expert/run_expert.hpp"
 
 int main(int argc, char** argv) {
   beft::audio::AudioExpert expert;

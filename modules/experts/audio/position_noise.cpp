@@ -1,4 +1,4 @@
-#include "position_noise.hpp"
+#include "experts/audio/position_noise.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "dw_expert.hpp"
+#include "experts/dw/dw_expert.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -8,11 +8,11 @@
 #include <beft/dynamic_weights_t.hpp>
 #include <beft/task_command_t.hpp>
 
-#include "channels.hpp"
-#include "log.hpp"
-#include "model.hpp"
-#include "task.hpp"
-#include "task_messages.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/common/log.hpp"
+#include "lib/model/model.hpp"
+#include "lib/task/task.hpp"
+#include "lib/task/task_messages.hpp"
 
 namespace beft::dw {
 

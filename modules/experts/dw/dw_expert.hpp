@@ -17,9 +17,9 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/task_stack_t.hpp>
 
-#include "dynamic_weighting.hpp"
-#include "expert.hpp"
-#include "scene_input.hpp"
+#include "experts/dw/dynamic_weighting.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/expert/scene_input.hpp"
 
 namespace beft::dw {
 

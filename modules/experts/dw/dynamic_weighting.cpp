@@ -1,4 +1,4 @@
-#include "dynamic_weighting.hpp"
+#include "experts/dw/dynamic_weighting.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "model.hpp"
+#include "lib/model/model.hpp"
 
 namespace beft::dw {
 

@@ -1,6 +1,6 @@
 // beft-dw: the dynamic-weighting expert process (see --help).
-#include "dw_expert.hpp"
-#include "run_expert.hpp"
+#include "experts/dw/dw_expert.hpp"
+#include "lib/expert/run_expert.hpp"
 
 int main(int argc, char** argv) {
   beft::dw::DwExpert expert;

@@ -1,4 +1,4 @@
-#include "exploration_expert.hpp"
+#include "experts/exploration/exploration_expert.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <beft/run_status_t.hpp>
 #include <beft/task_t.hpp>
 
-#include "channels.hpp"
-#include "log.hpp"
-#include "obstacle_map_codec.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
 
 namespace beft::exploration {
 namespace {

@@ -18,11 +18,11 @@
 #include <beft/task_command_t.hpp>
 #include <beft/task_stack_t.hpp>
 
-#include "explorer.hpp"
-#include "expert.hpp"
-#include "hypotheses_input.hpp"
-#include "obstacle_map_input.hpp"
-#include "scene_input.hpp"
+#include "experts/exploration/explorer.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/expert/hypotheses_input.hpp"
+#include "lib/expert/obstacle_map_input.hpp"
+#include "lib/expert/scene_input.hpp"
 
 namespace beft::exploration {
 

@@ -1,4 +1,4 @@
-#include "explorer.hpp"
+#include "experts/exploration/explorer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <optional>
 
-#include "cheapest_first.hpp"
+#include "experts/exploration/cheapest_first.hpp"
 
 namespace beft::exploration {
 namespace {

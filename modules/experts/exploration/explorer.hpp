@@ -33,9 +33,9 @@
 #include <string>
 #include <vector>
 
-#include "frontiers.hpp"
-#include "known_map.hpp"
-#include "viewpoints.hpp"
+#include "experts/exploration/frontiers.hpp"
+#include "experts/exploration/known_map.hpp"
+#include "experts/exploration/viewpoints.hpp"
 
 namespace beft::exploration {
 

@@ -1,4 +1,4 @@
-#include "frontiers.hpp"
+#include "experts/exploration/frontiers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <beft/obstacle_map_t.hpp>
 
-#include "cheapest_first.hpp"
+#include "experts/exploration/cheapest_first.hpp"
 
 namespace beft::exploration {
 namespace {

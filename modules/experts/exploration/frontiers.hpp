@@ -11,8 +11,8 @@
 #include <optional>
 #include <vector>
 
-#include "known_map.hpp"
-#include "viewpoints.hpp"
+#include "experts/exploration/known_map.hpp"
+#include "experts/exploration/viewpoints.hpp"
 
 namespace beft::exploration {
 

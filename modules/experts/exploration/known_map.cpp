@@ -1,4 +1,4 @@
-#include "known_map.hpp"
+#include "experts/exploration/known_map.hpp"
 
 #include <algorithm>
 #include <cmath>

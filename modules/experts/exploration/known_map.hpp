@@ -9,9 +9,9 @@
 #include <optional>
 #include <vector>
 
-#include "grid_map.hpp"
-#include "obstacle_map_codec.hpp"
-#include "octile_search.hpp"
+#include "planners/grid_map.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
+#include "planners/octile_search.hpp"
 
 namespace beft::exploration {
 

@@ -1,6 +1,6 @@
 // beft-exploration: the exploration expert process (see --help).
-#include "exploration_expert.hpp"
-#include "run_expert.hpp"
+#include "experts/exploration/exploration_expert.hpp"
+#include "lib/expert/run_expert.hpp"
 
 int main(int argc, char** argv) {
   beft::exploration::ExplorationExpert expert;

@@ -1,4 +1,4 @@
-#include "viewpoints.hpp"
+#include "experts/exploration/viewpoints.hpp"
 
 #include <algorithm>
 #include <cmath>

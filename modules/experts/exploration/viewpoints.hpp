@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "known_map.hpp"
+#include "experts/exploration/known_map.hpp"
 
 namespace beft::exploration {
 

@@ -1,10 +1,10 @@
-#include "fusion_expert.hpp"
+#include "experts/fusion/fusion_expert.hpp"
 
 #include <stdexcept>
 
-#include "channels.hpp"
-#include "hypothesis_changes.hpp"
-#include "log.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/hypothesis_changes.hpp"
+#include "lib/common/log.hpp"
 
 namespace beft::fusion {
 

@@ -16,9 +16,9 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/visual_percepts_t.hpp>
 
-#include "expert.hpp"
-#include "scene_input.hpp"
-#include "hypothesis_fusion.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/expert/scene_input.hpp"
+#include "experts/fusion/hypothesis_fusion.hpp"
 
 namespace beft::fusion {
 

@@ -1,4 +1,4 @@
-#include "hypothesis_fusion.hpp"
+#include "experts/fusion/hypothesis_fusion.hpp"
 
 #include <algorithm>
 #include <array>

@@ -39,7 +39,7 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/visual_percepts_t.hpp>
 
-#include "id_index.hpp"
+#include "lib/expert/id_index.hpp"
 
 namespace beft::fusion {
 

@@ -1,6 +1,6 @@
 // beft-fusion: the high-level fusion expert process (see --help).
-#include "fusion_expert.hpp"
-#include "run_expert.hpp"
+#include "experts/fusion/fusion_expert.hpp"
+#include "lib/expert/run_expert.hpp"
 
 int main(int argc, char** argv) {
   beft::fusion::FusionExpert expert;

@@ -1,6 +1,6 @@
-#include "geometry_estimator.hpp"
+#include "experts/geometry/geometry_estimator.hpp"
 
-#include "object_geometry.hpp"
+#include "lib/scene/object_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>

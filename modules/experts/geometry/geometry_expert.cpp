@@ -1,7 +1,7 @@
-#include "geometry_expert.hpp"
+#include "experts/geometry/geometry_expert.hpp"
 
-#include "channels.hpp"
-#include "geometry_estimator.hpp"
+#include "lib/common/channels.hpp"
+#include "experts/geometry/geometry_estimator.hpp"
 
 namespace beft::geometry {
 

@@ -5,8 +5,8 @@
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
-#include "expert.hpp"
-#include "scene_input.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/expert/scene_input.hpp"
 
 namespace beft::geometry {
 

@@ -1,6 +1,6 @@
 // beft-geometry: the low-level geometry expert process (see --help).
-#include "geometry_expert.hpp"
-#include "run_expert.hpp"
+#include "experts/geometry/geometry_expert.hpp"
+#include "lib/expert/run_expert.hpp"
 
 int main(int argc, char** argv) {
   beft::geometry::GeometryExpert expert;

@@ -1,10 +1,10 @@
-#include "executor.hpp"
+#include "experts/tasks/executor.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "model.hpp"
+#include "lib/model/model.hpp"
 
 namespace beft::tasks {
 

@@ -23,8 +23,8 @@
 #include <beft/robot_command_t.hpp>
 #include <beft/robot_state_t.hpp>
 
-#include "obstacle_map_codec.hpp"
-#include "task_stack.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
+#include "lib/task/task_stack.hpp"
 
 namespace beft::tasks {
 

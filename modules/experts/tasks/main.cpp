@@ -1,6 +1,6 @@
 // beft-tasks: the task stack and executor process (see --help).
-#include "run_expert.hpp"
-#include "tasks_expert.hpp"
+#include "lib/expert/run_expert.hpp"
+#include "experts/tasks/tasks_expert.hpp"
 
 int main(int argc, char** argv) {
   beft::tasks::TasksExpert expert;

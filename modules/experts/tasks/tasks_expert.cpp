@@ -1,13 +1,13 @@
-#include "tasks_expert.hpp"
+#include "experts/tasks/tasks_expert.hpp"
 
 #include <cmath>
 
 #include <beft/task_events_t.hpp>
 #include <beft/task_stack_t.hpp>
 
-#include "channels.hpp"
-#include "log.hpp"
-#include "task_messages.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/common/log.hpp"
+#include "lib/task/task_messages.hpp"
 
 namespace beft::tasks {
 

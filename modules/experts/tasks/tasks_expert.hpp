@@ -18,11 +18,11 @@
 #include <beft/robot_state_t.hpp>
 #include <beft/task_command_t.hpp>
 
-#include "executor.hpp"
-#include "expert.hpp"
-#include "hypotheses_input.hpp"
-#include "obstacle_map_input.hpp"
-#include "task_stack.hpp"
+#include "experts/tasks/executor.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/expert/hypotheses_input.hpp"
+#include "lib/expert/obstacle_map_input.hpp"
+#include "lib/task/task_stack.hpp"
 
 namespace beft::tasks {
 

@@ -1,9 +1,9 @@
-#include "depth_rays.hpp"
+#include "experts/vision/depth_rays.hpp"
 
 #include <stdexcept>
 #include <string>
 
-#include "camera_model.hpp"
+#include "lib/scene/camera_model.hpp"
 
 namespace beft::vision {
 

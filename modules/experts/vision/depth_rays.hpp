@@ -10,8 +10,8 @@
 
 #include <beft/camera_frame_t.hpp>
 
-#include "camera_model.hpp"
-#include "obstacle_mapper.hpp"
+#include "lib/scene/camera_model.hpp"
+#include "experts/vision/obstacle_mapper.hpp"
 
 namespace beft::vision {
 

@@ -1,6 +1,6 @@
 // beft-vision: the low-level vision expert process (see --help).
-#include "run_expert.hpp"
-#include "vision_expert.hpp"
+#include "lib/expert/run_expert.hpp"
+#include "experts/vision/vision_expert.hpp"
 
 int main(int argc, char** argv) {
   beft::vision::VisionExpert expert;

@@ -1,4 +1,4 @@
-#include "obstacle_mapper.hpp"
+#include "experts/vision/obstacle_mapper.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "depth_rays.hpp"
-#include "obstacle_map_codec.hpp"  // beft_obstacle_map
+#include "experts/vision/depth_rays.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"  // beft_obstacle_map
 
 namespace beft::vision {
 

@@ -30,7 +30,7 @@
 #include <beft/obstacle_map_changes_t.hpp>
 #include <beft/obstacle_map_t.hpp>
 
-#include "obstacle_map_changes.hpp"
+#include "lib/wire/obstacle_map_changes.hpp"
 
 namespace beft::vision {
 

@@ -1,4 +1,4 @@
-#include "vision_expert.hpp"
+#include "experts/vision/vision_expert.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -7,14 +7,14 @@
 #include <stdexcept>
 #include <vector>
 
-#include "camera_model.hpp"
-#include "channels.hpp"
-#include "depth_rays.hpp"
-#include "frame_decoding.hpp"
-#include "log.hpp"
-#include "obstacle_map_codec.hpp"
-#include "scene_geometry.hpp"
-#include "visual_occlusion.hpp"
+#include "lib/scene/camera_model.hpp"
+#include "lib/common/channels.hpp"
+#include "experts/vision/depth_rays.hpp"
+#include "lib/camera/frame_decoding.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
+#include "lib/scene/scene_geometry.hpp"
+#include "experts/vision/visual_occlusion.hpp"
 
 namespace beft::vision {
 

@@ -15,14 +15,14 @@
 #include <beft/felt_contacts_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
-#include "expert.hpp"
-#include "scene_input.hpp"
-#include "helper_task.hpp"
-#include "id_index.hpp"
-#include "visual_occlusion.hpp"
-#include "obstacle_mapper.hpp"
-#include "ray_caster.hpp"
-#include "scene_solids.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/expert/scene_input.hpp"
+#include "lib/expert/helper_task.hpp"
+#include "lib/expert/id_index.hpp"
+#include "experts/vision/visual_occlusion.hpp"
+#include "experts/vision/obstacle_mapper.hpp"
+#include "lib/scene/ray_caster.hpp"
+#include "lib/scene/scene_solids.hpp"
 
 namespace beft::vision {
 

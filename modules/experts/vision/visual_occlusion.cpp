@@ -1,11 +1,11 @@
-#include "visual_occlusion.hpp"
+#include "experts/vision/visual_occlusion.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
 
-#include "id_index.hpp"
+#include "lib/expert/id_index.hpp"
 
 namespace beft::vision {
 

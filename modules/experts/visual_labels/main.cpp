@@ -1,6 +1,6 @@
 // beft-visual-labels: the mid-level visual labelling expert process (see --help).
-#include "run_expert.hpp"
-#include "visual_labels_expert.hpp"
+#include "lib/expert/run_expert.hpp"
+#include "experts/visual_labels/visual_labels_expert.hpp"
 
 int main(int argc, char** argv) {
   beft::visual_labels::VisualLabelsExpert expert;

@@ -1,4 +1,4 @@
-#include "visual_labeller.hpp"
+#include "experts/visual_labels/visual_labeller.hpp"
 
 namespace beft::visual_labels {
 

@@ -12,8 +12,8 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/visual_percepts_t.hpp>
 
-#include "id_index.hpp"
-#include "model.hpp"
+#include "lib/expert/id_index.hpp"
+#include "lib/model/model.hpp"
 
 namespace beft::visual_labels {
 

@@ -1,7 +1,7 @@
-#include "visual_labels_expert.hpp"
+#include "experts/visual_labels/visual_labels_expert.hpp"
 
-#include "channels.hpp"
-#include "log.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/common/log.hpp"
 
 namespace beft::visual_labels {
 

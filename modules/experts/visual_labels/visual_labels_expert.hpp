@@ -6,10 +6,10 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/visual_percepts_t.hpp>
 
-#include "expert.hpp"
-#include "visual_labeller.hpp"
-#include "scene_input.hpp"
-#include "model.hpp"
+#include "lib/expert/expert.hpp"
+#include "experts/visual_labels/visual_labeller.hpp"
+#include "lib/expert/scene_input.hpp"
+#include "lib/model/model.hpp"
 
 namespace beft::visual_labels {
 

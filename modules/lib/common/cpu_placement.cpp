@@ -1,4 +1,4 @@
-#include "cpu_placement.hpp"
+#include "lib/common/cpu_placement.hpp"
 
 namespace beft {
 

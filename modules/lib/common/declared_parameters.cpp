@@ -1,4 +1,4 @@
-#include "declared_parameters.hpp"
+#include "lib/common/declared_parameters.hpp"
 
 #include <cmath>
 #include <sstream>

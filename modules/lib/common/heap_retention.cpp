@@ -1,4 +1,4 @@
-#include "heap_retention.hpp"
+#include "lib/common/heap_retention.hpp"
 
 #include <malloc.h>
 

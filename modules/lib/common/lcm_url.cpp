@@ -1,4 +1,4 @@
-#include "lcm_url.hpp"
+#include "lib/common/lcm_url.hpp"
 
 #include <cstdlib>
 

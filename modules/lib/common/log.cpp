@@ -1,4 +1,4 @@
-#include "log.hpp"
+#include "lib/common/log.hpp"
 
 #include <cstdio>
 #include <mutex>

@@ -1,4 +1,4 @@
-#include "own_bin_dir.hpp"
+#include "lib/common/own_bin_dir.hpp"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "quiet_child.hpp"
+#include "lib/common/quiet_child.hpp"
 
 #include <fcntl.h>
 #include <sys/wait.h>

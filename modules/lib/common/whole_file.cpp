@@ -1,4 +1,4 @@
-#include "whole_file.hpp"
+#include "lib/common/whole_file.hpp"
 
 #include <unistd.h>
 

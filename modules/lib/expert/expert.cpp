@@ -1,4 +1,4 @@
-#include "expert.hpp"
+#include "lib/expert/expert.hpp"
 
 namespace beft::expert {
 

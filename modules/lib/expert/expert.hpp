@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "channels.hpp"
-#include "declared_parameters.hpp"
-#include "ports.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/common/declared_parameters.hpp"
+#include "lib/expert/ports.hpp"
 
 namespace beft::expert {
 

@@ -1,12 +1,12 @@
-#include "heartbeat_thread.hpp"
+#include "lib/expert/heartbeat_thread.hpp"
 
 #include <unistd.h>
 
 #include <beft/heartbeat_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "channels.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::expert {
 

@@ -1,4 +1,4 @@
-#include "helper_task.hpp"
+#include "lib/expert/helper_task.hpp"
 
 #include <stdexcept>
 #include <utility>

@@ -11,7 +11,7 @@
 #include <mutex>
 #include <thread>
 
-#include "cpu_placement.hpp"
+#include "lib/common/cpu_placement.hpp"
 
 namespace beft::expert {
 

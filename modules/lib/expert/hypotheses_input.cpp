@@ -1,6 +1,6 @@
-#include "hypotheses_input.hpp"
+#include "lib/expert/hypotheses_input.hpp"
 
-#include "hypothesis_changes.hpp"
+#include "lib/wire/hypothesis_changes.hpp"
 
 namespace beft::expert {
 

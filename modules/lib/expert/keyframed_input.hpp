@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <string>
 
-#include "ports.hpp"
+#include "lib/expert/ports.hpp"
 
 namespace beft::expert {
 

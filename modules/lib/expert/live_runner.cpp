@@ -1,6 +1,6 @@
-#include "live_runner.hpp"
+#include "lib/expert/live_runner.hpp"
 
-#include "blackboard_query.hpp"
+#include "lib/wire/blackboard_query.hpp"
 
 #include <unistd.h>
 
@@ -20,13 +20,13 @@
 #include <beft/run_status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "channels.hpp"
-#include "heartbeat_thread.hpp"
-#include "log_replay.hpp"
-#include "log.hpp"
-#include "control_messages.hpp"
-#include "run_identity.hpp"
-#include "transport.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/expert/heartbeat_thread.hpp"
+#include "lib/expert/log_replay.hpp"
+#include "lib/common/log.hpp"
+#include "lib/transport/control_messages.hpp"
+#include "lib/wire/run_identity.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace beft::expert {
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "expert.hpp"
+#include "lib/expert/expert.hpp"
 
 namespace beft::expert {
 

@@ -1,4 +1,4 @@
-#include "log_replay.hpp"
+#include "lib/expert/log_replay.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -12,11 +12,11 @@
 #include <beft/done_t.hpp>
 #include <beft/fire_t.hpp>
 
-#include "channels.hpp"
-#include "guarded_decode.hpp"
-#include "log_reader.hpp"
-#include "log.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::expert {
 

@@ -12,7 +12,7 @@
 
 #include <beft/done_t.hpp>
 
-#include "expert.hpp"
+#include "lib/expert/expert.hpp"
 
 namespace beft::expert {
 

@@ -1,4 +1,4 @@
-#include "obstacle_map_input.hpp"
+#include "lib/expert/obstacle_map_input.hpp"
 
 namespace beft::expert {
 

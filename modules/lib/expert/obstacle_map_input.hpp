@@ -13,8 +13,8 @@
 #include <cstdint>
 #include <memory>
 
-#include "keyframed_input.hpp"
-#include "obstacle_map_changes.hpp"
+#include "lib/expert/keyframed_input.hpp"
+#include "lib/wire/obstacle_map_changes.hpp"
 
 namespace beft::expert {
 

@@ -16,9 +16,9 @@
 #include <string>
 #include <utility>
 
-#include "channel_history.hpp"
-#include "channels.hpp"
-#include "guarded_decode.hpp"
+#include "lib/wire/channel_history.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/guarded_decode.hpp"
 
 namespace beft::expert {
 

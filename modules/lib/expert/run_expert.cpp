@@ -1,17 +1,17 @@
-#include "run_expert.hpp"
+#include "lib/expert/run_expert.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <sstream>
 
-#include "heap_retention.hpp"
-#include "lcm_url.hpp"
-#include "live_runner.hpp"
-#include "log.hpp"
-#include "log_replay.hpp"
-#include "blackboard/message_decoder.hpp"
-#include "channels.hpp"
+#include "lib/common/heap_retention.hpp"
+#include "lib/common/lcm_url.hpp"
+#include "lib/expert/live_runner.hpp"
+#include "lib/common/log.hpp"
+#include "lib/expert/log_replay.hpp"
+#include "lib/wire/message_decoder.hpp"
+#include "lib/common/channels.hpp"
 
 namespace beft::expert {
 

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "expert.hpp"
+#include "lib/expert/expert.hpp"
 
 namespace CLI {
 class App;

@@ -1,4 +1,4 @@
-#include "scene_input.hpp"
+#include "lib/expert/scene_input.hpp"
 
 namespace beft::expert {
 

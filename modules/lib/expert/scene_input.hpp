@@ -12,7 +12,7 @@
 
 #include <cstdint>
 
-#include "keyframed_input.hpp"
+#include "lib/expert/keyframed_input.hpp"
 
 namespace beft::expert {
 

@@ -3,7 +3,7 @@
 // Templates and localiser are built for one layout; both must use the same.
 #pragma once
 
-#include "frequency_bands.hpp"
+#include "lib/hearing/frequency_bands.hpp"
 
 namespace beft::hearing {
 

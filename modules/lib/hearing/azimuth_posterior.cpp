@@ -1,4 +1,4 @@
-#include "azimuth_posterior.hpp"
+#include "lib/hearing/azimuth_posterior.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "azimuth_votes.hpp"
+#include "lib/hearing/azimuth_votes.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,7 +11,7 @@
 #include <array>
 #include <vector>
 
-#include "azimuth_posterior.hpp"
+#include "lib/hearing/azimuth_posterior.hpp"
 
 namespace beft::hearing {
 

@@ -1,10 +1,10 @@
-#include "band_signature.hpp"
+#include "lib/hearing/band_signature.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "fft_convolver.hpp"
+#include "lib/hearing/fft_convolver.hpp"
 
 namespace beft::hearing {
 

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "analysis_layout.hpp"
+#include "lib/hearing/analysis_layout.hpp"
 
 namespace beft::hearing {
 

@@ -1,9 +1,9 @@
-#include "binaural_cues.hpp"
+#include "lib/hearing/binaural_cues.hpp"
 
 #include <cmath>
 #include <limits>
 
-#include "fft_convolver.hpp"
+#include "lib/hearing/fft_convolver.hpp"
 
 namespace beft::hearing {
 

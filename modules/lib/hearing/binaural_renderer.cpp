@@ -1,4 +1,4 @@
-#include "binaural_renderer.hpp"
+#include "lib/hearing/binaural_renderer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <string>
 #include <utility>
 
-#include "fft_convolver.hpp"
-#include "looped_signal.hpp"
-#include "sensor_noise.hpp"
+#include "lib/hearing/fft_convolver.hpp"
+#include "lib/hearing/looped_signal.hpp"
+#include "lib/hearing/sensor_noise.hpp"
 
 namespace beft::hearing {
 

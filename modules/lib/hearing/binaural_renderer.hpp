@@ -14,8 +14,8 @@
 
 #include <Eigen/Core>
 
-#include "hrir_set.hpp"
-#include "occlusion_filter.hpp"
+#include "lib/hearing/hrir_set.hpp"
+#include "lib/hearing/occlusion_filter.hpp"
 
 namespace beft::hearing {
 

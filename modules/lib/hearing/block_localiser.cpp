@@ -1,11 +1,11 @@
-#include "block_localiser.hpp"
+#include "lib/hearing/block_localiser.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <stdexcept>
 
-#include "azimuth_votes.hpp"
+#include "lib/hearing/azimuth_votes.hpp"
 
 namespace beft::hearing {
 

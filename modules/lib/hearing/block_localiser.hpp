@@ -19,11 +19,11 @@
 
 #include <vector>
 
-#include "azimuth_posterior.hpp"
-#include "azimuth_votes.hpp"
-#include "band_signature.hpp"
-#include "interaural_templates.hpp"
-#include "fft_convolver.hpp"
+#include "lib/hearing/azimuth_posterior.hpp"
+#include "lib/hearing/azimuth_votes.hpp"
+#include "lib/hearing/band_signature.hpp"
+#include "lib/hearing/interaural_templates.hpp"
+#include "lib/hearing/fft_convolver.hpp"
 
 namespace beft::hearing {
 

@@ -1,4 +1,4 @@
-#include "fft_convolver.hpp"
+#include "lib/hearing/fft_convolver.hpp"
 
 #include <fftw3.h>
 

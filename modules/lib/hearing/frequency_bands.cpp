@@ -1,4 +1,4 @@
-#include "frequency_bands.hpp"
+#include "lib/hearing/frequency_bands.hpp"
 
 #include <algorithm>
 #include <cmath>

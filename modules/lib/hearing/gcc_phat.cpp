@@ -1,11 +1,11 @@
-#include "gcc_phat.hpp"
+#include "lib/hearing/gcc_phat.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <stdexcept>
 
-#include "fft_convolver.hpp"
+#include "lib/hearing/fft_convolver.hpp"
 
 namespace beft::hearing {
 

@@ -1,4 +1,4 @@
-#include "hrir_set.hpp"
+#include "lib/hearing/hrir_set.hpp"
 
 #include <sndfile.h>
 

@@ -1,11 +1,11 @@
-#include "interaural_templates.hpp"
+#include "lib/hearing/interaural_templates.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "gcc_phat.hpp"
-#include "fft_convolver.hpp"
+#include "lib/hearing/gcc_phat.hpp"
+#include "lib/hearing/fft_convolver.hpp"
 
 namespace beft::hearing {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "analysis_layout.hpp"
-#include "frequency_bands.hpp"
-#include "sofa_hrirs.hpp"
+#include "lib/hearing/analysis_layout.hpp"
+#include "lib/hearing/frequency_bands.hpp"
+#include "lib/hearing/sofa_hrirs.hpp"
 
 namespace beft::hearing {
 

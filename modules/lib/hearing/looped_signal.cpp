@@ -1,4 +1,4 @@
-#include "looped_signal.hpp"
+#include "lib/hearing/looped_signal.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "occlusion_filter.hpp"
+#include "lib/hearing/occlusion_filter.hpp"
 
 #include <algorithm>
 #include <cmath>

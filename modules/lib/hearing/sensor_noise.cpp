@@ -1,4 +1,4 @@
-#include "sensor_noise.hpp"
+#include "lib/hearing/sensor_noise.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "sofa_hrirs.hpp"
+#include "lib/hearing/sofa_hrirs.hpp"
 
 #include <mysofa.h>
 

@@ -1,4 +1,4 @@
-#include "sound_bank.hpp"
+#include "lib/hearing/sound_bank.hpp"
 
 #include <samplerate.h>
 #include <sndfile.h>

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "binaural_renderer.hpp"
+#include "lib/hearing/binaural_renderer.hpp"
 
 namespace beft::hearing {
 

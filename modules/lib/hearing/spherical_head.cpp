@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "hrir_set.hpp"
+#include "lib/hearing/hrir_set.hpp"
 
 namespace beft::hearing {
 

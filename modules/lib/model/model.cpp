@@ -1,4 +1,4 @@
-#include "model.hpp"
+#include "lib/model/model.hpp"
 
 #include <algorithm>
 #include <cmath>

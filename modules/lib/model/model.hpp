@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "declared_parameters.hpp"
+#include "lib/common/declared_parameters.hpp"
 
 #include <string>
 #include <vector>

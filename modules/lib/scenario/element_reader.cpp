@@ -1,4 +1,4 @@
-#include "element_reader.hpp"
+#include "lib/scenario/element_reader.hpp"
 
 #include <cerrno>
 #include <cmath>

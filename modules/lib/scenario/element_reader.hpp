@@ -13,7 +13,7 @@
 
 #include <tinyxml2.h>
 
-#include "scenario.hpp"
+#include "lib/scenario/scenario.hpp"
 
 namespace beft::scenario {
 

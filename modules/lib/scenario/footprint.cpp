@@ -1,4 +1,4 @@
-#include "footprint.hpp"
+#include "lib/scenario/footprint.hpp"
 
 #include <algorithm>
 #include <cmath>

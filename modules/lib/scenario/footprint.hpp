@@ -2,7 +2,7 @@
 // object's yaw, a cylinder is a disc. Used to check the robot's start pose.
 #pragma once
 
-#include "scenario.hpp"
+#include "lib/scenario/scenario.hpp"
 
 namespace beft::scenario {
 

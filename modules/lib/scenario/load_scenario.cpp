@@ -1,4 +1,4 @@
-#include "load_scenario.hpp"
+#include "lib/scenario/load_scenario.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -10,9 +10,9 @@
 
 #include <tinyxml2.h>
 
-#include "element_reader.hpp"
-#include "footprint.hpp"
-#include "wav_info.hpp"
+#include "lib/scenario/element_reader.hpp"
+#include "lib/scenario/footprint.hpp"
+#include "lib/scenario/wav_info.hpp"
 
 namespace beft::scenario {
 

@@ -4,7 +4,7 @@
 #include <ostream>
 #include <string>
 
-#include "scenario.hpp"
+#include "lib/scenario/scenario.hpp"
 
 namespace beft::scenario {
 

@@ -1,10 +1,10 @@
-#include "reachability.hpp"
+#include "lib/scenario/reachability.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <deque>
 
-#include "footprint.hpp"
+#include "lib/scenario/footprint.hpp"
 
 namespace beft::scenario {
 

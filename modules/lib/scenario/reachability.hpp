@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "scenario.hpp"
+#include "lib/scenario/scenario.hpp"
 
 namespace beft::scenario {
 

@@ -1,5 +1,5 @@
 // Scenario look-ups and the refusal type declared in scenario.hpp.
-#include "scenario.hpp"
+#include "lib/scenario/scenario.hpp"
 
 namespace beft::scenario {
 

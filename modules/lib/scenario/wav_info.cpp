@@ -1,4 +1,4 @@
-#include "wav_info.hpp"
+#include "lib/scenario/wav_info.hpp"
 
 #include <sndfile.h>
 

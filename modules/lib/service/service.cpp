@@ -1,4 +1,4 @@
-#include "service.hpp"
+#include "lib/service/service.hpp"
 
 #include <unistd.h>
 
@@ -10,10 +10,10 @@
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "heap_retention.hpp"
-#include "lcm_url.hpp"
-#include "log.hpp"
-#include "run_identity.hpp"
+#include "lib/common/heap_retention.hpp"
+#include "lib/common/lcm_url.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::service {
 

@@ -13,7 +13,7 @@
 
 #include <beft/heartbeat_t.hpp>
 
-#include "channels.hpp"
+#include "lib/common/channels.hpp"
 
 namespace CLI {
 class App;

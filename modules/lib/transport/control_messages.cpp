@@ -1,6 +1,6 @@
-#include "control_messages.hpp"
+#include "lib/transport/control_messages.hpp"
 
-#include "channels.hpp"
+#include "lib/common/channels.hpp"
 
 namespace beft::control {
 

@@ -10,7 +10,7 @@
 #include <beft/fire_t.hpp>
 #include <beft/run_status_t.hpp>
 
-#include "transport.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace beft::control {
 

@@ -1,4 +1,4 @@
-#include "transport.hpp"
+#include "lib/transport/transport.hpp"
 
 #include <cstdlib>
 #include <set>
@@ -6,11 +6,11 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "detail/udpm_filter.hpp"
-#include "detail/udpm_receiver.hpp"
-#include "log.hpp"
-#include "reject_counter.hpp"
-#include "run_identity.hpp"
+#include "lib/transport/detail/udpm_filter.hpp"
+#include "lib/transport/detail/udpm_receiver.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/reject_counter.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::transport {
 

@@ -1,4 +1,4 @@
-#include "blackboard_query.hpp"
+#include "lib/wire/blackboard_query.hpp"
 
 #include <unistd.h>
 
@@ -7,8 +7,8 @@
 #include <beft/bb_query_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "channels.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::wire {
 

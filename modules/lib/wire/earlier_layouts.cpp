@@ -1,9 +1,9 @@
-#include "earlier_layouts.hpp"
+#include "lib/wire/earlier_layouts.hpp"
 
 #include <cstddef>
 
-#include "embedded_schemas.hpp"
-#include "lcm_schema.hpp"
+#include "lib/wire/embedded_schemas.hpp"
+#include "lib/wire/lcm_schema.hpp"
 
 namespace beft::wire {
 

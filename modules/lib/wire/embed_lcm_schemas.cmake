@@ -10,7 +10,7 @@ foreach(schema_file ${schema_files})
   string(APPEND entries "      {\"${name}\", R\"lcm_schema(${text})lcm_schema\"},\n")
 endforeach()
 set(content "// Generated from lcmtypes/*.lcm by embed_lcm_schemas.cmake: do not edit.
-#include \"embedded_schemas.hpp\"
+#include \"lib/wire/embedded_schemas.hpp\"
 
 namespace beft::wire {
 

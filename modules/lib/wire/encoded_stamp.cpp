@@ -1,4 +1,4 @@
-#include "encoded_stamp.hpp"
+#include "lib/wire/encoded_stamp.hpp"
 
 namespace beft::wire {
 

@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <string>
 
-#include "message_check.hpp"
-#include "reject_counter.hpp"
+#include "lib/wire/message_check.hpp"
+#include "lib/wire/reject_counter.hpp"
 
 namespace beft::wire {
 

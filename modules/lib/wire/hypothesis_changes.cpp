@@ -1,4 +1,4 @@
-#include "hypothesis_changes.hpp"
+#include "lib/wire/hypothesis_changes.hpp"
 
 #include <algorithm>
 #include <string>

@@ -1,4 +1,4 @@
-#include "lcm_schema.hpp"
+#include "lib/wire/lcm_schema.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "log_reader.hpp"
+#include "lib/wire/log_reader.hpp"
 
 #include <sys/stat.h>
 
@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <thread>
 
-#include "earlier_layouts.hpp"
-#include "run_identity.hpp"
+#include "lib/wire/earlier_layouts.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::wire {
 

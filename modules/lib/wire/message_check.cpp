@@ -1,4 +1,4 @@
-#include "message_check.hpp"
+#include "lib/wire/message_check.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "channels.hpp"
-#include "embedded_schemas.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/embedded_schemas.hpp"
 
 namespace beft::wire {
 

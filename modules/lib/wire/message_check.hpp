@@ -17,7 +17,7 @@
 #include <memory>
 #include <string>
 
-#include "lcm_schema.hpp"
+#include "lib/wire/lcm_schema.hpp"
 
 namespace beft::wire {
 

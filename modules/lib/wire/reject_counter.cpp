@@ -1,6 +1,6 @@
-#include "reject_counter.hpp"
+#include "lib/wire/reject_counter.hpp"
 
-#include "log.hpp"
+#include "lib/common/log.hpp"
 
 namespace beft::wire {
 

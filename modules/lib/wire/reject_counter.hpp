@@ -8,7 +8,7 @@
 #include <mutex>
 #include <string>
 
-#include "message_check.hpp"
+#include "lib/wire/message_check.hpp"
 
 namespace beft::wire {
 

@@ -1,11 +1,11 @@
-#include "run_discovery.hpp"
+#include "lib/wire/run_discovery.hpp"
 
 #include <chrono>
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "channels.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::wire {
 

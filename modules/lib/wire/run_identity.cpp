@@ -1,4 +1,4 @@
-#include "run_identity.hpp"
+#include "lib/wire/run_identity.hpp"
 
 #include <atomic>
 #include <climits>
@@ -8,7 +8,7 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "log.hpp"
+#include "lib/common/log.hpp"
 
 namespace beft::wire {
 

@@ -1,4 +1,4 @@
-#include "arbiter_core.hpp"
+#include "services/arbiter/arbiter_core.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "control_messages.hpp"
-#include "log.hpp"
+#include "lib/transport/control_messages.hpp"
+#include "lib/common/log.hpp"
 
 namespace beft::arbiter {
 

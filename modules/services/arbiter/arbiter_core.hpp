@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "petri_net.hpp"
+#include "lib/petri/petri_net.hpp"
 
 namespace beft::arbiter {
 

@@ -1,4 +1,4 @@
-#include "arbiter_process.hpp"
+#include "services/arbiter/arbiter_process.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -8,12 +8,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include "channels.hpp"
-#include "firing_log.hpp"
-#include "lcm_arbiter.hpp"
-#include "log.hpp"
-#include "pnml_reader.hpp"
-#include "resume_point.hpp"
+#include "lib/common/channels.hpp"
+#include "services/arbiter/firing_log.hpp"
+#include "services/arbiter/lcm_arbiter.hpp"
+#include "lib/common/log.hpp"
+#include "lib/petri/pnml_reader.hpp"
+#include "services/arbiter/resume_point.hpp"
 
 namespace beft::arbiter {
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "arbiter_core.hpp"
-#include "service.hpp"
+#include "services/arbiter/arbiter_core.hpp"
+#include "lib/service/service.hpp"
 
 namespace beft::arbiter {
 

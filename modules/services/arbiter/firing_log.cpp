@@ -1,4 +1,4 @@
-#include "firing_log.hpp"
+#include "services/arbiter/firing_log.hpp"
 
 #include <cerrno>
 #include <cstring>

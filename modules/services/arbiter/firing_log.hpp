@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "arbiter_core.hpp"
+#include "services/arbiter/arbiter_core.hpp"
 
 namespace beft::arbiter {
 

@@ -1,4 +1,4 @@
-#include "lcm_arbiter.hpp"
+#include "services/arbiter/lcm_arbiter.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,11 +8,11 @@
 #include <sched.h>
 #include <unistd.h>
 
-#include "channels.hpp"
-#include "control_messages.hpp"
-#include "guarded_decode.hpp"
-#include "log.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/transport/control_messages.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::arbiter {
 

@@ -13,11 +13,11 @@
 #include <variant>
 #include <vector>
 
-#include "arbiter_core.hpp"
-#include "firing_log.hpp"
-#include "other_run_watch.hpp"
-#include "service.hpp"
-#include "transport.hpp"
+#include "services/arbiter/arbiter_core.hpp"
+#include "services/arbiter/firing_log.hpp"
+#include "services/arbiter/other_run_watch.hpp"
+#include "lib/service/service.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace beft::arbiter {
 

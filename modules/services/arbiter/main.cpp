@@ -1,5 +1,5 @@
 // beft-arbiter: the Petri-net arbiter process (see --help, --interface).
-#include "arbiter_process.hpp"
+#include "services/arbiter/arbiter_process.hpp"
 
 int main(int argc, char** argv) {
   beft::arbiter::ArbiterProcess arbiter;

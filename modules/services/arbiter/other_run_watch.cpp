@@ -1,7 +1,7 @@
-#include "other_run_watch.hpp"
+#include "services/arbiter/other_run_watch.hpp"
 
-#include "log.hpp"
-#include "run_identity.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::arbiter {
 

@@ -1,12 +1,12 @@
-#include "resume_point.hpp"
+#include "services/arbiter/resume_point.hpp"
 
 #include <algorithm>
 
-#include "channels.hpp"
-#include "guarded_decode.hpp"
-#include "log.hpp"
-#include "log_reader.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::arbiter {
 

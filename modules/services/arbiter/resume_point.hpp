@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "arbiter_core.hpp"
+#include "services/arbiter/arbiter_core.hpp"
 
 namespace beft::arbiter {
 

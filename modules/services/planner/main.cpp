@@ -1,5 +1,5 @@
 // beft-planner: the planner service process (see --help, --interface).
-#include "planner_process.hpp"
+#include "services/planner/planner_process.hpp"
 
 int main(int argc, char** argv) {
   beft::planner_service::PlannerProcess planner;

@@ -1,4 +1,4 @@
-#include "planner_process.hpp"
+#include "services/planner/planner_process.hpp"
 
 #include <chrono>
 #include <map>
@@ -9,15 +9,15 @@
 #include <beft/run_status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "channels.hpp"
-#include "control_messages.hpp"
-#include "encoded_stamp.hpp"
-#include "guarded_decode.hpp"
-#include "log.hpp"
-#include "log_reader.hpp"
-#include "ompl_planner.hpp"
-#include "planner_factory.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/transport/control_messages.hpp"
+#include "lib/wire/encoded_stamp.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "planners/ompl_planner.hpp"
+#include "planners/planner_factory.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::planner_service {
 

@@ -10,10 +10,10 @@
 
 #include <beft/plan_request_t.hpp>
 
-#include "obstacle_map_changes.hpp"
-#include "planner_service.hpp"
-#include "service.hpp"
-#include "transport.hpp"
+#include "lib/wire/obstacle_map_changes.hpp"
+#include "services/planner/planner_service.hpp"
+#include "lib/service/service.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace beft::planner_service {
 

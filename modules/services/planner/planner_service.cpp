@@ -1,7 +1,7 @@
-#include "planner_service.hpp"
+#include "services/planner/planner_service.hpp"
 
-#include "path_tools.hpp"
-#include "planner_factory.hpp"
+#include "planners/path_tools.hpp"
+#include "planners/planner_factory.hpp"
 
 #include <algorithm>
 #include <cmath>

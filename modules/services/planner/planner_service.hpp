@@ -15,8 +15,8 @@
 //   the goal heading.
 #pragma once
 
-#include "obstacle_map_codec.hpp"
-#include "planner.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
+#include "planners/planner.hpp"
 
 #include <beft/obstacle_map_t.hpp>
 #include <beft/plan_request_t.hpp>

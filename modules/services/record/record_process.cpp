@@ -1,4 +1,4 @@
-#include "record_process.hpp"
+#include "services/record/record_process.hpp"
 
 #include <chrono>
 #include <stdexcept>
@@ -6,8 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "log.hpp"
-#include "transport.hpp"
+#include "lib/common/log.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace beft::record {
 

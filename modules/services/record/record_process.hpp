@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "recorder.hpp"
-#include "service.hpp"
+#include "services/record/recorder.hpp"
+#include "lib/service/service.hpp"
 
 namespace beft::record {
 

@@ -1,4 +1,4 @@
-#include "recorder.hpp"
+#include "services/record/recorder.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -6,7 +6,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "log.hpp"
+#include "lib/common/log.hpp"
 
 namespace beft::record {
 

@@ -19,9 +19,9 @@
 #include <regex>
 #include <string>
 
-#include "camera_sampling.hpp"
-#include "timestamp_order.hpp"
-#include "transport.hpp"
+#include "lib/launch/camera_sampling.hpp"
+#include "services/record/timestamp_order.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace lcm {
 class LCM;

@@ -1,4 +1,4 @@
-#include "timestamp_order.hpp"
+#include "services/record/timestamp_order.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,5 +1,5 @@
 // beft-ssr-bridge: mirrors a run into the SoundScape Renderer (see --help, README.md).
-#include "ssr_bridge_process.hpp"
+#include "services/ssr_bridge/ssr_bridge_process.hpp"
 
 int main(int argc, char** argv) {
   beft::ssr_bridge::SsrBridgeProcess bridge;

@@ -1,11 +1,11 @@
-#include "scene_mirror.hpp"
+#include "services/ssr_bridge/scene_mirror.hpp"
 
 #include <cmath>
 #include <filesystem>
 #include <set>
 
-#include "ssr_conventions.hpp"
-#include "ssr_requests.hpp"
+#include "services/ssr_bridge/ssr_conventions.hpp"
+#include "services/ssr_bridge/ssr_requests.hpp"
 
 namespace beft::ssr_bridge {
 

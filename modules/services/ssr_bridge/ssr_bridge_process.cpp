@@ -1,4 +1,4 @@
-#include "ssr_bridge_process.hpp"
+#include "services/ssr_bridge/ssr_bridge_process.hpp"
 
 #include <poll.h>
 
@@ -12,10 +12,10 @@
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
-#include "channels.hpp"
-#include "guarded_decode.hpp"
-#include "log.hpp"
-#include "blackboard_query.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/blackboard_query.hpp"
 
 namespace beft::ssr_bridge {
 

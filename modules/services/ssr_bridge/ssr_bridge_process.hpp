@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "scene_mirror.hpp"
-#include "service.hpp"
-#include "ssr_link.hpp"
-#include "ssr_updates.hpp"
-#include "transport.hpp"
+#include "services/ssr_bridge/scene_mirror.hpp"
+#include "lib/service/service.hpp"
+#include "services/ssr_bridge/ssr_link.hpp"
+#include "services/ssr_bridge/ssr_updates.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace beft::ssr_bridge {
 

@@ -1,4 +1,4 @@
-#include "ssr_conventions.hpp"
+#include "services/ssr_bridge/ssr_conventions.hpp"
 
 #include <cmath>
 

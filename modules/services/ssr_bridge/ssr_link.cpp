@@ -1,4 +1,4 @@
-#include "ssr_link.hpp"
+#include "services/ssr_bridge/ssr_link.hpp"
 
 #include <fcntl.h>
 #include <netinet/in.h>
@@ -10,7 +10,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "log.hpp"
+#include "lib/common/log.hpp"
 
 namespace beft::ssr_bridge {
 

@@ -10,7 +10,7 @@
 
 #include <netdb.h>
 
-#include "ssr_updates.hpp"
+#include "services/ssr_bridge/ssr_updates.hpp"
 
 namespace beft::ssr_bridge {
 

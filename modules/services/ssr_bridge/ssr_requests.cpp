@@ -1,4 +1,4 @@
-#include "ssr_requests.hpp"
+#include "services/ssr_bridge/ssr_requests.hpp"
 
 #include <cstdint>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "ssr_updates.hpp"
+#include "services/ssr_bridge/ssr_updates.hpp"
 
 #include <tinyxml2.h>
 

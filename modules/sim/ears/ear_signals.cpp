@@ -1,10 +1,10 @@
-#include "ear_signals.hpp"
+#include "sim/ears/ear_signals.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "acoustic_occlusion.hpp"
-#include "object_geometry.hpp"
+#include "lib/scene/acoustic_occlusion.hpp"
+#include "lib/scene/object_geometry.hpp"
 
 namespace beft::ears {
 namespace {

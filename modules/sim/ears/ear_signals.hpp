@@ -9,9 +9,9 @@
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
-#include "binaural_renderer.hpp"
-#include "scene_geometry.hpp"
-#include "sound_bank.hpp"
+#include "lib/hearing/binaural_renderer.hpp"
+#include "lib/scene/scene_geometry.hpp"
+#include "lib/hearing/sound_bank.hpp"
 
 namespace beft::ears {
 

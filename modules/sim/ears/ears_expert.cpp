@@ -1,11 +1,11 @@
-#include "ears_expert.hpp"
+#include "sim/ears/ears_expert.hpp"
 
 #include <filesystem>
 #include <limits>
 
-#include "channels.hpp"
-#include "log.hpp"
-#include "scene_geometry.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/common/log.hpp"
+#include "lib/scene/scene_geometry.hpp"
 
 namespace beft::ears {
 

@@ -9,11 +9,11 @@
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
-#include "binaural_renderer.hpp"
-#include "ear_signals.hpp"
-#include "expert.hpp"
-#include "scene_input.hpp"
-#include "sound_bank.hpp"
+#include "lib/hearing/binaural_renderer.hpp"
+#include "sim/ears/ear_signals.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/expert/scene_input.hpp"
+#include "lib/hearing/sound_bank.hpp"
 
 namespace beft::ears {
 

@@ -1,6 +1,6 @@
 // beft-ears: the robot's two ears, rendered each tick (see --help).
-#include "ears_expert.hpp"
-#include "run_expert.hpp"
+#include "sim/ears/ears_expert.hpp"
+#include "lib/expert/run_expert.hpp"
 
 int main(int argc, char** argv) {
   beft::ears::EarsExpert expert;

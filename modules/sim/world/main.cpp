@@ -3,9 +3,9 @@
 //   beft-world --scenario scenarios/yard.xml --realtime 10 free-running at 10 ticks per second
 #include <CLI/CLI.hpp>
 
-#include "realtime_loop.hpp"
-#include "run_expert.hpp"
-#include "world_expert.hpp"
+#include "sim/world/realtime_loop.hpp"
+#include "lib/expert/run_expert.hpp"
+#include "sim/world/world_expert.hpp"
 
 int main(int argc, char** argv) {
   beft::world::WorldExpert world;

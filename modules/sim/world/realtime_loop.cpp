@@ -1,4 +1,4 @@
-#include "realtime_loop.hpp"
+#include "sim/world/realtime_loop.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -8,9 +8,9 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "channels.hpp"
-#include "log.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/common/log.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::world {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "world_expert.hpp"
+#include "sim/world/world_expert.hpp"
 
 namespace beft::world {
 

@@ -1,4 +1,4 @@
-#include "robot_platform.hpp"
+#include "sim/world/robot_platform.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -31,8 +31,8 @@
 
 #include <beft/robot_command_t.hpp>
 
-#include "scenario.hpp"
-#include "scene_geometry.hpp"
+#include "lib/scenario/scenario.hpp"
+#include "lib/scene/scene_geometry.hpp"
 
 namespace beft::world {
 

@@ -1,4 +1,4 @@
-#include "scene_timeline.hpp"
+#include "sim/world/scene_timeline.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "scenario.hpp"
+#include "lib/scenario/scenario.hpp"
 
 namespace beft::world {
 

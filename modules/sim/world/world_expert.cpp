@@ -1,13 +1,13 @@
-#include "world_expert.hpp"
+#include "sim/world/world_expert.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
 #include <beft/robot_command_t.hpp>
 
-#include "channels.hpp"
-#include "load_scenario.hpp"
-#include "log.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "lib/common/log.hpp"
 
 namespace beft::world {
 

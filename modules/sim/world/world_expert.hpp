@@ -7,10 +7,10 @@
 #include <optional>
 #include <string>
 
-#include "expert.hpp"
-#include "frame_compressor.hpp"
-#include "helper_task.hpp"
-#include "world_simulation.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/camera/frame_compressor.hpp"
+#include "lib/expert/helper_task.hpp"
+#include "sim/world/world_simulation.hpp"
 
 namespace beft::world {
 

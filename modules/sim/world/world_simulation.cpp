@@ -1,4 +1,4 @@
-#include "world_simulation.hpp"
+#include "sim/world/world_simulation.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -21,12 +21,12 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/scene_version_t.hpp>
 
-#include "camera_messages.hpp"
-#include "ray_caster.hpp"
-#include "robot_platform.hpp"
-#include "scenario.hpp"
-#include "scene_geometry.hpp"
-#include "scene_timeline.hpp"
+#include "lib/camera/camera_messages.hpp"
+#include "lib/scene/ray_caster.hpp"
+#include "sim/world/robot_platform.hpp"
+#include "lib/scenario/scenario.hpp"
+#include "lib/scene/scene_geometry.hpp"
+#include "sim/world/scene_timeline.hpp"
 
 namespace beft::world {
 

@@ -13,15 +13,15 @@
 #include <deque>
 #include <thread>
 
-#include "command_line.hpp"
-#include "arbiter_core.hpp"
-#include "channels.hpp"
-#include "lcm_arbiter.hpp"
-#include "lcm_url.hpp"
-#include "log.hpp"
-#include "pnml_reader.hpp"
-#include "guarded_decode.hpp"
-#include "run_identity.hpp"
+#include "lib/common/command_line.hpp"
+#include "services/arbiter/arbiter_core.hpp"
+#include "lib/common/channels.hpp"
+#include "services/arbiter/lcm_arbiter.hpp"
+#include "lib/common/lcm_url.hpp"
+#include "lib/common/log.hpp"
+#include "lib/petri/pnml_reader.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace {
 

@@ -12,12 +12,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include "camera_messages.hpp"
-#include "command_line.hpp"
-#include "frame_compressor.hpp"
-#include "packing_table.hpp"
-#include "ray_caster.hpp"
-#include "scene_geometry.hpp"
+#include "lib/camera/camera_messages.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/camera/frame_compressor.hpp"
+#include "tools/bench_camera/packing_table.hpp"
+#include "lib/scene/ray_caster.hpp"
+#include "lib/scene/scene_geometry.hpp"
 
 using namespace beft::camera;
 

@@ -1,4 +1,4 @@
-#include "packing_table.hpp"
+#include "tools/bench_camera/packing_table.hpp"
 
 #include <time.h>
 
@@ -9,10 +9,10 @@
 #include <beft/robot_command_t.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "frame_compressor.hpp"
-#include "frame_decoding.hpp"
-#include "load_scenario.hpp"
-#include "world_simulation.hpp"
+#include "lib/camera/frame_compressor.hpp"
+#include "lib/camera/frame_decoding.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "sim/world/world_simulation.hpp"
 
 namespace beft::bench {
 

@@ -1,16 +1,16 @@
-#include "expert_chain.hpp"
+#include "tools/bench_experts/expert_chain.hpp"
 
 #include <ctime>
 #include <stdexcept>
 
-#include "acoustic_labels_expert.hpp"
-#include "audio_expert.hpp"
-#include "channels.hpp"
-#include "fusion_expert.hpp"
-#include "hypothesis_changes.hpp"
-#include "geometry_expert.hpp"
-#include "vision_expert.hpp"
-#include "visual_labels_expert.hpp"
+#include "experts/acoustic_labels/acoustic_labels_expert.hpp"
+#include "experts/audio/audio_expert.hpp"
+#include "lib/common/channels.hpp"
+#include "experts/fusion/fusion_expert.hpp"
+#include "lib/wire/hypothesis_changes.hpp"
+#include "experts/geometry/geometry_expert.hpp"
+#include "experts/vision/vision_expert.hpp"
+#include "experts/visual_labels/visual_labels_expert.hpp"
 
 namespace beft::bench {
 

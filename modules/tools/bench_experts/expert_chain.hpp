@@ -15,8 +15,8 @@
 #include <beft/robot_state_t.hpp>
 #include <beft/scene_objects_t.hpp>
 
-#include "expert.hpp"
-#include "obstacle_map_changes.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/wire/obstacle_map_changes.hpp"
 
 namespace beft::bench {
 

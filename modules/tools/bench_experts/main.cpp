@@ -11,12 +11,12 @@
 #include <numeric>
 #include <optional>
 
-#include "command_line.hpp"
-#include "channels.hpp"
-#include "expert_chain.hpp"
-#include "frame_compressor.hpp"
-#include "load_scenario.hpp"
-#include "world_simulation.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/common/channels.hpp"
+#include "tools/bench_experts/expert_chain.hpp"
+#include "lib/camera/frame_compressor.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "sim/world/world_simulation.hpp"
 
 namespace {
 

@@ -1,11 +1,11 @@
-#include "data_messages.hpp"
+#include "tools/bench_faults/data_messages.hpp"
 
 #include <cstdio>
 
-#include "channels.hpp"
-#include "encoded_stamp.hpp"
-#include "log_reader.hpp"
-#include "message_check.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/encoded_stamp.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "lib/wire/message_check.hpp"
 
 namespace beft::bench {
 

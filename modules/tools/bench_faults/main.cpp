@@ -18,10 +18,10 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "command_line.hpp"
-#include "data_messages.hpp"
-#include "own_bin_dir.hpp"
-#include "run_identity.hpp"
+#include "lib/common/command_line.hpp"
+#include "tools/bench_faults/data_messages.hpp"
+#include "lib/common/own_bin_dir.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace {
 

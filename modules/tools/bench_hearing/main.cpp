@@ -22,14 +22,14 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "binaural_cues.hpp"
-#include "binaural_renderer.hpp"
-#include "command_line.hpp"
-#include "hrir_set.hpp"
-#include "localisation_trials.hpp"
-#include "log.hpp"
-#include "own_bin_dir.hpp"
-#include "quiet_child.hpp"
+#include "lib/hearing/binaural_cues.hpp"
+#include "lib/hearing/binaural_renderer.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/hearing/hrir_set.hpp"
+#include "lib/hearing/trials/localisation_trials.hpp"
+#include "lib/common/log.hpp"
+#include "lib/common/own_bin_dir.hpp"
+#include "lib/common/quiet_child.hpp"
 
 using namespace beft::hearing;
 

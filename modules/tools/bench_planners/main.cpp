@@ -1,16 +1,16 @@
 // beft-bench-planners: every planner on the same queries (MovingAI maps, the
 // testbed's scenarios, synthetic traps); prints a table and the targets,
 // writes runs.csv, summary.csv, a plot and OMPL benchmark logs.
-#include "command_line.hpp"
-#include "bench_datasets.hpp"
-#include "bench_report.hpp"
-#include "bench_stats.hpp"
-#include "ompl_planner.hpp"
-#include "ompl_potential_field.hpp"
-#include "ompl_space.hpp"
-#include "path_tools.hpp"
-#include "planner_factory.hpp"
-#include "render.hpp"
+#include "lib/common/command_line.hpp"
+#include "planners/bench/bench_datasets.hpp"
+#include "planners/bench/bench_report.hpp"
+#include "planners/bench/bench_stats.hpp"
+#include "planners/ompl_planner.hpp"
+#include "planners/ompl_potential_field.hpp"
+#include "planners/ompl_space.hpp"
+#include "planners/path_tools.hpp"
+#include "planners/planner_factory.hpp"
+#include "planners/render.hpp"
 
 #include <CLI/CLI.hpp>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>

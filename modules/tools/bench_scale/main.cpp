@@ -18,9 +18,9 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "command_line.hpp"
-#include "own_bin_dir.hpp"
-#include "quiet_child.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/common/own_bin_dir.hpp"
+#include "lib/common/quiet_child.hpp"
 
 namespace {
 

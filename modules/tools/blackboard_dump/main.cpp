@@ -11,10 +11,10 @@
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "blackboard/message_decoder.hpp"
+#include "lib/wire/message_decoder.hpp"
 #include "blackboard/snapshot_client.hpp"
-#include "command_line.hpp"
-#include "lcm_url.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/common/lcm_url.hpp"
 
 namespace {
 

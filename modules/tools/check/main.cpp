@@ -7,9 +7,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "command_line.hpp"
-#include "load_scenario.hpp"
-#include "scenario_summary.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "tools/check/scenario_summary.hpp"
 
 namespace {
 

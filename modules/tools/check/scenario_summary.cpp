@@ -1,10 +1,10 @@
-#include "scenario_summary.hpp"
+#include "tools/check/scenario_summary.hpp"
 
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
-#include "wav_info.hpp"
+#include "lib/scenario/wav_info.hpp"
 
 namespace beft::scenario {
 

@@ -3,7 +3,7 @@
 
 #include <ostream>
 
-#include "scenario.hpp"
+#include "lib/scenario/scenario.hpp"
 
 namespace beft::scenario {
 

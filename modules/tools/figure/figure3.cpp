@@ -1,14 +1,14 @@
-#include "figure3.hpp"
+#include "tools/figure/figure3.hpp"
 
 #include <stdexcept>
 
-#include "load_scenario.hpp"
-#include "path_tools.hpp"
-#include "planner_factory.hpp"
-#include "potential_field_planner.hpp"
-#include "render.hpp"
-#include "scene_grid.hpp"
-#include "whole_file.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "planners/path_tools.hpp"
+#include "planners/planner_factory.hpp"
+#include "planners/potential_field_planner.hpp"
+#include "planners/render.hpp"
+#include "tools/figure/scene_grid.hpp"
+#include "lib/common/whole_file.hpp"
 
 namespace beft::figure {
 

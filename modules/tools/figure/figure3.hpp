@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry.hpp"
+#include "planners/geometry.hpp"
 
 namespace beft::figure {
 

@@ -1,4 +1,4 @@
-#include "figure4.hpp"
+#include "tools/figure/figure4.hpp"
 
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "whole_file.hpp"
+#include "lib/common/whole_file.hpp"
 
 namespace beft::figure {
 

@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <optional>
 
-#include "command_line.hpp"
-#include "figure3.hpp"
-#include "figure4.hpp"
-#include "own_bin_dir.hpp"
+#include "lib/common/command_line.hpp"
+#include "tools/figure/figure3.hpp"
+#include "tools/figure/figure4.hpp"
+#include "lib/common/own_bin_dir.hpp"
 
 namespace {
 

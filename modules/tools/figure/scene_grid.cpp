@@ -1,4 +1,4 @@
-#include "scene_grid.hpp"
+#include "tools/figure/scene_grid.hpp"
 
 #include <cmath>
 

@@ -3,8 +3,8 @@
 // who are what the robot looks for, not what it plans around.
 #pragma once
 
-#include "grid_map.hpp"
-#include "scenario.hpp"
+#include "planners/grid_map.hpp"
+#include "lib/scenario/scenario.hpp"
 
 namespace beft::figure {
 

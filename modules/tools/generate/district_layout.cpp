@@ -1,4 +1,4 @@
-#include "district_layout.hpp"
+#include "tools/generate/district_layout.hpp"
 
 #include <algorithm>
 #include <cmath>

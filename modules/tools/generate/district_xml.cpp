@@ -1,4 +1,4 @@
-#include "district_xml.hpp"
+#include "tools/generate/district_xml.hpp"
 
 #include <tinyxml2.h>
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "district_layout.hpp"
+#include "tools/generate/district_layout.hpp"
 
 namespace beft::generate {
 

@@ -1,13 +1,13 @@
-#include "generate_district.hpp"
+#include "tools/generate/generate_district.hpp"
 
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
-#include "district_xml.hpp"
-#include "load_scenario.hpp"
-#include "reachability.hpp"
-#include "whole_file.hpp"
+#include "tools/generate/district_xml.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "lib/scenario/reachability.hpp"
+#include "lib/common/whole_file.hpp"
 
 namespace beft::generate {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "district_layout.hpp"
+#include "tools/generate/district_layout.hpp"
 
 namespace beft::generate {
 

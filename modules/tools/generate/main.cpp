@@ -5,8 +5,8 @@
 #include <iostream>
 #include <optional>
 
-#include "command_line.hpp"
-#include "generate_district.hpp"
+#include "lib/common/command_line.hpp"
+#include "tools/generate/generate_district.hpp"
 
 namespace {
 

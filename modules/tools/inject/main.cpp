@@ -11,10 +11,10 @@
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "command_line.hpp"
-#include "log_reader.hpp"
-#include "message_damage.hpp"
-#include "run_identity.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "tools/inject/message_damage.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace {
 

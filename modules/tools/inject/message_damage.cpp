@@ -1,4 +1,4 @@
-#include "message_damage.hpp"
+#include "tools/inject/message_damage.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "camera_sampling.hpp"
-#include "command_line.hpp"
-#include "free_port.hpp"
-#include "launch_file.hpp"
-#include "lcm_url.hpp"
-#include "own_bin_dir.hpp"
-#include "run_identity.hpp"
-#include "supervisor.hpp"
+#include "lib/launch/camera_sampling.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/launch/free_port.hpp"
+#include "lib/launch/launch_file.hpp"
+#include "lib/common/lcm_url.hpp"
+#include "lib/common/own_bin_dir.hpp"
+#include "lib/wire/run_identity.hpp"
+#include "lib/launch/supervisor.hpp"
 
 namespace {
 

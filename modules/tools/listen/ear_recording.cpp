@@ -1,4 +1,4 @@
-#include "ear_recording.hpp"
+#include "tools/listen/ear_recording.hpp"
 
 #include <sndfile.h>
 

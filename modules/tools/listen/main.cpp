@@ -6,12 +6,12 @@
 #include <cstdio>
 #include <optional>
 
-#include "channels.hpp"
-#include "command_line.hpp"
-#include "ear_recording.hpp"
-#include "guarded_decode.hpp"
-#include "log_reader.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/common/command_line.hpp"
+#include "tools/listen/ear_recording.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace {
 

@@ -8,10 +8,10 @@
 #include <optional>
 #include <sstream>
 
-#include "command_line.hpp"
-#include "pnml_annotation.hpp"
-#include "pnml_reader.hpp"
-#include "whole_file.hpp"
+#include "lib/common/command_line.hpp"
+#include "tools/net_annotate/pnml_annotation.hpp"
+#include "lib/petri/pnml_reader.hpp"
+#include "lib/common/whole_file.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "pnml_annotation.hpp"
+#include "tools/net_annotate/pnml_annotation.hpp"
 
 #include <tinyxml2.h>
 
@@ -6,7 +6,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "xml_encoding.hpp"
+#include "lib/petri/xml_encoding.hpp"
 
 namespace beft::net_annotate {
 

@@ -1,4 +1,4 @@
-#include "analysis_report.hpp"
+#include "tools/net_check/analysis_report.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "net_analysis.hpp"
-#include "petri_net.hpp"
+#include "lib/petri/net_analysis.hpp"
+#include "lib/petri/petri_net.hpp"
 
 namespace beft::net_check {
 

@@ -8,12 +8,12 @@
 #include <optional>
 #include <string>
 
-#include "analysis_report.hpp"
-#include "command_line.hpp"
-#include "net_analysis.hpp"
-#include "pnml_reader.hpp"
-#include "reachability.hpp"
-#include "schedule_report.hpp"
+#include "tools/net_check/analysis_report.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/petri/net_analysis.hpp"
+#include "lib/petri/pnml_reader.hpp"
+#include "lib/petri/reachability_graph.hpp"
+#include "tools/net_check/schedule_report.hpp"
 
 namespace {
 

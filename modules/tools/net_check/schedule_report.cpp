@@ -1,4 +1,4 @@
-#include "schedule_report.hpp"
+#include "tools/net_check/schedule_report.hpp"
 
 #include <cstdio>
 #include <string>

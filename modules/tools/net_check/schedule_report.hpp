@@ -4,8 +4,8 @@
 // reachable state.
 #pragma once
 
-#include "petri_net.hpp"
-#include "reachability.hpp"
+#include "lib/petri/petri_net.hpp"
+#include "lib/petri/reachability_graph.hpp"
 
 namespace beft::net_check {
 

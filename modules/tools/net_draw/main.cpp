@@ -9,11 +9,11 @@
 #include <cstdio>
 #include <optional>
 
-#include "command_line.hpp"
-#include "net_dot.hpp"
-#include "pnml_reader.hpp"
-#include "run_marking.hpp"
-#include "whole_file.hpp"
+#include "lib/common/command_line.hpp"
+#include "tools/net_draw/net_dot.hpp"
+#include "lib/petri/pnml_reader.hpp"
+#include "tools/net_draw/run_marking.hpp"
+#include "lib/common/whole_file.hpp"
 
 extern char** environ;
 

@@ -1,4 +1,4 @@
-#include "net_dot.hpp"
+#include "tools/net_draw/net_dot.hpp"
 
 #include <algorithm>
 #include <sstream>

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "petri_net.hpp"
+#include "lib/petri/petri_net.hpp"
 
 namespace beft::net_draw {
 

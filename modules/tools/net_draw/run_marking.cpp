@@ -1,11 +1,11 @@
-#include "run_marking.hpp"
+#include "tools/net_draw/run_marking.hpp"
 
 #include <beft/marking_t.hpp>
 
-#include "channels.hpp"
-#include "guarded_decode.hpp"
-#include "log_reader.hpp"
-#include "run_identity.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::net_draw {
 

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "net_dot.hpp"
+#include "tools/net_draw/net_dot.hpp"
 
 namespace beft::net_draw {
 

@@ -1,10 +1,10 @@
 // beft-plan: plans one query on a MovingAI map and reports the result.
-#include "command_line.hpp"
-#include "movingai.hpp"
-#include "ompl_planner.hpp"
-#include "path_tools.hpp"
-#include "planner_factory.hpp"
-#include "render.hpp"
+#include "lib/common/command_line.hpp"
+#include "planners/movingai.hpp"
+#include "planners/ompl_planner.hpp"
+#include "planners/path_tools.hpp"
+#include "planners/planner_factory.hpp"
+#include "planners/render.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -17,17 +17,17 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "command_line.hpp"
-#include "channels.hpp"
-#include "guarded_decode.hpp"
-#include "log_reader.hpp"
-#include "drawing.hpp"
-#include "frame_decoding.hpp"
-#include "map_picture.hpp"
-#include "obstacle_map_changes.hpp"
-#include "run_identity.hpp"
-#include "run_record.hpp"
-#include "run_scoring.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "lib/report/drawing.hpp"
+#include "lib/camera/frame_decoding.hpp"
+#include "lib/report/map_picture.hpp"
+#include "lib/wire/obstacle_map_changes.hpp"
+#include "lib/wire/run_identity.hpp"
+#include "lib/report/run_record.hpp"
+#include "lib/report/run_scoring.hpp"
 
 namespace {
 

@@ -14,9 +14,9 @@
 #include <filesystem>
 #include <map>
 
-#include "command_line.hpp"
-#include "own_bin_dir.hpp"
-#include "run_parameters.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/common/own_bin_dir.hpp"
+#include "lib/launch/run_parameters.hpp"
 
 namespace {
 int execProgram(std::vector<std::string> args) {

@@ -5,12 +5,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include "command_line.hpp"
-#include "load_scenario.hpp"
-#include "report_files.hpp"
-#include "report_json.hpp"
-#include "run_record.hpp"
-#include "run_scoring.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "lib/report/report_files.hpp"
+#include "lib/report/report_json.hpp"
+#include "lib/report/run_record.hpp"
+#include "lib/report/run_scoring.hpp"
 
 namespace {
 

@@ -9,11 +9,11 @@
 #include <CLI/CLI.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "command_line.hpp"
-#include "load_scenario.hpp"
-#include "log.hpp"
-#include "snapshot_images.hpp"
-#include "world_simulation.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "lib/common/log.hpp"
+#include "tools/snapshot/snapshot_images.hpp"
+#include "sim/world/world_simulation.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "snapshot_images.hpp"
+#include "tools/snapshot/snapshot_images.hpp"
 
 #include <algorithm>
 #include <cmath>

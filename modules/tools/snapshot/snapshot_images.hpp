@@ -6,8 +6,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "ray_caster.hpp"
-#include "world_simulation.hpp"
+#include "lib/scene/ray_caster.hpp"
+#include "sim/world/world_simulation.hpp"
 
 namespace beft::snapshot {
 

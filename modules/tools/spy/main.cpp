@@ -15,13 +15,13 @@
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "command_line.hpp"
+#include "lib/common/command_line.hpp"
 #include "blackboard/channel_filter.hpp"
-#include "blackboard/message_decoder.hpp"
-#include "message_check.hpp"
+#include "lib/wire/message_decoder.hpp"
+#include "lib/wire/message_check.hpp"
 #include "blackboard/store.hpp"
-#include "lcm_url.hpp"
-#include "traffic_table.hpp"
+#include "lib/common/lcm_url.hpp"
+#include "tools/spy/traffic_table.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "traffic_table.hpp"
+#include "tools/spy/traffic_table.hpp"
 
 #include <algorithm>
 #include <cstdio>

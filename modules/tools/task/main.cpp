@@ -13,14 +13,14 @@
 #include <beft/task_events_t.hpp>
 #include <beft/task_stack_t.hpp>
 
-#include "command_line.hpp"
-#include "channels.hpp"
-#include "guarded_decode.hpp"
-#include "lcm_url.hpp"
-#include "run_discovery.hpp"
-#include "run_identity.hpp"
-#include "task_cli.hpp"
-#include "task_messages.hpp"
+#include "lib/common/command_line.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/common/lcm_url.hpp"
+#include "lib/wire/run_discovery.hpp"
+#include "lib/wire/run_identity.hpp"
+#include "tools/task/task_cli.hpp"
+#include "lib/task/task_messages.hpp"
 
 namespace {
 

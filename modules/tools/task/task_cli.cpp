@@ -1,4 +1,4 @@
-#include "task_cli.hpp"
+#include "tools/task/task_cli.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "task_messages.hpp"
+#include "lib/task/task_messages.hpp"
 
 namespace beft::task_cli {
 

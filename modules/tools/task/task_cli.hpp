@@ -7,7 +7,7 @@
 
 #include <beft/task_stack_t.hpp>
 
-#include "task.hpp"
+#include "lib/task/task.hpp"
 
 namespace beft::task_cli {
 

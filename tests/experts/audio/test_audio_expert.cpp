@@ -5,13 +5,13 @@
 #include <cmath>
 #include <random>
 
-#include "acoustic_occlusion.hpp"
-#include "audio_estimator.hpp"
-#include "helper_task.hpp"
-#include "object_geometry.hpp"
-#include "position_noise.hpp"
-#include "scene_builders.hpp"
-#include "scene_geometry.hpp"
+#include "lib/scene/acoustic_occlusion.hpp"
+#include "experts/audio/audio_estimator.hpp"
+#include "lib/expert/helper_task.hpp"
+#include "lib/scene/object_geometry.hpp"
+#include "experts/audio/position_noise.hpp"
+#include "tests/experts/support/scene_builders.hpp"
+#include "lib/scene/scene_geometry.hpp"
 
 using namespace beft;
 

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "bearing_triangulation.hpp"
-#include "heard_sources.hpp"
+#include "experts/audio/bearing_triangulation.hpp"
+#include "experts/audio/heard_sources.hpp"
 
 using namespace beft;
 using namespace beft::audio;

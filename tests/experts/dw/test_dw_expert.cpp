@@ -13,9 +13,9 @@
 #include <beft/task_command_t.hpp>
 #include <beft/task_stack_t.hpp>
 
-#include "channels.hpp"
-#include "dw_expert.hpp"
-#include "expert_harness.hpp"
+#include "lib/common/channels.hpp"
+#include "experts/dw/dw_expert.hpp"
+#include "tests/experts/support/expert_harness.hpp"
 
 namespace beft::dw {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "dynamic_weighting.hpp"
+#include "experts/dw/dynamic_weighting.hpp"
 
 namespace beft::dw {
 namespace {

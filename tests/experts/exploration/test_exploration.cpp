@@ -13,10 +13,10 @@
 
 #include <beft/obstacle_map_t.hpp>
 
-#include "explorer.hpp"
-#include "frontiers.hpp"
-#include "known_map.hpp"
-#include "viewpoints.hpp"
+#include "experts/exploration/explorer.hpp"
+#include "experts/exploration/frontiers.hpp"
+#include "experts/exploration/known_map.hpp"
+#include "experts/exploration/viewpoints.hpp"
 
 namespace beft::exploration {
 namespace {

@@ -2,9 +2,9 @@
 // sequences, the fused confidences and the position source.
 #include <gtest/gtest.h>
 
-#include "hypothesis_fusion.hpp"
-#include "model.hpp"
-#include "scene_builders.hpp"
+#include "experts/fusion/hypothesis_fusion.hpp"
+#include "lib/model/model.hpp"
+#include "tests/experts/support/scene_builders.hpp"
 
 using namespace beft;
 

@@ -8,10 +8,10 @@
 
 #include <beft/hypotheses_t.hpp>
 
-#include "channels.hpp"
-#include "fusion_expert.hpp"
-#include "hypothesis_changes.hpp"
-#include "scene_builders.hpp"
+#include "lib/common/channels.hpp"
+#include "experts/fusion/fusion_expert.hpp"
+#include "lib/wire/hypothesis_changes.hpp"
+#include "tests/experts/support/scene_builders.hpp"
 
 using namespace beft;
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "geometry_estimator.hpp"
-#include "object_geometry.hpp"
-#include "camera_model.hpp"
-#include "ray_caster.hpp"
-#include "scene_geometry.hpp"
-#include "scene_builders.hpp"
+#include "experts/geometry/geometry_estimator.hpp"
+#include "lib/scene/object_geometry.hpp"
+#include "lib/scene/camera_model.hpp"
+#include "lib/scene/ray_caster.hpp"
+#include "lib/scene/scene_geometry.hpp"
+#include "tests/experts/support/scene_builders.hpp"
 
 using namespace beft;
 

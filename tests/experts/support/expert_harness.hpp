@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "expert.hpp"
+#include "lib/expert/expert.hpp"
 
 namespace beft::testing_support {
 

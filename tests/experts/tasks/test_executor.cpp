@@ -7,8 +7,8 @@
 #include <cmath>
 #include <functional>
 
-#include "executor.hpp"
-#include "model.hpp"
+#include "experts/tasks/executor.hpp"
+#include "lib/model/model.hpp"
 
 namespace beft::tasks {
 namespace {

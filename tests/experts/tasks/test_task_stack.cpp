@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "task_stack.hpp"
+#include "lib/task/task_stack.hpp"
 
 namespace beft::tasks {
 namespace {

@@ -13,10 +13,10 @@
 #include <beft/task_events_t.hpp>
 #include <beft/task_stack_t.hpp>
 
-#include "channels.hpp"
-#include "expert_harness.hpp"
-#include "task_messages.hpp"
-#include "tasks_expert.hpp"
+#include "lib/common/channels.hpp"
+#include "tests/experts/support/expert_harness.hpp"
+#include "lib/task/task_messages.hpp"
+#include "experts/tasks/tasks_expert.hpp"
 
 namespace beft::tasks {
 namespace {

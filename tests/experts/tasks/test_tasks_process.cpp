@@ -30,8 +30,8 @@
 #include <beft/task_stack_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "channels.hpp"
-#include "lcm_url.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/common/lcm_url.hpp"
 
 extern char** environ;
 

@@ -3,14 +3,14 @@
 
 #include <cmath>
 
-#include "camera_messages.hpp"
-#include "camera_model.hpp"
-#include "depth_rays.hpp"
-#include "obstacle_map_codec.hpp"
-#include "obstacle_mapper.hpp"
-#include "ray_caster.hpp"
-#include "scene_builders.hpp"
-#include "scene_geometry.hpp"
+#include "lib/camera/camera_messages.hpp"
+#include "lib/scene/camera_model.hpp"
+#include "experts/vision/depth_rays.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
+#include "experts/vision/obstacle_mapper.hpp"
+#include "lib/scene/ray_caster.hpp"
+#include "tests/experts/support/scene_builders.hpp"
+#include "lib/scene/scene_geometry.hpp"
 
 using namespace beft;
 

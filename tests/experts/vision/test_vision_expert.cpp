@@ -9,18 +9,18 @@
 #include <beft/felt_contacts_t.hpp>
 #include <beft/visual_percepts_t.hpp>
 
-#include "camera_messages.hpp"
-#include "channels.hpp"
-#include "depth_rays.hpp"
-#include "obstacle_mapper.hpp"
-#include "frame_compressor.hpp"
-#include "reject_counter.hpp"
-#include "obstacle_map_codec.hpp"
-#include "ray_caster.hpp"
-#include "scene_builders.hpp"
-#include "scene_geometry.hpp"
-#include "obstacle_map_changes.hpp"
-#include "vision_expert.hpp"
+#include "lib/camera/camera_messages.hpp"
+#include "lib/common/channels.hpp"
+#include "experts/vision/depth_rays.hpp"
+#include "experts/vision/obstacle_mapper.hpp"
+#include "lib/camera/frame_compressor.hpp"
+#include "lib/wire/reject_counter.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
+#include "lib/scene/ray_caster.hpp"
+#include "tests/experts/support/scene_builders.hpp"
+#include "lib/scene/scene_geometry.hpp"
+#include "lib/wire/obstacle_map_changes.hpp"
+#include "experts/vision/vision_expert.hpp"
 
 using namespace beft;
 

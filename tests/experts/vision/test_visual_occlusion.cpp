@@ -1,11 +1,11 @@
 // Vision expert logic, part 1: visual occlusion O_v from instance images.
 #include <gtest/gtest.h>
 
-#include "camera_messages.hpp"
-#include "ray_caster.hpp"
-#include "scene_builders.hpp"
-#include "scene_geometry.hpp"
-#include "visual_occlusion.hpp"
+#include "lib/camera/camera_messages.hpp"
+#include "lib/scene/ray_caster.hpp"
+#include "tests/experts/support/scene_builders.hpp"
+#include "lib/scene/scene_geometry.hpp"
+#include "experts/vision/visual_occlusion.hpp"
 
 using namespace beft;
 

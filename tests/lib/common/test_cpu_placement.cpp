@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cpu_placement.hpp"
+#include "lib/common/cpu_placement.hpp"
 
 namespace {
 

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "heap_retention.hpp"
+#include "lib/common/heap_retention.hpp"
 
 namespace {
 

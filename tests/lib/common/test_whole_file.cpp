@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "whole_file.hpp"
+#include "lib/common/whole_file.hpp"
 
 namespace {
 

@@ -19,11 +19,11 @@
 #include <beft/run_status_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "channel_history.hpp"
-#include "channels.hpp"
-#include "lcm_url.hpp"
-#include "live_runner.hpp"
-#include "log_replay.hpp"
+#include "lib/wire/channel_history.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/common/lcm_url.hpp"
+#include "lib/expert/live_runner.hpp"
+#include "lib/expert/log_replay.hpp"
 
 using namespace beft;
 using namespace std::chrono_literals;

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "helper_task.hpp"
+#include "lib/expert/helper_task.hpp"
 
 using beft::expert::HelperTask;
 using beft::expert::WaitOnExit;

@@ -6,7 +6,7 @@
 
 #include <beft/scene_objects_t.hpp>
 
-#include "id_index.hpp"
+#include "lib/expert/id_index.hpp"
 
 using namespace beft;
 

@@ -7,12 +7,12 @@
 
 #include <algorithm>
 
-#include "scene_builders.hpp"
-#include "expert.hpp"
-#include "hypotheses_input.hpp"
-#include "hypothesis_changes.hpp"
-#include "obstacle_map_input.hpp"
-#include "scene_input.hpp"
+#include "tests/experts/support/scene_builders.hpp"
+#include "lib/expert/expert.hpp"
+#include "lib/expert/hypotheses_input.hpp"
+#include "lib/wire/hypothesis_changes.hpp"
+#include "lib/expert/obstacle_map_input.hpp"
+#include "lib/expert/scene_input.hpp"
 
 using namespace beft;
 

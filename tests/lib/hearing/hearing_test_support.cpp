@@ -1,4 +1,4 @@
-#include "hearing_test_support.hpp"
+#include "tests/lib/hearing/hearing_test_support.hpp"
 
 #include <cmath>
 #include <filesystem>

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "binaural_renderer.hpp"
-#include "hrir_set.hpp"
+#include "lib/hearing/binaural_renderer.hpp"
+#include "lib/hearing/hrir_set.hpp"
 
 namespace beft::hearing::test {
 

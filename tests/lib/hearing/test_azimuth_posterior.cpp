@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "azimuth_posterior.hpp"
+#include "lib/hearing/azimuth_posterior.hpp"
 
 namespace beft::hearing {
 namespace {

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "binaural_cues.hpp"
-#include "binaural_renderer.hpp"
-#include "hearing_test_support.hpp"
+#include "lib/hearing/binaural_cues.hpp"
+#include "lib/hearing/binaural_renderer.hpp"
+#include "tests/lib/hearing/hearing_test_support.hpp"
 
 using namespace beft::hearing;
 using namespace beft::hearing::test;

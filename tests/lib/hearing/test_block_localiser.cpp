@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "block_localiser.hpp"
-#include "stimuli.hpp"
+#include "lib/hearing/block_localiser.hpp"
+#include "lib/hearing/trials/stimuli.hpp"
 
 namespace beft::hearing {
 namespace {

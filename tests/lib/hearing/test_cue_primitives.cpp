@@ -4,10 +4,10 @@
 #include <cmath>
 #include <random>
 
-#include "band_signature.hpp"
-#include "frequency_bands.hpp"
-#include "gcc_phat.hpp"
-#include "stimuli.hpp"
+#include "lib/hearing/band_signature.hpp"
+#include "lib/hearing/frequency_bands.hpp"
+#include "lib/hearing/gcc_phat.hpp"
+#include "lib/hearing/trials/stimuli.hpp"
 
 namespace beft::hearing {
 namespace {

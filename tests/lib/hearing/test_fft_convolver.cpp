@@ -5,7 +5,7 @@
 #include <random>
 #include <thread>
 
-#include "fft_convolver.hpp"
+#include "lib/hearing/fft_convolver.hpp"
 
 using namespace beft::hearing;
 

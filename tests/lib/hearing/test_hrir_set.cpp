@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "binaural_cues.hpp"
-#include "hearing_test_support.hpp"
-#include "hrir_set.hpp"
+#include "lib/hearing/binaural_cues.hpp"
+#include "tests/lib/hearing/hearing_test_support.hpp"
+#include "lib/hearing/hrir_set.hpp"
 
 using namespace beft::hearing;
 using namespace beft::hearing::test;

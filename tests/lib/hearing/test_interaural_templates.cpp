@@ -1,7 +1,7 @@
 // The MIT KEMAR templates: orientation, plausible ITD and ILD, refusals.
 #include <gtest/gtest.h>
 
-#include "interaural_templates.hpp"
+#include "lib/hearing/interaural_templates.hpp"
 
 namespace beft::hearing {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <cstdio>
 
-#include "localisation_trials.hpp"
+#include "lib/hearing/trials/localisation_trials.hpp"
 
 namespace beft::hearing {
 namespace {

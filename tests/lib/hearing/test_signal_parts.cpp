@@ -5,11 +5,11 @@
 #include <cmath>
 #include <vector>
 
-#include "binaural_cues.hpp"
-#include "fft_convolver.hpp"
-#include "looped_signal.hpp"
-#include "occlusion_filter.hpp"
-#include "sensor_noise.hpp"
+#include "lib/hearing/binaural_cues.hpp"
+#include "lib/hearing/fft_convolver.hpp"
+#include "lib/hearing/looped_signal.hpp"
+#include "lib/hearing/occlusion_filter.hpp"
+#include "lib/hearing/sensor_noise.hpp"
 
 using namespace beft::hearing;
 

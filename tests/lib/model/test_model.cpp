@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "model.hpp"
+#include "lib/model/model.hpp"
 
 using namespace beft::model;
 

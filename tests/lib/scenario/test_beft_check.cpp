@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scenario_test_dir.hpp"
+#include "tests/lib/scenario/scenario_test_dir.hpp"
 
 namespace beft::scenario {
 namespace {

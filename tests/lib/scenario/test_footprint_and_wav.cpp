@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "footprint.hpp"
-#include "scenario_test_dir.hpp"
-#include "wav_info.hpp"
+#include "lib/scenario/footprint.hpp"
+#include "tests/lib/scenario/scenario_test_dir.hpp"
+#include "lib/scenario/wav_info.hpp"
 
 namespace beft::scenario {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "load_scenario.hpp"
-#include "scenario_test_dir.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "tests/lib/scenario/scenario_test_dir.hpp"
 
 namespace beft::scenario {
 namespace {

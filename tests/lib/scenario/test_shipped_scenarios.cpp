@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
-#include "footprint.hpp"
-#include "load_scenario.hpp"
-#include "wav_info.hpp"
+#include "lib/scenario/footprint.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "lib/scenario/wav_info.hpp"
 
 namespace beft::scenario {
 namespace {

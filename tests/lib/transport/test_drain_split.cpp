@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "transport.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace {
 

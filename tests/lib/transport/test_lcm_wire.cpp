@@ -1,6 +1,6 @@
 // LCM's UDP datagram format: parsing short messages and fragments, refusing
 // malformed datagrams, and putting fragments back together in any order.
-#include "lcm_wire.hpp"
+#include "lib/transport/detail/lcm_wire.hpp"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,6 +1,6 @@
 // The kernel-side channel filter: the compiled BPF program on a real UDP
 // socket fed hand-built LCM datagrams, then on a real udpm LCM instance.
-#include "udpm_filter.hpp"
+#include "lib/transport/detail/udpm_filter.hpp"
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -20,9 +20,9 @@
 #include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
 
-#include "free_port.hpp"
-#include "control_messages.hpp"
-#include "lcm_url.hpp"
+#include "lib/launch/free_port.hpp"
+#include "lib/transport/control_messages.hpp"
+#include "lib/common/lcm_url.hpp"
 
 namespace {
 

@@ -2,7 +2,7 @@
 // what the filter lets through arrives whole and in order (fragmented
 // messages too), a socket nobody reads keeps what comes, an unfiltered socket
 // counts what the kernel drops, and the LCM fallback gives the same messages.
-#include "udpm_receiver.hpp"
+#include "lib/transport/detail/udpm_receiver.hpp"
 
 #include <chrono>
 #include <cstdlib>
@@ -14,10 +14,10 @@
 #include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
 
-#include "free_port.hpp"
-#include "control_messages.hpp"
-#include "lcm_url.hpp"
-#include "transport.hpp"
+#include "lib/launch/free_port.hpp"
+#include "lib/transport/control_messages.hpp"
+#include "lib/common/lcm_url.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace {
 

@@ -9,9 +9,9 @@
 #include <beft/camera_frame_t.hpp>
 #include <beft/fire_t.hpp>
 
-#include "earlier_layouts.hpp"
-#include "guarded_decode.hpp"
-#include "log_reader.hpp"
+#include "lib/wire/earlier_layouts.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/wire/log_reader.hpp"
 
 using namespace beft::wire;
 

@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "hypothesis_changes.hpp"
+#include "lib/wire/hypothesis_changes.hpp"
 
 using namespace beft;
 

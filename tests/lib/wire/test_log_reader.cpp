@@ -11,7 +11,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "log_reader.hpp"
+#include "lib/wire/log_reader.hpp"
 
 using beft::wire::LogEvent;
 using beft::wire::LogReader;

@@ -15,10 +15,10 @@
 #include <beft/hypotheses_t.hpp>
 #include <beft/task_command_t.hpp>
 
-#include "embedded_schemas.hpp"
+#include "lib/wire/embedded_schemas.hpp"
 #include "every_beft_type.hpp"
-#include "guarded_decode.hpp"
-#include "lcm_schema.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/wire/lcm_schema.hpp"
 
 using namespace beft::wire;
 

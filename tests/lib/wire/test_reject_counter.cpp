@@ -1,7 +1,7 @@
 // Refused messages: counted per channel, logged at most once a second per channel.
 #include <gtest/gtest.h>
 
-#include "reject_counter.hpp"
+#include "lib/wire/reject_counter.hpp"
 
 using beft::wire::Fault;
 using beft::wire::RejectCounter;

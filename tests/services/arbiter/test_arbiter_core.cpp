@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "arbiter_core.hpp"
-#include "pnml_reader.hpp"
+#include "services/arbiter/arbiter_core.hpp"
+#include "lib/petri/pnml_reader.hpp"
 
 namespace beft::arbiter {
 namespace {

@@ -26,9 +26,9 @@
 #include <thread>
 #include <vector>
 
-#include "channels.hpp"
-#include "lcm_arbiter.hpp"
-#include "lcm_url.hpp"
+#include "lib/common/channels.hpp"
+#include "services/arbiter/lcm_arbiter.hpp"
+#include "lib/common/lcm_url.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "firing_log.hpp"
+#include "services/arbiter/firing_log.hpp"
 
 using namespace beft::arbiter;
 

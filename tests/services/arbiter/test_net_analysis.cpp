@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "coverability.hpp"
-#include "net_analysis.hpp"
-#include "pnml_reader.hpp"
+#include "lib/petri/coverability.hpp"
+#include "lib/petri/net_analysis.hpp"
+#include "lib/petri/pnml_reader.hpp"
 
 namespace beft::arbiter {
 namespace {

@@ -9,8 +9,8 @@
 #include <fstream>
 #include <string>
 
-#include "net_analysis.hpp"
-#include "pnml_reader.hpp"
+#include "lib/petri/net_analysis.hpp"
+#include "lib/petri/pnml_reader.hpp"
 
 namespace beft::arbiter {
 namespace {

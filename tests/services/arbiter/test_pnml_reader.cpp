@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pnml_reader.hpp"
+#include "lib/petri/pnml_reader.hpp"
 
 namespace beft::arbiter {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "pnml_reader.hpp"
-#include "reachability.hpp"
+#include "lib/petri/pnml_reader.hpp"
+#include "lib/petri/reachability_graph.hpp"
 
 namespace beft::arbiter {
 namespace {

@@ -1,7 +1,7 @@
-#include "obstacle_map_codec.hpp"
-#include "planner_service.hpp"
-#include "planner_test_support.hpp"
-#include "planning_map.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
+#include "services/planner/planner_service.hpp"
+#include "tests/planners/planner_test_support.hpp"
+#include "planners/planning_map.hpp"
 
 #include <beft/plan_request_t.hpp>
 #include <beft/plan_result_t.hpp>

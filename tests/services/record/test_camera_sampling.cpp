@@ -1,7 +1,7 @@
 // Which camera frames a recording keeps (--camera all | none | every:N), and
 // the recorder keeping exactly those, every other message untouched.
-#include "camera_sampling.hpp"
-#include "recorder.hpp"
+#include "lib/launch/camera_sampling.hpp"
+#include "services/record/recorder.hpp"
 
 #include <unistd.h>
 

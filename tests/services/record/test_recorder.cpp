@@ -1,7 +1,7 @@
 // The run recorder: in-process on memq (order, content, exclusions, refusals),
 // then beft-record as a process stopped right after a burst of messages.
-#include "recorder.hpp"
-#include "timestamp_order.hpp"
+#include "services/record/recorder.hpp"
+#include "services/record/timestamp_order.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -20,8 +20,8 @@
 #include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
 
-#include "free_port.hpp"
-#include "lcm_url.hpp"
+#include "lib/launch/free_port.hpp"
+#include "lib/common/lcm_url.hpp"
 
 extern char** environ;
 

@@ -2,7 +2,7 @@
 
 #include <tinyxml2.h>
 
-#include "scene_mirror.hpp"
+#include "services/ssr_bridge/scene_mirror.hpp"
 
 using namespace beft::ssr_bridge;
 

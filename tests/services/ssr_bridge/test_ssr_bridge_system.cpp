@@ -31,11 +31,11 @@
 #include <beft/scene_objects_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "free_port.hpp"
-#include "lcm_url.hpp"
-#include "run_support.hpp"
-#include "ssr_conventions.hpp"
-#include "ssr_updates.hpp"
+#include "lib/launch/free_port.hpp"
+#include "lib/common/lcm_url.hpp"
+#include "tests/system/run_support.hpp"
+#include "services/ssr_bridge/ssr_conventions.hpp"
+#include "services/ssr_bridge/ssr_updates.hpp"
 
 using namespace beft::system_test;
 using namespace beft::ssr_bridge;

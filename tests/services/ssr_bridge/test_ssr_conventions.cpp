@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "ssr_conventions.hpp"
+#include "services/ssr_bridge/ssr_conventions.hpp"
 
 using namespace beft::ssr_bridge;
 

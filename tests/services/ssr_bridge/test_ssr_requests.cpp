@@ -2,7 +2,7 @@
 
 #include <tinyxml2.h>
 
-#include "ssr_requests.hpp"
+#include "services/ssr_bridge/ssr_requests.hpp"
 
 using namespace beft::ssr_bridge;
 

@@ -2,7 +2,7 @@
 
 #include <random>
 
-#include "ssr_updates.hpp"
+#include "services/ssr_bridge/ssr_updates.hpp"
 
 using namespace beft::ssr_bridge;
 

@@ -12,12 +12,12 @@
 #include <thread>
 #include <vector>
 
-#include "camera_messages.hpp"
-#include "camera_model.hpp"
-#include "ray_caster.hpp"
-#include "row_workers.hpp"
-#include "scene_geometry.hpp"
-#include "scene_solids.hpp"
+#include "lib/camera/camera_messages.hpp"
+#include "lib/scene/camera_model.hpp"
+#include "lib/scene/ray_caster.hpp"
+#include "lib/scene/row_workers.hpp"
+#include "lib/scene/scene_geometry.hpp"
+#include "lib/scene/scene_solids.hpp"
 
 using namespace beft::camera;
 

@@ -12,14 +12,14 @@
 #include <beft/camera_frame_t.hpp>
 #include <beft/robot_command_t.hpp>
 
-#include "camera_messages.hpp"
-#include "channels.hpp"
-#include "frame_compressor.hpp"
-#include "frame_decoding.hpp"
-#include "guarded_decode.hpp"
-#include "load_scenario.hpp"
-#include "log_reader.hpp"
-#include "world_simulation.hpp"
+#include "lib/camera/camera_messages.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/camera/frame_compressor.hpp"
+#include "lib/camera/frame_decoding.hpp"
+#include "lib/wire/guarded_decode.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "lib/wire/log_reader.hpp"
+#include "sim/world/world_simulation.hpp"
 
 using beft::camera_frame_t;
 using namespace beft::camera;

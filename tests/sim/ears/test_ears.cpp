@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "ear_signals.hpp"
+#include "sim/ears/ear_signals.hpp"
 
 using namespace beft;
 

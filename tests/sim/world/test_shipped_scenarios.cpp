@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "load_scenario.hpp"
-#include "ray_caster.hpp"
-#include "world_simulation.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "lib/scene/ray_caster.hpp"
+#include "sim/world/world_simulation.hpp"
 
 using beft::world::WorldSimulation;
 

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "robot_platform.hpp"
-#include "scene_timeline.hpp"
-#include "world_simulation.hpp"
-#include "world_test_scenarios.hpp"
+#include "sim/world/robot_platform.hpp"
+#include "sim/world/scene_timeline.hpp"
+#include "sim/world/world_simulation.hpp"
+#include "tests/sim/world/world_test_scenarios.hpp"
 
 using namespace beft::world;
 using namespace beft::world::testing;

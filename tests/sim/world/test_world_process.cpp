@@ -29,13 +29,13 @@
 #include <beft/scene_objects_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "camera_messages.hpp"
-#include "channels.hpp"
-#include "frame_compressor.hpp"
-#include "frame_decoding.hpp"
-#include "lcm_url.hpp"
-#include "load_scenario.hpp"
-#include "world_simulation.hpp"
+#include "lib/camera/camera_messages.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/camera/frame_compressor.hpp"
+#include "lib/camera/frame_decoding.hpp"
+#include "lib/common/lcm_url.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "sim/world/world_simulation.hpp"
 
 extern char** environ;
 

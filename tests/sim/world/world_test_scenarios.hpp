@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "scenario.hpp"
+#include "lib/scenario/scenario.hpp"
 
 namespace beft::world::testing {
 

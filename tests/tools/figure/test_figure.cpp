@@ -7,10 +7,10 @@
 #include <cmath>
 #include <string>
 
-#include "figure3.hpp"
-#include "load_scenario.hpp"
-#include "run_support.hpp"
-#include "scene_grid.hpp"
+#include "tools/figure/figure3.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "tests/system/run_support.hpp"
+#include "tools/figure/scene_grid.hpp"
 
 namespace {
 

@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include "district_layout.hpp"
-#include "generate_district.hpp"
-#include "load_scenario.hpp"
-#include "reachability.hpp"
+#include "tools/generate/district_layout.hpp"
+#include "tools/generate/generate_district.hpp"
+#include "lib/scenario/load_scenario.hpp"
+#include "lib/scenario/reachability.hpp"
 
 namespace beft::generate {
 namespace {

@@ -7,8 +7,8 @@
 #include <beft/camera_frame_t.hpp>
 #include <beft/fire_t.hpp>
 
-#include "message_check.hpp"
-#include "message_damage.hpp"
+#include "lib/wire/message_check.hpp"
+#include "tools/inject/message_damage.hpp"
 
 using namespace beft::inject;
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "free_port.hpp"
-#include "launch_file.hpp"
-#include "run_parameters.hpp"
-#include "supervisor.hpp"
+#include "lib/launch/free_port.hpp"
+#include "lib/launch/launch_file.hpp"
+#include "lib/launch/run_parameters.hpp"
+#include "lib/launch/supervisor.hpp"
 
 using namespace beft::launch;
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "ear_recording.hpp"
+#include "tools/listen/ear_recording.hpp"
 
 using namespace beft;
 

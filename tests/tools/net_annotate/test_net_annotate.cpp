@@ -6,9 +6,9 @@
 #include <sstream>
 #include <string>
 
-#include "pnml_annotation.hpp"
-#include "pnml_reader.hpp"
-#include "run_support.hpp"
+#include "tools/net_annotate/pnml_annotation.hpp"
+#include "lib/petri/pnml_reader.hpp"
+#include "tests/system/run_support.hpp"
 
 namespace {
 

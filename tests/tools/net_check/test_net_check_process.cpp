@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "run_support.hpp"
+#include "tests/system/run_support.hpp"
 
 namespace {
 

@@ -8,11 +8,11 @@
 
 #include <string>
 
-#include "net_dot.hpp"
-#include "pnml_reader.hpp"
-#include "run_identity.hpp"
-#include "run_marking.hpp"
-#include "run_support.hpp"
+#include "tools/net_draw/net_dot.hpp"
+#include "lib/petri/pnml_reader.hpp"
+#include "lib/wire/run_identity.hpp"
+#include "tools/net_draw/run_marking.hpp"
+#include "tests/system/run_support.hpp"
 
 namespace {
 

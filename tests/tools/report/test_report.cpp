@@ -22,15 +22,15 @@
 #include <beft/scene_objects_t.hpp>
 #include <beft/task_stack_t.hpp>
 
-#include "channels.hpp"
-#include "hypothesis_changes.hpp"
-#include "map_picture.hpp"
-#include "obstacle_map_codec.hpp"
-#include "report_files.hpp"
-#include "report_json.hpp"
-#include "run_record.hpp"
-#include "run_scoring.hpp"
-#include "weights_picture.hpp"
+#include "lib/common/channels.hpp"
+#include "lib/wire/hypothesis_changes.hpp"
+#include "lib/report/map_picture.hpp"
+#include "lib/wire/obstacle_map_codec.hpp"
+#include "lib/report/report_files.hpp"
+#include "lib/report/report_json.hpp"
+#include "lib/report/run_record.hpp"
+#include "lib/report/run_scoring.hpp"
+#include "lib/report/weights_picture.hpp"
 
 namespace beft::report {
 namespace {

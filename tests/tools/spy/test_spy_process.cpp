@@ -21,7 +21,7 @@
 
 #include <beft/robot_state_t.hpp>
 
-#include "lcm_url.hpp"
+#include "lib/common/lcm_url.hpp"
 
 extern char** environ;
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "traffic_table.hpp"
+#include "tools/spy/traffic_table.hpp"
 
 using beft::spy::TrafficTable;
 

@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "task_cli.hpp"
-#include "task_messages.hpp"
+#include "tools/task/task_cli.hpp"
+#include "lib/task/task_messages.hpp"
 
 namespace beft::task_cli {
 namespace {

@@ -1,4 +1,4 @@
-#include "localisation_trials.hpp"
+#include "lib/hearing/trials/localisation_trials.hpp"
 
 #include <time.h>
 

@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "block_localiser.hpp"
-#include "stimuli.hpp"
+#include "lib/hearing/block_localiser.hpp"
+#include "lib/hearing/trials/stimuli.hpp"
 
 namespace beft::hearing::trials {
 

@@ -1,8 +1,8 @@
-#include "stimuli.hpp"
+#include "lib/hearing/trials/stimuli.hpp"
 
 #include <sndfile.h>
 
-#include "hrir_set.hpp"
+#include "lib/hearing/hrir_set.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "lcm_wire.hpp"
+#include "lib/transport/detail/lcm_wire.hpp"
 
 #include <cstring>
 

@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "transport.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace beft::lcm_wire {
 

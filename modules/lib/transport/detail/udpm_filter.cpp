@@ -1,4 +1,4 @@
-#include "udpm_filter.hpp"
+#include "lib/transport/detail/udpm_filter.hpp"
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -14,8 +14,8 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "log.hpp"
-#include "udpm_receiver.hpp"
+#include "lib/common/log.hpp"
+#include "lib/transport/detail/udpm_receiver.hpp"
 
 namespace beft::udpm_filter {
 

@@ -22,7 +22,7 @@
 #include <string_view>
 #include <vector>
 
-#include "transport.hpp"
+#include "lib/transport/transport.hpp"
 
 namespace lcm {
 class LCM;

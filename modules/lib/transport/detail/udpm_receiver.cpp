@@ -1,4 +1,4 @@
-#include "udpm_receiver.hpp"
+#include "lib/transport/detail/udpm_receiver.hpp"
 
 #include <arpa/inet.h>
 #include <poll.h>

@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "lcm_wire.hpp"
-#include "udpm_filter.hpp"
+#include "lib/transport/detail/lcm_wire.hpp"
+#include "lib/transport/detail/udpm_filter.hpp"
 
 namespace beft::udpm {
 

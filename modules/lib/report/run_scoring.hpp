@@ -1,0 +1,105 @@
+// Scoring a run against ground truth: which persons were found, where, how
+// sure and when; which hypotheses were falsified; what was missed.
+//
+// A victim is found when a hypothesis, at the end of the run, has `person` as
+// its best fused category with a confidence of at least person_confidence,
+// was seen by vision and is not falsified. Being heard is not enough: a radio
+// playing a voice sounds like a person until the camera shows it (decoy.xml).
+// The hypothesis is matched to the ground-truth person it names (fusion keys
+// hypotheses by object id); failing that, to the nearest person not yet
+// matched within match_radius. A found hypothesis that matches no person is a
+// false alarm; two hypotheses for the same person keep the more confident one.
+#pragma once
+
+#include <optional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "lib/report/run_record.hpp"
+#include "lib/scenario/scenario.hpp"
+
+namespace beft::report {
+
+struct ScoringOptions {
+  double person_confidence = 0.6;   // minimum fused confidence of `person` [0..1]
+  double match_radius = 2.0;        // spatial match when ids differ [m]
+  std::string person_label = "person";
+  std::optional<double> wall_time_s;  // as measured by the runner; else from log timestamps
+  bool log_incomplete = false;         // the runner says the recorder died during the run
+};
+
+struct VictimEntry {
+  std::string object;       // ground-truth person id
+  std::string hypothesis;   // the hypothesis' object id
+  double x = 0, y = 0;      // estimated position [m]
+  double error_m = 0;       // distance to the true position at the end of the run [m]
+  double confidence = 0;    // fused confidence of `person`
+  bool verified = false;
+  double found_at_s = 0;    // first sim time the hypothesis met the victim test
+};
+
+// Where the audio expert last put a sounding object, and how far off it was.
+struct HeardEntry {
+  std::string object;
+  double x = 0, y = 0;            // estimate [m]
+  double true_x = 0, true_y = 0;  // [m]
+  double error_m = 0;
+  double at_s = 0;                // sim time of the estimate [s]
+};
+
+struct FalsifiedEntry {
+  std::string object;       // hypothesis object id
+  double x = 0, y = 0;      // estimated position [m]
+  std::string heard_as, seen_as;
+  double settled_at_s = -1;
+};
+
+struct FalseAlarm {
+  std::string hypothesis;
+  double x = 0, y = 0;
+  double confidence = 0;
+  std::string reason;
+};
+
+struct RunReport {
+  std::string scenario;
+  std::string log_path;
+  bool completed = false;       // every person found and every hypothesis settled
+  double sim_time_s = 0;
+  double wall_time_s = 0;           // the whole run, start and stop of every process included
+  bool wall_time_measured = false;  // from --wall-time rather than log timestamps
+  double ticking_time_s = 0;        // the lockstep loop: first FIRE to last DONE (log times)
+  int64_t ticks = 0;
+  double ticks_per_s = 0;       // ticks / ticking time (wall time if that is unknown); 0 if neither is
+  double realtime_factor = 0;   // sim time / ticking time (or wall time)
+  double overall_realtime_factor = 0;  // sim time / wall time
+  double path_length_m = 0;
+  int collisions = 0;
+  int persons = 0;              // ground-truth persons
+  std::vector<VictimEntry> victims;
+  std::vector<FalsifiedEntry> falsified;
+  std::vector<HeardEntry> heard;        // every object the audio expert reported, by id
+  std::vector<std::string> missed;      // ground-truth persons not found
+  std::vector<FalseAlarm> false_alarms;
+  std::vector<std::string> unsettled;   // heard, neither verified nor falsified
+  int hypotheses = 0;
+  std::string end_reason;
+  std::map<std::string, int64_t> rejected_messages;  // per channel: malformed or of another type
+  std::string log_damage;                             // "" when the log was whole
+  bool log_complete = true;                           // false when the recorder died during the run
+  int64_t other_run_messages = 0;                     // another run's messages heard on the URL, left out
+  double person_confidence = 0;
+};
+
+// Fills what the log lacks (no GT_OBJECTS: objects, world size, dt, duration,
+// name) from the scenario file. Returns warnings, e.g. a name mismatch.
+std::vector<std::string> applyScenario(RunRecord& record, const scenario::Scenario& scenario);
+
+RunReport scoreRun(const RunRecord& record, const ScoringOptions& options);
+
+// A hypothesis counts as settled when vision verified or falsified it, or when
+// it was never heard (nothing to verify).
+bool isSettled(const HypothesisState& hypothesis);
+
+}  // namespace beft::report
