@@ -82,85 +82,116 @@ void writeSummaryCsv(const std::string& file, const std::vector<Summary>& rows) 
   if (!out) throw std::runtime_error(file + ": write failed");
 }
 
+namespace {
+
+// The axes of the length-ratio plot: planning time on a log scale (whole
+// decades), length ratio in steps of 0.05 (at most 2).
+struct RatioTimeAxes {
+  cv::Rect plot;
+  double t_min = 1e9, t_max = 1e-9, r_min = 0.95, r_max = 1.2;
+  double lx_min = 0, lx_max = 0;  // decades
+
+  cv::Point at(double time_ms, double ratio) const {
+    const double fx = (std::log10(std::max(time_ms, 1e-3)) - lx_min) / (lx_max - lx_min);
+    const double fy = (std::min(ratio, r_max) - r_min) / (r_max - r_min);
+    return cv::Point(plot.x + static_cast<int>(fx * plot.width), plot.y + plot.height - static_cast<int>(fy * plot.height));
+  }
+};
+
+RatioTimeAxes axesOfSuccesses(const std::vector<RunRecord>& runs, const cv::Rect& plot) {
+  RatioTimeAxes axes;
+  axes.plot = plot;
+  for (const RunRecord& r : runs) {
+    if (!r.success) continue;
+    axes.t_min = std::min(axes.t_min, std::max(r.time_ms, 1e-3));
+    axes.t_max = std::max(axes.t_max, std::max(r.time_ms, 1e-3));
+    axes.r_min = std::min(axes.r_min, r.ratio);
+    axes.r_max = std::max(axes.r_max, r.ratio);
+  }
+  if (axes.t_min > axes.t_max) { axes.t_min = 0.1; axes.t_max = 1000; }
+  axes.lx_min = std::floor(std::log10(axes.t_min));
+  axes.lx_max = std::max(axes.lx_min + 1, std::ceil(std::log10(axes.t_max)));
+  axes.r_min = std::floor(axes.r_min * 20) / 20;
+  axes.r_max = std::min(2.0, std::ceil(axes.r_max * 20) / 20);
+  return axes;
+}
+
+void putLabel(cv::Mat& image, const std::string& s, cv::Point at, double scale = 0.45,
+              cv::Scalar colour = {0, 0, 0}) {
+  cv::putText(image, s, at, cv::FONT_HERSHEY_SIMPLEX, scale, colour, 1, cv::LINE_AA);
+}
+
+// Grid: decades of time, steps of 0.05 in ratio; the optimum line at 1.
+void drawRatioTimeGrid(cv::Mat& image, const RatioTimeAxes& axes) {
+  const cv::Rect& plot = axes.plot;
+  for (int decade = static_cast<int>(axes.lx_min); decade <= static_cast<int>(axes.lx_max); ++decade) {
+    const int x = axes.at(std::pow(10.0, decade), axes.r_min).x;
+    cv::line(image, {x, plot.y}, {x, plot.y + plot.height}, cv::Scalar(225, 225, 225));
+    char label[32];
+    std::snprintf(label, sizeof label, decade >= 0 ? "%.0f" : "%g", std::pow(10.0, decade));
+    putLabel(image, label, {x - 10, plot.y + plot.height + 20});
+  }
+  const double ratio_step = (axes.r_max - axes.r_min) > 0.5 ? 0.1 : 0.05;
+  for (double ratio = axes.r_min; ratio <= axes.r_max + 1e-9; ratio += ratio_step) {
+    const int y = axes.at(axes.t_min, ratio).y;
+    cv::line(image, {plot.x, y}, {plot.x + plot.width, y}, cv::Scalar(225, 225, 225));
+    putLabel(image, number(ratio, 2), {plot.x - 45, y + 5});
+  }
+  if (1.0 >= axes.r_min && 1.0 <= axes.r_max) {
+    const int y = axes.at(axes.t_min, 1.0).y;
+    cv::line(image, {plot.x, y}, {plot.x + plot.width, y}, cv::Scalar(120, 120, 120), 1, cv::LINE_AA);
+    putLabel(image, "octile optimum", {plot.x + 5, y - 5}, 0.4, {90, 90, 90});
+  }
+}
+
+// One planner's runs as small dots, its median as a large marker, and its
+// line of the legend (the index-th).
+void drawPlannerRuns(cv::Mat& image, const RatioTimeAxes& axes, const std::vector<RunRecord>& runs,
+                     const std::string& planner, size_t index) {
+  const cv::Rect& plot = axes.plot;
+  const cv::Scalar colour = kPalette[index % (sizeof kPalette / sizeof kPalette[0])];
+  std::vector<double> times, ratios;
+  int total = 0, successes = 0;
+  cv::Mat overlay = image.clone();
+  for (const RunRecord& r : runs) {
+    if (r.planner != planner) continue;
+    ++total;
+    if (!r.success) continue;
+    ++successes;
+    times.push_back(r.time_ms);
+    ratios.push_back(r.ratio);
+    cv::circle(overlay, axes.at(r.time_ms, r.ratio), 3, colour, cv::FILLED, cv::LINE_AA);
+  }
+  cv::addWeighted(overlay, 0.45, image, 0.55, 0, image);
+  if (!times.empty()) {
+    const cv::Point centre = axes.at(median(times), median(ratios));
+    cv::drawMarker(image, centre, colour, cv::MARKER_DIAMOND, 18, 3, cv::LINE_AA);
+  }
+  const int y = plot.y + 20 + 24 * static_cast<int>(index);
+  cv::drawMarker(image, {plot.x + plot.width + 20, y - 4}, colour, cv::MARKER_DIAMOND, 12, 2, cv::LINE_AA);
+  const std::string rate = total > 0 ? number(100.0 * successes / total, 0) + "%" : "-";
+  putLabel(image, planner + "  " + rate, {plot.x + plot.width + 35, y}, 0.45, colour);
+}
+
+}  // namespace
+
 cv::Mat plotLengthRatioVsTime(const std::vector<RunRecord>& runs, const std::vector<std::string>& planners,
                               const std::string& title) {
   const int width = 1100, height = 720;
   const int left = 80, right = 260, top = 50, bottom = 70;
   cv::Mat image(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
   const cv::Rect plot(left, top, width - left - right, height - top - bottom);
+  const RatioTimeAxes axes = axesOfSuccesses(runs, plot);
 
-  double t_min = 1e9, t_max = 1e-9, r_min = 0.95, r_max = 1.2;
-  for (const RunRecord& r : runs) {
-    if (!r.success) continue;
-    t_min = std::min(t_min, std::max(r.time_ms, 1e-3));
-    t_max = std::max(t_max, std::max(r.time_ms, 1e-3));
-    r_min = std::min(r_min, r.ratio);
-    r_max = std::max(r_max, r.ratio);
-  }
-  if (t_min > t_max) { t_min = 0.1; t_max = 1000; }
-  const double lx_min = std::floor(std::log10(t_min));
-  const double lx_max = std::max(lx_min + 1, std::ceil(std::log10(t_max)));
-  r_min = std::floor(r_min * 20) / 20;
-  r_max = std::min(2.0, std::ceil(r_max * 20) / 20);
-  const auto to_pixel = [&](double time_ms, double ratio) {
-    const double fx = (std::log10(std::max(time_ms, 1e-3)) - lx_min) / (lx_max - lx_min);
-    const double fy = (std::min(ratio, r_max) - r_min) / (r_max - r_min);
-    return cv::Point(plot.x + static_cast<int>(fx * plot.width), plot.y + plot.height - static_cast<int>(fy * plot.height));
-  };
-  const auto text = [&](const std::string& s, cv::Point at, double scale = 0.45, cv::Scalar colour = {0, 0, 0}) {
-    cv::putText(image, s, at, cv::FONT_HERSHEY_SIMPLEX, scale, colour, 1, cv::LINE_AA);
-  };
-
-  // Grid: decades of time, steps of 0.05 in ratio; the optimum line at 1.
-  for (int decade = static_cast<int>(lx_min); decade <= static_cast<int>(lx_max); ++decade) {
-    const int x = to_pixel(std::pow(10.0, decade), r_min).x;
-    cv::line(image, {x, plot.y}, {x, plot.y + plot.height}, cv::Scalar(225, 225, 225));
-    char label[32];
-    std::snprintf(label, sizeof label, decade >= 0 ? "%.0f" : "%g", std::pow(10.0, decade));
-    text(label, {x - 10, plot.y + plot.height + 20});
-  }
-  const double ratio_step = (r_max - r_min) > 0.5 ? 0.1 : 0.05;
-  for (double ratio = r_min; ratio <= r_max + 1e-9; ratio += ratio_step) {
-    const int y = to_pixel(t_min, ratio).y;
-    cv::line(image, {plot.x, y}, {plot.x + plot.width, y}, cv::Scalar(225, 225, 225));
-    text(number(ratio, 2), {plot.x - 45, y + 5});
-  }
-  if (1.0 >= r_min && 1.0 <= r_max) {
-    const int y = to_pixel(t_min, 1.0).y;
-    cv::line(image, {plot.x, y}, {plot.x + plot.width, y}, cv::Scalar(120, 120, 120), 1, cv::LINE_AA);
-    text("octile optimum", {plot.x + 5, y - 5}, 0.4, {90, 90, 90});
-  }
+  drawRatioTimeGrid(image, axes);
   cv::rectangle(image, plot, cv::Scalar(0, 0, 0));
-  text("planning time [ms], log scale", {plot.x + plot.width / 2 - 110, height - 25}, 0.5);
-  text("path length / octile optimum", {10, 30}, 0.5);
-  text(title, {plot.x + 220, 30}, 0.55);
+  putLabel(image, "planning time [ms], log scale", {plot.x + plot.width / 2 - 110, height - 25}, 0.5);
+  putLabel(image, "path length / octile optimum", {10, 30}, 0.5);
+  putLabel(image, title, {plot.x + 220, 30}, 0.55);
 
   // Runs as small dots, medians as large markers with a legend.
-  for (size_t i = 0; i < planners.size(); ++i) {
-    const cv::Scalar colour = kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
-    std::vector<double> times, ratios;
-    int total = 0, successes = 0;
-    cv::Mat overlay = image.clone();
-    for (const RunRecord& r : runs) {
-      if (r.planner != planners[i]) continue;
-      ++total;
-      if (!r.success) continue;
-      ++successes;
-      times.push_back(r.time_ms);
-      ratios.push_back(r.ratio);
-      cv::circle(overlay, to_pixel(r.time_ms, r.ratio), 3, colour, cv::FILLED, cv::LINE_AA);
-    }
-    cv::addWeighted(overlay, 0.45, image, 0.55, 0, image);
-    if (!times.empty()) {
-      const cv::Point centre = to_pixel(median(times), median(ratios));
-      cv::drawMarker(image, centre, colour, cv::MARKER_DIAMOND, 18, 3, cv::LINE_AA);
-    }
-    const int y = plot.y + 20 + 24 * static_cast<int>(i);
-    cv::drawMarker(image, {plot.x + plot.width + 20, y - 4}, colour, cv::MARKER_DIAMOND, 12, 2, cv::LINE_AA);
-    const std::string rate = total > 0 ? number(100.0 * successes / total, 0) + "%" : "-";
-    text(planners[i] + "  " + rate, {plot.x + plot.width + 35, y}, 0.45, colour);
-  }
-  text("diamond: median; dots: runs", {plot.x + plot.width + 20, plot.y + plot.height}, 0.4, {90, 90, 90});
+  for (size_t i = 0; i < planners.size(); ++i) drawPlannerRuns(image, axes, runs, planners[i], i);
+  putLabel(image, "diamond: median; dots: runs", {plot.x + plot.width + 20, plot.y + plot.height}, 0.4, {90, 90, 90});
   return image;
 }
 

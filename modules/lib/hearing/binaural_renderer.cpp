@@ -93,6 +93,84 @@ ReadPosition splitShift(double shift) {
   return {static_cast<int64_t>(whole), static_cast<float>(shift - whole)};
 }
 
+// The sources' azimuth, gain and delay for each of the first `poses` poses
+// (previous, current).
+void viewSources(const BlockRequest& request, int poses, double sample_rate, Scratch& s) {
+  const HeadPose* pose_of[2] = {&request.previous, &request.current};
+  const std::size_t source_count = request.sources.size();
+  for (int p = 0; p < poses; ++p) {
+    s.views[p].resize(source_count);
+    for (std::size_t i = 0; i < source_count; ++i) {
+      const RenderedSource& source = request.sources[i];
+      const double distance = std::max(BinauralRenderer::kMinDistance, (source.position - pose_of[p]->centre).norm());
+      s.views[p][i] = {BinauralRenderer::headAzimuthDeg(*pose_of[p], source.position), source.level / distance,
+                       distance / BinauralRenderer::kSpeedOfSound * sample_rate};
+    }
+  }
+}
+
+// Share of the way from the previous pose to the current one at absolute
+// sample n, for a block of `total` samples from `first`: 1/total at the
+// block's first sample, 1 at its last, negative before the block.
+double progressAt(int64_t n, int64_t first, int total) { return static_cast<double>(n - first + 1) / total; }
+
+// A source's signal as it arrives at the head centre while the head stands
+// still, from absolute sample segment_first on.
+void readStill(const std::vector<float>& signal, const SourceView& view, double read_advance, int64_t segment_first,
+               int segment_length, float* segment) {
+  const ReadPosition read = splitShift(read_advance - view.delay_samples);
+  readLoopedRun(signal, segment_first + read.offset, read.fraction, static_cast<float>(view.gain), segment_length,
+                segment);
+}
+
+// The same while the head moves from the pose `before` to `after` over the
+// block of `total` samples from `first`. The delay and gain move linearly
+// over the block; before it (the history the filters need), they continue
+// the same motion backwards, at most one block's worth, which is what the
+// previous block rendered when the head moved steadily: walking towards a
+// source at 1 m/s, holding the delay there instead put a 2-sample phase jump
+// at each block's start. The read index moves by 0 to 2 samples from one
+// sample to the next: a cursor kept wrapped saves a division per sample.
+void readMoving(const std::vector<float>& signal, const SourceView& before, const SourceView& after,
+                double read_advance, int64_t segment_first, int segment_length, int64_t first, int total,
+                float* segment) {
+  const int64_t length = static_cast<int64_t>(signal.size());
+  int64_t index = 0, cursor = 0;
+  for (int j = 0; j < segment_length; ++j) {
+    const int64_t n = segment_first + j;
+    const double u = std::clamp(progressAt(n, first, total), -1.0, 1.0);
+    const double delay = before.delay_samples + u * (after.delay_samples - before.delay_samples);
+    const double gain = std::max(0.0, before.gain + u * (after.gain - before.gain));
+    const ReadPosition read = splitShift(read_advance - delay);
+    const int64_t next = n + read.offset;
+    if (j == 0 || next - index > 2 * length || index - next > 2 * length) {
+      cursor = ((next % length) + length) % length;
+    } else {
+      cursor += next - index;
+      while (cursor >= length) cursor -= length;
+      while (cursor < 0) cursor += length;
+    }
+    index = next;
+    segment[j] = static_cast<float>(gain) * readLoopedWrapped(signal, cursor, read.fraction);
+  }
+}
+
+// The chunk of a turning head, from absolute sample chunk_first: the ears of
+// the previous pose blended into those of the current one by a raised cosine
+// w = (1 - cos(pi u)) / 2, u = (j + 1) / total, from 0 to 1; the cosine by
+// rotating a phasor, one step per sample.
+void blendPoses(const Scratch& s, int history, int chunk, int64_t chunk_first, int64_t first, int total,
+                float* const ears[2]) {
+  const std::complex<double> step = std::polar(1.0, kPi / total);
+  std::complex<double> phasor = std::polar(1.0, kPi * progressAt(chunk_first, first, total));
+  for (int j = 0; j < chunk; ++j) {
+    const float w = static_cast<float>(0.5 - 0.5 * phasor.real());
+    phasor *= step;
+    for (int ear = 0; ear < 2; ++ear)
+      ears[ear][j] = (1 - w) * s.outputs[0][ear][history + j] + w * s.outputs[1][ear][history + j];
+  }
+}
+
 }  // namespace
 
 BinauralRenderer::BinauralRenderer(HrirSet hrirs, double sample_rate, OcclusionModel occlusion)
@@ -134,122 +212,78 @@ void BinauralRenderer::render(const BlockRequest& request, StereoBlock& out) con
 
   Scratch& s = threadScratch();
   const bool turning = !samePose(request.previous, request.current);
-  const int poses = turning ? 2 : 1;
-  const HeadPose* pose_of[2] = {&request.previous, &request.current};
-  const std::size_t source_count = request.sources.size();
-  for (int p = 0; p < poses; ++p) {
-    s.views[p].resize(source_count);
-    for (std::size_t i = 0; i < source_count; ++i) {
-      const RenderedSource& source = request.sources[i];
-      const double distance = std::max(kMinDistance, (source.position - pose_of[p]->centre).norm());
-      s.views[p][i] = {headAzimuthDeg(*pose_of[p], source.position), source.level / distance,
-                       distance / kSpeedOfSound * sample_rate_};
-    }
+  viewSources(request, turning ? 2 : 1, sample_rate_, s);
+  s.hrir_left.resize(hrirs_.length());
+  s.hrir_right.resize(hrirs_.length());
+  for (int chunk_start = 0; chunk_start < total; chunk_start += kMaxChunk) {
+    renderChunk(request, turning, chunk_start, std::min(kMaxChunk, total - chunk_start), out);
   }
 
+  addSensorNoise(request.noise_seed, request.first_sample, total, request.noise_rms, out.left.data(),
+                 out.right.data());
+}
+
+// One chunk of the block by overlap-save: each source as it arrives at the
+// head centre, low-passed by its occlusion and filtered by the HRIRs of each
+// pose; then the poses blended.
+void BinauralRenderer::renderChunk(const BlockRequest& request, bool turning, int chunk_start, int chunk,
+                                   StereoBlock& out) const {
+  Scratch& s = threadScratch();
+  const int poses = turning ? 2 : 1;
   const int hrir_length = hrirs_.length();
   const int history = filter_length_ - 1;
-  s.hrir_left.resize(hrir_length);
-  s.hrir_right.resize(hrir_length);
+  const int total = request.num_samples;
   const int64_t first = request.first_sample;
-  // Share of the way from the previous pose to the current one at absolute
-  // sample n: 1/total at the block's first sample, 1 at its last, negative
-  // before the block.
-  const auto progress = [&](int64_t n) { return static_cast<double>(n - first + 1) / total; };
-
-  for (int chunk_start = 0; chunk_start < total; chunk_start += kMaxChunk) {
-    const int chunk = std::min(kMaxChunk, total - chunk_start);
-    const int segment_length = chunk + history;
-    const int64_t segment_first = first + chunk_start - history;
-    const RealFft fft(fastFftSize(segment_length));
-    const int bins = fft.bins();
-    for (int p = 0; p < poses; ++p)
-      for (auto& sum : s.sums[p]) {
-        sum.resize(bins);
-        std::fill(sum.data(), sum.data() + bins, std::complex<float>(0, 0));
-      }
-    s.segment.resize(segment_length);
-
-    for (std::size_t i = 0; i < source_count; ++i) {
-      const RenderedSource& source = request.sources[i];
-      const std::vector<float>& signal = source.signal->samples;
-      // The source as it arrives at the head centre, over the chunk and the
-      // history the filters need.
-      const SourceView& before = s.views[0][i];
-      if (!turning) {
-        const ReadPosition read = splitShift(read_advance_ - before.delay_samples);
-        readLoopedRun(signal, segment_first + read.offset, read.fraction, static_cast<float>(before.gain),
-                      segment_length, s.segment.data());
-      } else {
-        // The delay and gain move linearly over the block; before it (the
-        // history the filters need), they continue the same motion
-        // backwards, at most one block's worth, which is what the previous
-        // block rendered when the head moved steadily: walking towards a
-        // source at 1 m/s, holding the delay there instead put a 2-sample
-        // phase jump at each block's start. The read index moves by 0 to 2
-        // samples from one sample to the next: a cursor kept wrapped saves
-        // a division per sample.
-        const SourceView& after = s.views[1][i];
-        const int64_t length = static_cast<int64_t>(signal.size());
-        int64_t index = 0, cursor = 0;
-        for (int j = 0; j < segment_length; ++j) {
-          const int64_t n = segment_first + j;
-          const double u = std::clamp(progress(n), -1.0, 1.0);
-          const double delay = before.delay_samples + u * (after.delay_samples - before.delay_samples);
-          const double gain = std::max(0.0, before.gain + u * (after.gain - before.gain));
-          const ReadPosition read = splitShift(read_advance_ - delay);
-          const int64_t next = n + read.offset;
-          if (j == 0 || next - index > 2 * length || index - next > 2 * length) {
-            cursor = ((next % length) + length) % length;
-          } else {
-            cursor += next - index;
-            while (cursor >= length) cursor -= length;
-            while (cursor < 0) cursor += length;
-          }
-          index = next;
-          s.segment[j] = static_cast<float>(gain) * readLoopedWrapped(signal, cursor, read.fraction);
-        }
-      }
-      fft.forward(s.segment.data(), segment_length, s.padded, s.source);
-      const std::vector<float> lowpass = occlusionFilter(source.occlusion, sample_rate_, occlusion_);
-      fft.forward(lowpass.data(), static_cast<int>(lowpass.size()), s.padded, s.lowpass);
-      multiplyInPlace(s.source, s.lowpass, bins);
-      // Linear: the ears' spectra are summed over sources, and each pose
-      // needs one inverse transform per ear whatever the number of sources.
-      for (int p = 0; p < poses; ++p) {
-        hrirs_.responsesAt(s.views[p][i].azimuth_deg, s.hrir_left.data(), s.hrir_right.data());
-        fft.forward(s.hrir_left.data(), hrir_length, s.padded, s.filter);
-        multiplyAccumulate(s.source, s.filter, bins, s.sums[p][0]);
-        fft.forward(s.hrir_right.data(), hrir_length, s.padded, s.filter);
-        multiplyAccumulate(s.source, s.filter, bins, s.sums[p][1]);
-      }
+  const int segment_length = chunk + history;
+  const int64_t segment_first = first + chunk_start - history;
+  const RealFft fft(fastFftSize(segment_length));
+  const int bins = fft.bins();
+  for (int p = 0; p < poses; ++p)
+    for (auto& sum : s.sums[p]) {
+      sum.resize(bins);
+      std::fill(sum.data(), sum.data() + bins, std::complex<float>(0, 0));
     }
+  s.segment.resize(segment_length);
 
-    for (int p = 0; p < poses; ++p)
-      for (int ear = 0; ear < 2; ++ear) fft.inverse(s.sums[p][ear], s.outputs[p][ear]);
-    // Overlap-save: the first `history` outputs wrapped round; the rest are
-    // the chunk.
-    float* ears[2] = {out.left.data() + chunk_start, out.right.data() + chunk_start};
+  for (std::size_t i = 0; i < request.sources.size(); ++i) {
+    const RenderedSource& source = request.sources[i];
+    const std::vector<float>& signal = source.signal->samples;
+    // The source as it arrives at the head centre, over the chunk and the
+    // history the filters need.
     if (!turning) {
-      for (int ear = 0; ear < 2; ++ear) {
-        const float* from_previous = s.outputs[0][ear].data() + history;
-        std::copy(from_previous, from_previous + chunk, ears[ear]);
-      }
-      continue;
+      readStill(signal, s.views[0][i], read_advance_, segment_first, segment_length, s.segment.data());
+    } else {
+      readMoving(signal, s.views[0][i], s.views[1][i], read_advance_, segment_first, segment_length, first, total,
+                 s.segment.data());
     }
-    // Raised cosine w = (1 - cos(pi u)) / 2, u = (j + 1) / total, from 0 to 1:
-    // the cosine by rotating a phasor, one step per sample.
-    const std::complex<double> step = std::polar(1.0, kPi / total);
-    std::complex<double> phasor = std::polar(1.0, kPi * progress(first + chunk_start));
-    for (int j = 0; j < chunk; ++j) {
-      const float w = static_cast<float>(0.5 - 0.5 * phasor.real());
-      phasor *= step;
-      for (int ear = 0; ear < 2; ++ear)
-        ears[ear][j] = (1 - w) * s.outputs[0][ear][history + j] + w * s.outputs[1][ear][history + j];
+    fft.forward(s.segment.data(), segment_length, s.padded, s.source);
+    const std::vector<float> lowpass = occlusionFilter(source.occlusion, sample_rate_, occlusion_);
+    fft.forward(lowpass.data(), static_cast<int>(lowpass.size()), s.padded, s.lowpass);
+    multiplyInPlace(s.source, s.lowpass, bins);
+    // Linear: the ears' spectra are summed over sources, and each pose
+    // needs one inverse transform per ear whatever the number of sources.
+    for (int p = 0; p < poses; ++p) {
+      hrirs_.responsesAt(s.views[p][i].azimuth_deg, s.hrir_left.data(), s.hrir_right.data());
+      fft.forward(s.hrir_left.data(), hrir_length, s.padded, s.filter);
+      multiplyAccumulate(s.source, s.filter, bins, s.sums[p][0]);
+      fft.forward(s.hrir_right.data(), hrir_length, s.padded, s.filter);
+      multiplyAccumulate(s.source, s.filter, bins, s.sums[p][1]);
     }
   }
 
-  addSensorNoise(request.noise_seed, first, total, request.noise_rms, out.left.data(), out.right.data());
+  for (int p = 0; p < poses; ++p)
+    for (int ear = 0; ear < 2; ++ear) fft.inverse(s.sums[p][ear], s.outputs[p][ear]);
+  // Overlap-save: the first `history` outputs wrapped round; the rest are
+  // the chunk.
+  float* ears[2] = {out.left.data() + chunk_start, out.right.data() + chunk_start};
+  if (!turning) {
+    for (int ear = 0; ear < 2; ++ear) {
+      const float* from_previous = s.outputs[0][ear].data() + history;
+      std::copy(from_previous, from_previous + chunk, ears[ear]);
+    }
+    return;
+  }
+  blendPoses(s, history, chunk, first + chunk_start, first, total, ears);
 }
 
 }  // namespace beft::hearing

@@ -87,6 +87,8 @@ class BinauralRenderer {
   static double headAzimuthDeg(const HeadPose& pose, const Eigen::Vector3d& point);
 
  private:
+  void renderChunk(const BlockRequest& request, bool turning, int chunk_start, int chunk, StereoBlock& out) const;
+
   HrirSet hrirs_;
   double sample_rate_;
   OcclusionModel occlusion_;

@@ -9,16 +9,25 @@
 
 namespace beft::hearing {
 
-namespace {
-
-constexpr int kAzimuths = AzimuthPosterior::kBins;
-
 // One frame's spectra, reduced to what the votes need.
-struct FrameSpectra {
+struct BlockLocaliser::FrameSpectra {
   std::vector<double> energy_left, energy_right;  // per band
   std::vector<std::complex<float>> cross;         // left times conjugate right, per bin with a phase template
   std::vector<float> level_db;                    // left over right power, per bin with a phase template [dB]
+
+  static FrameSpectra reduced(const std::vector<std::complex<float>>& spectrum_left,
+                              const std::vector<std::complex<float>>& spectrum_right, const FrequencyBands& bands,
+                              int phase_bins);
+  // Band b's power per bin, both ears averaged.
+  double density(const FrequencyBands& bands, int b) const {
+    const auto i = static_cast<std::size_t>(b);
+    return 0.5 * (energy_left[i] + energy_right[i]) / (bands[b].end_bin - bands[b].first_bin);
+  }
 };
+
+namespace {
+
+constexpr int kAzimuths = AzimuthPosterior::kBins;
 
 // A vote heard `shift` degrees of head turn ago, in the frame of the head now:
 // a source now at azimuth a was then at a + shift.
@@ -30,6 +39,15 @@ AzimuthVote rotated(AzimuthVote vote, int shift) {
     turned[static_cast<std::size_t>(a)] = vote.likelihood[static_cast<std::size_t>((a + shift) % kAzimuths)];
   vote.likelihood = turned;
   return vote;
+}
+
+void checkEarSignals(const std::vector<float>& left, const std::vector<float>& right) {
+  if (left.size() != right.size())
+    throw std::invalid_argument("the ear signals differ in length (" + std::to_string(left.size()) + " left, " +
+                                std::to_string(right.size()) + " right samples)");
+  for (std::size_t i = 0; i < left.size(); ++i)
+    if (!std::isfinite(left[i]) || !std::isfinite(right[i]))
+      throw std::invalid_argument("the ear signals hold a sample that is not finite (at " + std::to_string(i) + ")");
 }
 
 }  // namespace
@@ -49,23 +67,54 @@ BlockLocaliser::BlockLocaliser(InterauralTemplates templates, const LocaliserCon
   }
 }
 
+// One frame's spectra reduced to band energies and, per bin with a phase
+// template, the cross-spectrum and level difference.
+BlockLocaliser::FrameSpectra BlockLocaliser::FrameSpectra::reduced(
+    const std::vector<std::complex<float>>& spectrum_left, const std::vector<std::complex<float>>& spectrum_right,
+    const FrequencyBands& bands, int phase_bins) {
+  const int band_count = bands.size();
+  FrameSpectra frame;
+  frame.energy_left.assign(static_cast<std::size_t>(band_count), 0.0);
+  frame.energy_right.assign(static_cast<std::size_t>(band_count), 0.0);
+  for (int b = 0; b < band_count; ++b)
+    for (int k = bands[b].first_bin; k < bands[b].end_bin; ++k) {
+      frame.energy_left[static_cast<std::size_t>(b)] += std::norm(spectrum_left[static_cast<std::size_t>(k)]);
+      frame.energy_right[static_cast<std::size_t>(b)] += std::norm(spectrum_right[static_cast<std::size_t>(k)]);
+    }
+  frame.cross.resize(static_cast<std::size_t>(phase_bins));
+  frame.level_db.resize(static_cast<std::size_t>(phase_bins));
+  for (int k = 0; k < phase_bins; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    frame.cross[i] = spectrum_left[i] * std::conj(spectrum_right[i]);
+    frame.level_db[i] = static_cast<float>(
+        10 * std::log10((std::norm(spectrum_left[i]) + 1e-30) / (std::norm(spectrum_right[i]) + 1e-30)));
+  }
+  return frame;
+}
+
 void BlockLocaliser::addVotes(const std::vector<float>& left, const std::vector<float>& right, int shift, AzimuthVotes& votes,
                               int& voting_frames) const {
-  if (left.size() != right.size())
-    throw std::invalid_argument("the ear signals differ in length (" + std::to_string(left.size()) + " left, " +
-                                std::to_string(right.size()) + " right samples)");
-  for (std::size_t i = 0; i < left.size(); ++i)
-    if (!std::isfinite(left[i]) || !std::isfinite(right[i]))
-      throw std::invalid_argument("the ear signals hold a sample that is not finite (at " + std::to_string(i) + ")");
+  checkEarSignals(left, right);
+  const std::vector<FrameSpectra> frames = loudFrameSpectra(left, right);
+  voting_frames += static_cast<int>(frames.size());
+  if (frames.empty()) return;
 
   const FrequencyBands& bands = templates_.bands();
-  const int band_count = bands.size();
-  const int level_from = templates_.firstLevelBand();
-  const int phase_bins = templates_.phaseBins();
+  const double threshold = votingThreshold(frames);
+  for (const FrameSpectra& f : frames) {
+    for (int b = 0; b < bands.size(); ++b) {
+      if (f.density(bands, b) < threshold) continue;
+      if (bands[b].first_bin < templates_.phaseBins()) addPhaseVotes(f, b, shift, votes);
+      if (b >= templates_.firstLevelBand() && config_.level_cue_weight > 0) addLevelVote(f, b, shift, votes);
+    }
+  }
+}
+
+// The spectra of the frames loud enough to vote.
+std::vector<BlockLocaliser::FrameSpectra> BlockLocaliser::loudFrameSpectra(const std::vector<float>& left,
+                                                                           const std::vector<float>& right) const {
   const int frame_size = templates_.layout().frame_size, hop = templates_.layout().hop;
   const long length = static_cast<long>(left.size());
-
-  // 1. Spectra of the frames loud enough to vote.
   std::vector<FrameSpectra> frames;
   std::vector<float> windowed_left(static_cast<std::size_t>(frame_size)), windowed_right(windowed_left);
   std::vector<std::complex<float>> spectrum_left, spectrum_right;
@@ -82,93 +131,72 @@ void BlockLocaliser::addVotes(const std::vector<float>& left, const std::vector<
     if (energy < 2.0 * frame_size * config_.silence_rms * config_.silence_rms) continue;
     fft_.forward(windowed_left, spectrum_left);
     fft_.forward(windowed_right, spectrum_right);
-    FrameSpectra frame;
-    frame.energy_left.assign(static_cast<std::size_t>(band_count), 0.0);
-    frame.energy_right.assign(static_cast<std::size_t>(band_count), 0.0);
-    for (int b = 0; b < band_count; ++b)
-      for (int k = bands[b].first_bin; k < bands[b].end_bin; ++k) {
-        frame.energy_left[static_cast<std::size_t>(b)] += std::norm(spectrum_left[static_cast<std::size_t>(k)]);
-        frame.energy_right[static_cast<std::size_t>(b)] += std::norm(spectrum_right[static_cast<std::size_t>(k)]);
-      }
-    frame.cross.resize(static_cast<std::size_t>(phase_bins));
-    frame.level_db.resize(static_cast<std::size_t>(phase_bins));
-    for (int k = 0; k < phase_bins; ++k) {
-      const auto i = static_cast<std::size_t>(k);
-      frame.cross[i] = spectrum_left[i] * std::conj(spectrum_right[i]);
-      frame.level_db[i] = static_cast<float>(
-          10 * std::log10((std::norm(spectrum_left[i]) + 1e-30) / (std::norm(spectrum_right[i]) + 1e-30)));
-    }
-    frames.push_back(std::move(frame));
+    frames.push_back(FrameSpectra::reduced(spectrum_left, spectrum_right, templates_.bands(), templates_.phaseBins()));
   }
+  return frames;
+}
 
-  voting_frames += static_cast<int>(frames.size());
-  if (frames.empty()) return;
-
-  // 2. Which bands vote: within band_range_db of the loudest, and above white noise at the silence level.
-  auto density = [&](const FrameSpectra& f, int b) {
-    const auto i = static_cast<std::size_t>(b);
-    return 0.5 * (f.energy_left[i] + f.energy_right[i]) / (bands[b].end_bin - bands[b].first_bin);
-  };
+// Which bands vote: within band_range_db of the loudest, and above white
+// noise at the silence level.
+double BlockLocaliser::votingThreshold(const std::vector<FrameSpectra>& frames) const {
+  const FrequencyBands& bands = templates_.bands();
   double loudest = 0;
   for (const FrameSpectra& f : frames)
-    for (int b = 0; b < band_count; ++b) loudest = std::max(loudest, density(f, b));
-  const double threshold = std::max(loudest * std::pow(10.0, -config_.band_range_db / 10),
-                                    config_.silence_rms * config_.silence_rms * window_power_);
+    for (int b = 0; b < bands.size(); ++b) loudest = std::max(loudest, f.density(bands, b));
+  return std::max(loudest * std::pow(10.0, -config_.band_range_db / 10),
+                  config_.silence_rms * config_.silence_rms * window_power_);
+}
 
-  // 3. The votes.
-  const float inverse_twice_variance = static_cast<float>(1.0 / (2 * config_.ild_spread_db * config_.ild_spread_db));
+// Time cues: each bin on its own, so a tone or a harmonic holds its bin even
+// where another sound holds the rest of the band. Its phase against each
+// azimuth's template phase, as a von Mises likelihood whose concentration
+// grows towards low frequencies, where the whole range of interaural delays
+// spans only a fraction of a cycle (so each radian counts for more degrees).
+void BlockLocaliser::addPhaseVotes(const FrameSpectra& f, int b, int shift, AzimuthVotes& votes) const {
+  const FrequencyBands& bands = templates_.bands();
   const float joint_inverse_twice_variance =
       static_cast<float>(1.0 / (2 * config_.joint_ild_spread_db * config_.joint_ild_spread_db));
-  for (const FrameSpectra& f : frames) {
-    for (int b = 0; b < band_count; ++b) {
-      if (density(f, b) < threshold) continue;
-      if (bands[b].first_bin < phase_bins) {
-        // Time cues: each bin on its own, so a tone or a harmonic holds its bin even where another sound
-        // holds the rest of the band. Its phase against each azimuth's template phase, as a von Mises
-        // likelihood whose concentration grows towards low frequencies, where the whole range of
-        // interaural delays spans only a fraction of a cycle (so each radian counts for more degrees).
-        for (int k = bands[b].first_bin; k < std::min(bands[b].end_bin, phase_bins); ++k) {
-          const std::complex<float> c = f.cross[static_cast<std::size_t>(k)];
-          const float magnitude = std::abs(c);
-          if (!(magnitude > 0)) continue;
-          const double hz = std::max(k * bands.binHz(), 1.0);
-          const float sharpness = static_cast<float>(
-              std::min(config_.max_phase_sharpness, config_.phase_sharpness * config_.sharpness_reference_hz / hz));
-          const bool joint = hz >= config_.joint_level_from_hz && hz < config_.joint_level_to_hz;
-          const float heard_level = f.level_db[static_cast<std::size_t>(k)];
-          AzimuthVote vote;
-          for (int a = 0; a < kAzimuths; ++a) {
-            const std::complex<float> t = templates_.interauralPhase(a, k);
-            const float cosine = (c.real() * t.real() + c.imag() * t.imag()) / magnitude;
-            float exponent = sharpness * (cosine - 1);
-            if (joint) {
-              const float difference = static_cast<float>(heard_level - templates_.ild(a, b));
-              exponent -= difference * difference * joint_inverse_twice_variance;
-            }
-            vote.likelihood[static_cast<std::size_t>(a)] = std::exp(exponent);
-          }
-          vote.band = b;
-          vote.energy = 2.0 * magnitude;  // |L| |R| per ear
-          vote.weight = std::pow(vote.energy, config_.weight_exponent);
-          votes.add(rotated(std::move(vote), shift));
-        }
+  for (int k = bands[b].first_bin; k < std::min(bands[b].end_bin, templates_.phaseBins()); ++k) {
+    const std::complex<float> c = f.cross[static_cast<std::size_t>(k)];
+    const float magnitude = std::abs(c);
+    if (!(magnitude > 0)) continue;
+    const double hz = std::max(k * bands.binHz(), 1.0);
+    const float sharpness = static_cast<float>(
+        std::min(config_.max_phase_sharpness, config_.phase_sharpness * config_.sharpness_reference_hz / hz));
+    const bool joint = hz >= config_.joint_level_from_hz && hz < config_.joint_level_to_hz;
+    const float heard_level = f.level_db[static_cast<std::size_t>(k)];
+    AzimuthVote vote;
+    for (int a = 0; a < kAzimuths; ++a) {
+      const std::complex<float> t = templates_.interauralPhase(a, k);
+      const float cosine = (c.real() * t.real() + c.imag() * t.imag()) / magnitude;
+      float exponent = sharpness * (cosine - 1);
+      if (joint) {
+        const float difference = static_cast<float>(heard_level - templates_.ild(a, b));
+        exponent -= difference * difference * joint_inverse_twice_variance;
       }
-      if (b >= level_from && config_.level_cue_weight > 0) {
-        // Level cue: the band's ILD against each azimuth's template ILD.
-        const auto i = static_cast<std::size_t>(b);
-        const double heard = 10 * std::log10((f.energy_left[i] + 1e-30) / (f.energy_right[i] + 1e-30));
-        AzimuthVote vote;
-        for (int a = 0; a < kAzimuths; ++a) {
-          const float difference = static_cast<float>(heard - templates_.ild(a, b));
-          vote.likelihood[static_cast<std::size_t>(a)] = std::exp(-difference * difference * inverse_twice_variance);
-        }
-        vote.band = b;
-        vote.energy = f.energy_left[i] + f.energy_right[i];
-        vote.weight = config_.level_cue_weight * std::pow(vote.energy, config_.weight_exponent);
-        votes.add(rotated(std::move(vote), shift));
-      }
+      vote.likelihood[static_cast<std::size_t>(a)] = std::exp(exponent);
     }
+    vote.band = b;
+    vote.energy = 2.0 * magnitude;  // |L| |R| per ear
+    vote.weight = std::pow(vote.energy, config_.weight_exponent);
+    votes.add(rotated(std::move(vote), shift));
   }
+}
+
+// Level cue: the band's ILD against each azimuth's template ILD.
+void BlockLocaliser::addLevelVote(const FrameSpectra& f, int b, int shift, AzimuthVotes& votes) const {
+  const float inverse_twice_variance = static_cast<float>(1.0 / (2 * config_.ild_spread_db * config_.ild_spread_db));
+  const auto i = static_cast<std::size_t>(b);
+  const double heard = 10 * std::log10((f.energy_left[i] + 1e-30) / (f.energy_right[i] + 1e-30));
+  AzimuthVote vote;
+  for (int a = 0; a < kAzimuths; ++a) {
+    const float difference = static_cast<float>(heard - templates_.ild(a, b));
+    vote.likelihood[static_cast<std::size_t>(a)] = std::exp(-difference * difference * inverse_twice_variance);
+  }
+  vote.band = b;
+  vote.energy = f.energy_left[i] + f.energy_right[i];
+  vote.weight = config_.level_cue_weight * std::pow(vote.energy, config_.weight_exponent);
+  votes.add(rotated(std::move(vote), shift));
 }
 
 BlockLocalisation BlockLocaliser::localise(const std::vector<float>& left, const std::vector<float>& right) const {

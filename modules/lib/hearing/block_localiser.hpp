@@ -106,8 +106,14 @@ class BlockLocaliser {
   const InterauralTemplates& templates() const { return templates_; }
 
  private:
+  struct FrameSpectra;
+
   void addVotes(const std::vector<float>& left, const std::vector<float>& right, int shift, AzimuthVotes& votes,
                 int& voting_frames) const;
+  std::vector<FrameSpectra> loudFrameSpectra(const std::vector<float>& left, const std::vector<float>& right) const;
+  double votingThreshold(const std::vector<FrameSpectra>& frames) const;
+  void addPhaseVotes(const FrameSpectra& frame, int band, int shift, AzimuthVotes& votes) const;
+  void addLevelVote(const FrameSpectra& frame, int band, int shift, AzimuthVotes& votes) const;
 
   InterauralTemplates templates_;
   LocaliserConfig config_;

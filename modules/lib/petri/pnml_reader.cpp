@@ -441,117 +441,139 @@ class PnmlReader {
     return seconds;
   }
 
+  // What a transition's <toolspecific tool="beft"> said besides its policy values.
+  struct TransitionOptions {
+    std::optional<std::string> expert;
+    bool marked_silent = false;
+    bool has_policy = false;
+    bool retries_given = false, after_retries_given = false;
+    int policy_line = 0;  // of the last policy option, else of the annotation
+  };
+
   void readTransition(const XMLElement& e) {
     Transition transition;
     transition.line = e.GetLineNum();
     transition.id = declareId(e, NodeKind::Transition, static_cast<int>(net_.transitions.size()));
     if (transition.id.empty()) return;
     transition.name = labelText(e, "name").value_or("");
-    const std::string& id = transition.id;
 
-    const XMLElement* annotation = beftAnnotation(e, id);
+    const XMLElement* annotation = beftAnnotation(e, transition.id);
     if (!annotation) {
       scheduleProblem(transition.line,
-              "transition '" + id + "' names no expert: add <toolspecific tool=\"beft\" version=\"1\">"
+              "transition '" + transition.id + "' names no expert: add <toolspecific tool=\"beft\" version=\"1\">"
               "<expert>NAME</expert></toolspecific>, or <silent/> there for a join or fork");
       net_.transitions.push_back(std::move(transition));
       return;
     }
+    TransitionOptions options = readTransitionOptions(*annotation, transition);
+    checkExpertAndSilence(*annotation, options, transition);
+    checkPolicy(options, transition);
+    net_.transitions.push_back(std::move(transition));
+  }
 
+  TransitionOptions readTransitionOptions(const XMLElement& annotation, Transition& transition) {
+    TransitionOptions options;
+    options.policy_line = annotation.GetLineNum();
     std::set<std::string> seen;
-    std::optional<std::string> expert;
-    bool marked_silent = false;
-    bool has_policy = false;
-    bool retries_given = false, after_retries_given = false;
-    int policy_line = annotation->GetLineNum();
-    FiringPolicy& policy = transition.policy;
-    for (const XMLElement* c = annotation->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    for (const XMLElement* c = annotation.FirstChildElement(); c; c = c->NextSiblingElement()) {
       const std::string option = localName(c->Name());
       const std::string text = trim(c->GetText());
       if (!seen.insert(option).second) {
-        scheduleProblem(c->GetLineNum(), "<" + option + "> given twice in transition '" + id + "'");
+        scheduleProblem(c->GetLineNum(), "<" + option + "> given twice in transition '" + transition.id + "'");
         continue;
       }
       if (option == "expert") {
-        expert = text;
+        options.expert = text;
       } else if (option == "silent") {
-        marked_silent = true;
+        options.marked_silent = true;
       } else if (option == "tick") {
         transition.is_tick = true;
       } else if (option == "level") {
         transition.level = text;
-      } else if (option == "timeout") {
-        has_policy = true;
-        policy_line = c->GetLineNum();
-        if (auto s = parsePositiveSeconds(*c, text, id)) policy.timeout_s = *s;
-      } else if (option == "heartbeat_timeout") {
-        has_policy = true;
-        policy_line = c->GetLineNum();
-        if (auto s = parsePositiveSeconds(*c, text, id)) policy.heartbeat_timeout_s = *s;
-      } else if (option == "on_timeout") {
-        has_policy = true;
-        policy_line = c->GetLineNum();
-        if (auto a = parseAction(*c, text, id, true)) policy.on_timeout = *a;
-      } else if (option == "on_failure") {
-        has_policy = true;
-        policy_line = c->GetLineNum();
-        if (auto a = parseAction(*c, text, id, true)) policy.on_failure = *a;
-      } else if (option == "retries") {
-        has_policy = true;
-        policy_line = c->GetLineNum();
-        const auto n = parseWholeNumber(text);
-        if (!n || *n < 0 || *n > 100) {
-          scheduleProblem(c->GetLineNum(), "<retries> of transition '" + id + "' is '" + text +
-                                       "'; expected a whole number from 0 to 100");
-        } else {
-          policy.retries = static_cast<int>(*n);
-          retries_given = true;
-        }
-      } else if (option == "after_retries") {
-        has_policy = true;
-        after_retries_given = true;
-        policy_line = c->GetLineNum();
-        if (auto a = parseAction(*c, text, id, false)) policy.after_retries = *a;
-      } else {
+      } else if (!readPolicyOption(*c, option, text, transition, options)) {
         scheduleProblem(c->GetLineNum(), "unknown element <" + option +
-                                     "> in <toolspecific tool=\"beft\"> of transition '" + id +
+                                     "> in <toolspecific tool=\"beft\"> of transition '" + transition.id +
                                      "' (known: expert silent tick level timeout heartbeat_timeout "
                                      "on_timeout on_failure retries after_retries)");
       }
     }
+    return options;
+  }
 
+  // One option of a transition's firing policy; false if `option` is none.
+  bool readPolicyOption(const XMLElement& c, const std::string& option, const std::string& text,
+                        Transition& transition, TransitionOptions& options) {
+    const std::string& id = transition.id;
+    FiringPolicy& policy = transition.policy;
+    if (option == "timeout") {
+      if (auto s = parsePositiveSeconds(c, text, id)) policy.timeout_s = *s;
+    } else if (option == "heartbeat_timeout") {
+      if (auto s = parsePositiveSeconds(c, text, id)) policy.heartbeat_timeout_s = *s;
+    } else if (option == "on_timeout") {
+      if (auto a = parseAction(c, text, id, true)) policy.on_timeout = *a;
+    } else if (option == "on_failure") {
+      if (auto a = parseAction(c, text, id, true)) policy.on_failure = *a;
+    } else if (option == "retries") {
+      const auto n = parseWholeNumber(text);
+      if (!n || *n < 0 || *n > 100) {
+        scheduleProblem(c.GetLineNum(), "<retries> of transition '" + id + "' is '" + text +
+                                     "'; expected a whole number from 0 to 100");
+      } else {
+        policy.retries = static_cast<int>(*n);
+        options.retries_given = true;
+      }
+    } else if (option == "after_retries") {
+      options.after_retries_given = true;
+      if (auto a = parseAction(c, text, id, false)) policy.after_retries = *a;
+    } else {
+      return false;
+    }
+    options.has_policy = true;
+    options.policy_line = c.GetLineNum();
+    return true;
+  }
+
+  // A transition names a valid expert or is silent (a join, a fork, the tick), never both.
+  void checkExpertAndSilence(const XMLElement& annotation, TransitionOptions& options, Transition& transition) {
+    const std::string& id = transition.id;
+    std::optional<std::string>& expert = options.expert;
     if (expert && expert->empty()) expert.reset();
     if (expert && *expert == "-") {
-      marked_silent = true;
+      options.marked_silent = true;
       expert.reset();
     }
-    const bool silent = marked_silent || transition.is_tick;
+    const bool silent = options.marked_silent || transition.is_tick;
     if (expert && silent) {
-      scheduleProblem(annotation->GetLineNum(),
+      scheduleProblem(annotation.GetLineNum(),
               "transition '" + id + "' names expert '" + *expert + "' but is marked " +
                   (transition.is_tick ? "<tick/> (the tick transition must be silent)" : "<silent/>"));
     } else if (expert && !validExpertName(*expert)) {
-      scheduleProblem(annotation->GetLineNum(), "expert name '" + *expert + "' of transition '" + id +
+      scheduleProblem(annotation.GetLineNum(), "expert name '" + *expert + "' of transition '" + id +
                                             "' must be letters, digits, '_', '-' or '.'");
     } else if (!expert && !silent) {
-      scheduleProblem(annotation->GetLineNum(),
+      scheduleProblem(annotation.GetLineNum(),
               "transition '" + id + "' names no expert: add <expert>NAME</expert>, or <silent/> "
               "for a join or fork");
     }
     if (expert) transition.expert = *expert;
+  }
 
-    if (silent && has_policy)
-      scheduleProblem(policy_line, "transition '" + id +
+  // Policies apply to experts only, and retries only to a retry policy.
+  void checkPolicy(const TransitionOptions& options, Transition& transition) {
+    const std::string& id = transition.id;
+    FiringPolicy& policy = transition.policy;
+    const bool silent = options.marked_silent || transition.is_tick;
+    if (silent && options.has_policy)
+      scheduleProblem(options.policy_line, "transition '" + id +
                                "' is silent: timeouts, retries and policies apply to experts only");
     const bool uses_retry = policy.on_timeout == ExpiryAction::Retry ||
                             policy.on_failure == ExpiryAction::Retry;
-    if (uses_retry && !retries_given) policy.retries = 1;
-    if (uses_retry && retries_given && policy.retries == 0)
-      scheduleProblem(policy_line, "transition '" + id + "' has a retry policy with <retries>0</retries>");
-    if (!uses_retry && (retries_given || after_retries_given))
-      scheduleProblem(policy_line, "transition '" + id + "' gives <retries>/<after_retries> but neither "
+    if (uses_retry && !options.retries_given) policy.retries = 1;
+    if (uses_retry && options.retries_given && policy.retries == 0)
+      scheduleProblem(options.policy_line, "transition '" + id + "' has a retry policy with <retries>0</retries>");
+    if (!uses_retry && (options.retries_given || options.after_retries_given))
+      scheduleProblem(options.policy_line, "transition '" + id + "' gives <retries>/<after_retries> but neither "
                            "<on_timeout> nor <on_failure> is retry");
-    net_.transitions.push_back(std::move(transition));
   }
 
   void readArc(const XMLElement& e) {

@@ -8,8 +8,10 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <random>
 #include <string>
 #include <thread>
@@ -48,7 +50,8 @@ std::string lineAfter(const std::string& text, const std::string& prefix) {
 Outcome runYard(const std::string& name, const std::string& dir, const std::string& args, int ticks,
                 const std::function<pid_t(const std::string& url, const std::string& run_id)>& during) {
   const std::string bin = beft::ownBinDir();
-  std::system(("rm -rf '" + dir + "' && mkdir -p '" + dir + "'").c_str());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
   const pid_t runner = fork();
   if (runner == 0) {
     const std::string command = bin + "/beft-run " + BEFT_SOURCE_DIR + "/scenarios/yard.xml --max-ticks " +
@@ -104,54 +107,77 @@ pid_t startInjector(const std::string& args) {
   return pid;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Options {
   int ticks = 560;
   uint64_t seed = 1;
   std::string work = "/tmp/beft_bench_faults";
+};
+
+std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app("Runs yard.xml clean and under faults and compares every data message with the clean run: "
                "malformed traffic at 3000 messages/s on the run's channels, another run's messages on its URL, "
                "every expert SIGKILLed once at a random tick (restarted, resuming from the log).",
                "beft-bench-faults");
-  app.add_option("--ticks", ticks, "ticks per run")->capture_default_str();
-  app.add_option("--seed", seed, "seed of the kill ticks")->capture_default_str();
-  app.add_option("--work", work, "folder for the runs")->capture_default_str();
-  if (const auto code = beft::parseCommandLine(app, argc, argv)) return *code;
+  app.add_option("--ticks", o.ticks, "ticks per run")->capture_default_str();
+  app.add_option("--seed", o.seed, "seed of the kill ticks")->capture_default_str();
+  app.add_option("--work", o.work, "folder for the runs")->capture_default_str();
+  return beft::parseCommandLine(app, argc, argv);
+}
 
+// beft-run arguments that kill every expert once, each at a random tick.
+std::string killEveryExpert(uint64_t seed, int ticks) {
+  std::mt19937_64 random(seed);
+  std::string kills;
+  for (const char* expert : {"world", "vision", "geometry", "audio", "visual_labels", "acoustic_labels", "fusion",
+                             "dw", "exploration", "tasks"})
+    kills += " --kill " + std::string(expert) + "@" + std::to_string(10 + random() % (ticks - 20));
+  return kills;
+}
+
+// The clean run, then each fault run compared with it message by message.
+std::vector<Outcome> runCleanAndFaulty(const Options& o, const std::string& kills) {
   std::vector<Outcome> outcomes;
+  const std::string& work = o.work;
   const std::string clean_dir = work + "/clean";
-  outcomes.push_back(runYard("clean", clean_dir, "", ticks, nullptr));
+  outcomes.push_back(runYard("clean", clean_dir, "", o.ticks, nullptr));
   const auto clean = beft::bench::dataMessages(clean_dir + "/run.lcmlog", outcomes.back().run_id);
   auto compare = [&](Outcome outcome, const std::string& dir) {
     outcome.identical = beft::bench::compareRuns(clean, beft::bench::dataMessages(dir + "/run.lcmlog", outcome.run_id));
     outcomes.push_back(outcome);
   };
   outcomes.back().identical = "(reference)";
-  compare(runYard("malformed 3000/s", work + "/malformed", "", ticks,
+  compare(runYard("malformed 3000/s", work + "/malformed", "", o.ticks,
                   [&](const std::string& url, const std::string& run) {
                     return startInjector(clean_dir + "/run.lcmlog --lcm-url '" + url +
                                          "' --rate 3000 --damage malformed --into-run " + run);
                   }),
           work + "/malformed");
-  compare(runYard("another run", work + "/other", "", ticks,
+  compare(runYard("another run", work + "/other", "", o.ticks,
                   [&](const std::string& url, const std::string&) {
                     return startInjector(clean_dir + "/run.lcmlog --lcm-url '" + url +
                                          "' --rate 3000 --as-is --into-run 1234");
                   }),
           work + "/other");
-  std::mt19937_64 random(seed);
-  std::string kills;
-  for (const char* expert : {"world", "vision", "geometry", "audio", "visual_labels", "acoustic_labels", "fusion",
-                             "dw", "exploration", "tasks"})
-    kills += " --kill " + std::string(expert) + "@" + std::to_string(10 + random() % (ticks - 20));
-  compare(runYard("every expert killed", work + "/killed", kills, ticks, nullptr), work + "/killed");
+  compare(runYard("every expert killed", work + "/killed", kills, o.ticks, nullptr), work + "/killed");
+  return outcomes;
+}
 
+void printOutcomes(const std::vector<Outcome>& outcomes, const std::string& kills, const std::string& work) {
   std::printf("%-22s %-9s %-40s %9s %9s %8s %9s\n", "yard.xml", "completed", "data messages as the clean run",
               "rejected", "other run", "restarts", "ticks/s");
   for (const auto& o : outcomes)
     std::printf("%-22s %-9s %-40s %9lld %9lld %8lld %9.0f\n", o.name.c_str(), o.completed ? "yes" : "no",
                 o.identical.c_str(), o.rejected, o.other_run, o.restarts, o.ticks_per_s);
   std::printf("kills:%s\nruns in %s\n", kills.c_str(), work.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (const auto code = parseOptions(argc, argv, o)) return *code;
+  const std::string kills = killEveryExpert(o.seed, o.ticks);
+  const std::vector<Outcome> outcomes = runCleanAndFaulty(o, kills);
+  printOutcomes(outcomes, kills, o.work);
   return 0;
 }

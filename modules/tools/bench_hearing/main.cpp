@@ -236,6 +236,47 @@ void printMission(const nlohmann::json& mission) {
   std::printf("\n");
 }
 
+HrirSet loadHrirs(const Options& options) {
+  return options.spherical_head
+             ? HrirSet::sphericalHead(kRate)
+             : HrirSet::loadDefault([](const std::string& m) { beft::log::warn(m); }, options.hrir_path);
+}
+
+// Every figure of figures(), measured in turn (and printed as it comes
+// unless --json), in a report that also names the HRIR set.
+nlohmann::json measureFigures(const Options& options, const HrirSet& hrirs) {
+  const BinauralRenderer renderer(hrirs, kRate);
+  Bench bench{options, renderer, whiteNoise(2.0, 7), {}, {}, 0};
+  trials::LocalisationTrials localisation(BlockLocaliser(InterauralTemplates::fromSofa()), options.sounds_dir);
+  bench.one_source = localisation.oneSource(options.single_trials, options.seed);
+  bench.two_sources = localisation.twoSources(options.pair_trials, options.seed + 1);
+  bench.localise_ms_per_block = localisation.localiseMsPerBlock();
+
+  nlohmann::json report;
+  report["hrir_set"] = hrirs.name();
+  if (!options.json) std::printf("HRIR set: %s\n", hrirs.name().c_str());
+  for (const Figure& figure : figures()) {
+    const double value = figure.measure(bench);
+    report[figure.key] = value;
+    if (!options.json) {
+      std::printf("%-42s %9.3f %-3s %s\n", figure.key.c_str(), value, figure.unit.c_str(), figure.meaning.c_str());
+      std::fflush(stdout);
+    }
+  }
+  return report;
+}
+
+// The missions that hear for real, added to the report (and printed unless --json).
+void addHearingMissions(const Options& options, nlohmann::json& report) {
+  report["missions"] = nlohmann::json::array();
+  if (!options.json) std::printf("missions with --acoustics binaural (each heard object's last estimate):\n");
+  for (const char* scenario : {"yard", "peek", "decoy"}) {
+    report["missions"].push_back(hearingMission(scenario));
+    if (!options.json) printMission(report["missions"].back());
+    std::fflush(stdout);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -243,41 +284,14 @@ int main(int argc, char** argv) {
   Options options;
   if (const auto code = parseOptions(argc, argv, options)) return *code;
   try {
-    const HrirSet hrirs = options.spherical_head
-                              ? HrirSet::sphericalHead(kRate)
-                              : HrirSet::loadDefault([](const std::string& m) { beft::log::warn(m); }, options.hrir_path);
+    const HrirSet hrirs = loadHrirs(options);
     if (hrirs.sampleRate() != kRate) {
       std::fprintf(stderr, "beft-bench-hearing: %s is at %.0f Hz; the benchmark renders at %.0f Hz\n",
                    hrirs.name().c_str(), hrirs.sampleRate(), kRate);
       return 1;
     }
-    const BinauralRenderer renderer(hrirs, kRate);
-    Bench bench{options, renderer, whiteNoise(2.0, 7), {}, {}, 0};
-    trials::LocalisationTrials localisation(BlockLocaliser(InterauralTemplates::fromSofa()), options.sounds_dir);
-    bench.one_source = localisation.oneSource(options.single_trials, options.seed);
-    bench.two_sources = localisation.twoSources(options.pair_trials, options.seed + 1);
-    bench.localise_ms_per_block = localisation.localiseMsPerBlock();
-
-    nlohmann::json report;
-    report["hrir_set"] = hrirs.name();
-    if (!options.json) std::printf("HRIR set: %s\n", hrirs.name().c_str());
-    for (const Figure& figure : figures()) {
-      const double value = figure.measure(bench);
-      report[figure.key] = value;
-      if (!options.json) {
-        std::printf("%-42s %9.3f %-3s %s\n", figure.key.c_str(), value, figure.unit.c_str(), figure.meaning.c_str());
-        std::fflush(stdout);
-      }
-    }
-    if (options.missions) {
-      report["missions"] = nlohmann::json::array();
-      if (!options.json) std::printf("missions with --acoustics binaural (each heard object's last estimate):\n");
-      for (const char* scenario : {"yard", "peek", "decoy"}) {
-        report["missions"].push_back(hearingMission(scenario));
-        if (!options.json) printMission(report["missions"].back());
-        std::fflush(stdout);
-      }
-    }
+    nlohmann::json report = measureFigures(options, hrirs);
+    if (options.missions) addHearingMissions(options, report);
     if (options.json) std::printf("%s\n", report.dump(2).c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "beft-bench-hearing: %s\n", e.what());

@@ -50,44 +50,32 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   return beft::parseCommandLine(app, argc, argv);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  Options o;
-  if (const auto code = parseOptions(argc, argv, o)) return *code;
-  std::vector<beft::inject::Damage> kinds;
+// The log's messages (at most --max-events), on the channels of --into-run
+// if given. Throws on an unreadable log or a bad run id.
+std::vector<beft::inject::DamagedMessage> loggedMessages(const Options& o) {
   int64_t into_run = -1;
+  if (!o.into_run.empty()) into_run = beft::wire::parseRunId(o.into_run);
   std::vector<beft::inject::DamagedMessage> events;
-  try {
-    if (!o.as_is) kinds = beft::inject::parseDamage(o.damage);
-    if (!o.into_run.empty()) into_run = beft::wire::parseRunId(o.into_run);
-    beft::wire::LogReader log(o.log_path);
-    beft::wire::LogEvent event;
-    while (events.size() < o.max_events && log.next(event)) {
-      const auto split = beft::wire::splitRunChannel(event.channel);
-      if (beft::wire::isUrlWideChannel(event.channel)) continue;  // another run's beacon would be a lie
-      const std::string channel =
-          into_run >= 0 ? beft::wire::runChannel(std::string(split.base), into_run) : event.channel;
-      events.push_back({channel, event.data});
-    }
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "beft-inject: error: %s\n", e.what());
-    return 2;
+  beft::wire::LogReader log(o.log_path);
+  beft::wire::LogEvent event;
+  while (events.size() < o.max_events && log.next(event)) {
+    const auto split = beft::wire::splitRunChannel(event.channel);
+    if (beft::wire::isUrlWideChannel(event.channel)) continue;  // another run's beacon would be a lie
+    const std::string channel =
+        into_run >= 0 ? beft::wire::runChannel(std::string(split.base), into_run) : event.channel;
+    events.push_back({channel, event.data});
   }
-  if (events.empty()) {
-    std::fprintf(stderr, "beft-inject: error: %s holds no message\n", o.log_path.c_str());
-    return 2;
-  }
-  lcm::LCM lcm(o.lcm_url);
-  if (!lcm.good()) {
-    std::fprintf(stderr, "beft-inject: error: cannot open LCM at %s\n", o.lcm_url.c_str());
-    return 1;
-  }
-  std::signal(SIGINT, onSignal);
-  std::signal(SIGTERM, onSignal);
-  std::mt19937_64 random(o.seed);
+  return events;
+}
+
+// Publishes the events round and round at --rate, each damaged by one of
+// `kinds` (or as it is with --as-is), until --seconds or a signal; returns
+// how many were sent.
+uint64_t publishUntilStopped(lcm::LCM& lcm, const std::vector<beft::inject::DamagedMessage>& events,
+                             const std::vector<beft::inject::Damage>& kinds, const Options& o,
+                             std::chrono::steady_clock::time_point start) {
   using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
+  std::mt19937_64 random(o.seed);
   const auto period = std::chrono::duration<double>(1.0 / o.rate);
   uint64_t sent = 0;
   std::size_t next = 0;
@@ -105,7 +93,37 @@ int main(int argc, char** argv) {
     ++sent;
     std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(period * static_cast<double>(sent)));
   }
+  return sent;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  if (const auto code = parseOptions(argc, argv, o)) return *code;
+  std::vector<beft::inject::Damage> kinds;
+  std::vector<beft::inject::DamagedMessage> events;
+  try {
+    if (!o.as_is) kinds = beft::inject::parseDamage(o.damage);
+    events = loggedMessages(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "beft-inject: error: %s\n", e.what());
+    return 2;
+  }
+  if (events.empty()) {
+    std::fprintf(stderr, "beft-inject: error: %s holds no message\n", o.log_path.c_str());
+    return 2;
+  }
+  lcm::LCM lcm(o.lcm_url);
+  if (!lcm.good()) {
+    std::fprintf(stderr, "beft-inject: error: cannot open LCM at %s\n", o.lcm_url.c_str());
+    return 1;
+  }
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+  const auto start = std::chrono::steady_clock::now();
+  const uint64_t sent = publishUntilStopped(lcm, events, kinds, o, start);
   std::printf("beft-inject: published %llu messages in %.1f s\n", static_cast<unsigned long long>(sent),
-              std::chrono::duration<double>(Clock::now() - start).count());
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return 0;
 }

@@ -36,29 +36,41 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   return std::nullopt;
 }
 
+// The EARS blocks of the log's run; `refused` counts those that did not fit
+// (the first is reported), and damage to the log is reported.
+listen::EarRecording recordEars(const std::string& log_path, int64_t& refused) {
+  const int64_t run = wire::runId() != 0 ? wire::runId() : wire::runOfLog(log_path);
+  wire::LogReader log(log_path);
+  listen::EarRecording recording;
+  wire::LogEvent event;
+  while (log.nextOfRun(event, run)) {
+    if (event.channel != channels::kEars) continue;
+    binaural_block_t block{};
+    std::string why;
+    if (!wire::decodeFrom(event.channel, event.data.data(), event.data.size(), block) ||
+        !recording.add(block, &why)) {
+      if (!why.empty() && refused == 0) std::fprintf(stderr, "beft-listen: block of tick %lld refused: %s\n",
+                                                     static_cast<long long>(block.tick), why.c_str());
+      ++refused;
+    }
+  }
+  if (!log.damage().summary().empty()) std::fprintf(stderr, "beft-listen: %s\n", log.damage().summary().c_str());
+  return recording;
+}
+
+// --gain-db, or the gain that puts the loudest sample at -1 dBFS.
+double outputGain(const Options& o, float peak) {
+  return std::isnan(o.gain_db) ? (peak > 0 ? std::pow(10.0, -1.0 / 20) / peak : 1.0) : std::pow(10.0, o.gain_db / 20);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   Options o;
   if (const auto code = parseOptions(argc, argv, o)) return *code;
   try {
-    const int64_t run = wire::runId() != 0 ? wire::runId() : wire::runOfLog(o.log_path);
-    wire::LogReader log(o.log_path);
-    listen::EarRecording recording;
-    wire::LogEvent event;
     int64_t refused = 0;
-    while (log.nextOfRun(event, run)) {
-      if (event.channel != channels::kEars) continue;
-      binaural_block_t block{};
-      std::string why;
-      if (!wire::decodeFrom(event.channel, event.data.data(), event.data.size(), block) ||
-          !recording.add(block, &why)) {
-        if (!why.empty() && refused == 0) std::fprintf(stderr, "beft-listen: block of tick %lld refused: %s\n",
-                                                       static_cast<long long>(block.tick), why.c_str());
-        ++refused;
-      }
-    }
-    if (!log.damage().summary().empty()) std::fprintf(stderr, "beft-listen: %s\n", log.damage().summary().c_str());
+    const listen::EarRecording recording = recordEars(o.log_path, refused);
     if (recording.blocks() == 0) {
       std::fprintf(stderr,
                    "beft-listen: %s holds no EARS blocks: record the run with ./beft run SCENARIO --acoustics "
@@ -66,9 +78,7 @@ int main(int argc, char** argv) {
                    o.log_path.c_str());
       return 1;
     }
-    const float peak = recording.peak();
-    const double gain = std::isnan(o.gain_db) ? (peak > 0 ? std::pow(10.0, -1.0 / 20) / peak : 1.0)
-                                              : std::pow(10.0, o.gain_db / 20);
+    const double gain = outputGain(o, recording.peak());
     listen::writeWav(recording, o.out, gain);
     const double seconds = static_cast<double>(recording.interleaved().size() / 2) / recording.sampleRate();
     std::printf("%s: %.1f s from %lld blocks at %d Hz, gain %+.1f dB%s\n", o.out.c_str(), seconds,

@@ -1,6 +1,5 @@
 // beft-run: run the mission on a scenario (./beft run SCENARIO.xml).
 #include <CLI/CLI.hpp>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -9,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -32,18 +32,6 @@ std::string absolutePath(const std::string& path) {
   char cwd[PATH_MAX] = {0};
   if (!getcwd(cwd, sizeof(cwd))) return path;
   return std::string(cwd) + "/" + path;
-}
-
-bool makeDirectories(const std::string& path) {
-  std::string partial;
-  for (std::size_t i = 0; i <= path.size(); ++i) {
-    if (i == path.size() || path[i] == '/') {
-      if (!partial.empty()) mkdir(partial.c_str(), 0755);
-    }
-    if (i < path.size()) partial += path[i];
-  }
-  struct stat info {};
-  return stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode);
 }
 
 std::string timestamp() {
@@ -174,7 +162,9 @@ int runMission(Options& o) {
   if (o.max_ticks < 0) o.max_ticks = static_cast<long long>(std::ceil(scenario.duration / scenario.dt - 1e-9));
   if (o.out_dir.empty()) o.out_dir = std::string(BEFT_SOURCE_DIR) + "/logs/" + scenario.name + "-" + timestamp();
   o.out_dir = absolutePath(o.out_dir);
-  if (!makeDirectories(o.out_dir)) {
+  std::error_code not_made;
+  std::filesystem::create_directories(o.out_dir, not_made);
+  if (!std::filesystem::is_directory(o.out_dir, not_made)) {
     std::fprintf(stderr, "[run] error: cannot create the run folder %s\n", o.out_dir.c_str());
     return 1;
   }
