@@ -9,7 +9,7 @@
 #include "experts/audio/heard_percepts.hpp"
 #include "lib/common/log.hpp"
 #include "lib/scene/object_geometry.hpp"
-#include "lib/task/task_messages.hpp"
+#include "lib/task/task_commands.hpp"
 
 namespace beft::audio {
 
@@ -105,12 +105,7 @@ void AudioExpert::askForHeadTurn(const expert::Firing& firing, const robot_state
   turn.object_id = object_id;
   turn.origin = "audio";
   turn.note = "front or back? " + object_id + " is heard where its mirror image would be heard too";
-  task_command_t command{};
-  command.utime = firing.utime;
-  command.command_id = next_command_id_++;
-  command.command = task_command_t::COMMAND_PUSH;
-  command.task = tasks::toMessage(turn);
-  task_command_out_.publish(out, command);
+  task_command_out_.publish(out, tasks::pushCommand(turn, firing.utime, next_command_id_++));
 }
 
 expert::Outcome AudioExpert::fireHearing(const expert::Firing& firing, const scene_objects_t& scene,

@@ -6,12 +6,12 @@
 #include <stdexcept>
 
 #include <beft/dynamic_weights_t.hpp>
-#include <beft/task_command_t.hpp>
 
 #include "lib/common/channels.hpp"
 #include "lib/common/log.hpp"
 #include "lib/model/model.hpp"
 #include "lib/task/task.hpp"
+#include "lib/task/task_commands.hpp"
 #include "lib/task/task_messages.hpp"
 
 namespace beft::dw {
@@ -170,10 +170,6 @@ expert::Outcome DwExpert::fire(const expert::Firing& firing, expert::Output& out
         log::info("turn-to reflex: ", trigger.object_id, " weight ", fmt(trigger.weight_before), " -> ",
                   fmt(trigger.weight_after), " at t = ", fmt(firing.utime / 1e6), " s");
         if (!reflex_enabled_) continue;
-        task_command_t command{};
-        command.utime = firing.utime;
-        command.command_id = next_command_id_++;
-        command.command = task_command_t::COMMAND_PUSH;
         tasks::Task look;
         look.kind = tasks::kinds::kLookAt;
         look.priority = reflex_priority_;
@@ -183,8 +179,7 @@ expert::Outcome DwExpert::fire(const expert::Firing& firing, expert::Output& out
         look.yaw = 0;
         look.origin = "dw";
         look.note = "turn-to reflex: " + trigger.object_id + " weight " + fmt(trigger.weight_after);
-        command.task = tasks::toMessage(look);
-        task_command_out_.publish(out, command);
+        task_command_out_.publish(out, tasks::pushCommand(look, firing.utime, next_command_id_++));
       }
     }
   }

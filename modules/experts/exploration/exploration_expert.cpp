@@ -5,10 +5,10 @@
 #include <stdexcept>
 
 #include <beft/run_status_t.hpp>
-#include <beft/task_t.hpp>
 
 #include "lib/common/channels.hpp"
 #include "lib/common/log.hpp"
+#include "lib/task/task_commands.hpp"
 #include "lib/wire/obstacle_map_codec.hpp"
 
 namespace beft::exploration {
@@ -42,27 +42,22 @@ HypothesisView viewOf(const hypothesis_t& h, const dynamic_weights_t* weights) {
 }
 
 task_command_t commandOf(const TaskRequest& request, const std::string& origin) {
-  task_command_t command{};
-  command.task.origin = origin;
   if (request.type == TaskRequest::Type::Push) {
-    command.command = task_command_t::COMMAND_PUSH;
-    command.task.parent_id = request.parent;
-    command.task.kind = request.kind;
-    command.task.priority = request.priority;
-    command.task.x = request.x;
-    command.task.y = request.y;
-    command.task.yaw = request.yaw;
-    command.task.object_id = request.object_id;
-    command.task.status = task_t::STATUS_PENDING;
-    command.task.note = request.note;
-  } else {
-    // Ending an owned task: a pop naming it, with the outcome and the reason.
-    command.command = task_command_t::COMMAND_POP;
-    command.task.task_id = request.task_id;
-    command.task.status = request.success ? task_t::STATUS_DONE : task_t::STATUS_FAILED;
-    command.task.note = request.reason;
+    tasks::Task task;
+    task.parent = request.parent;
+    task.kind = request.kind;
+    task.priority = request.priority;
+    task.x = request.x;
+    task.y = request.y;
+    task.yaw = request.yaw;
+    task.object_id = request.object_id;
+    task.origin = origin;
+    task.note = request.note;
+    return tasks::pushCommand(task, 0, 0);
   }
-  return command;
+  // Ending an owned task: a pop naming it, with the outcome and the reason.
+  const auto outcome = request.success ? tasks::Status::Done : tasks::Status::Failed;
+  return tasks::popCommand(request.task_id, outcome, request.reason, origin, 0, 0);
 }
 
 std::string ExplorationExpert::description() const {

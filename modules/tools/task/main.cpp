@@ -20,6 +20,7 @@
 #include "lib/wire/run_discovery.hpp"
 #include "lib/wire/run_identity.hpp"
 #include "tools/task/task_cli.hpp"
+#include "lib/task/task_commands.hpp"
 #include "lib/task/task_messages.hpp"
 
 namespace {
@@ -224,10 +225,7 @@ int listStack(lcm::LCM& lcm, const Options& o) {
 // The command asked for, and a word on it for the messages; an exit code
 // when the task given does not parse.
 std::optional<int> buildCommand(const Options& o, beft::task_command_t& command, std::string& what) {
-  command.utime = wallMicros();
-  command.command_id = wallMicros();
-  command.task = beft::tasks::toMessage(beft::tasks::Task{});
-  command.task.yaw = 0;
+  const int64_t now = wallMicros();
   if (o.action == Action::Push) {
     beft::tasks::Task task;
     try {
@@ -241,21 +239,16 @@ std::optional<int> buildCommand(const Options& o, beft::task_command_t& command,
     task.parent = o.parent;
     task.origin = o.origin;
     task.note = o.note;
-    command.command = beft::task_command_t::COMMAND_PUSH;
-    command.task = beft::tasks::toMessage(task);
+    command = beft::tasks::pushCommand(task, now, now);
     what = "push " + beft::tasks::describe(task);
   } else if (o.action == Action::Pop) {
-    command.command = beft::task_command_t::COMMAND_POP;
-    command.task.task_id = o.pop_id;
-    command.task.status = o.pop_done     ? beft::task_t::STATUS_DONE
-                          : o.pop_failed ? beft::task_t::STATUS_FAILED
-                                         : beft::task_t::STATUS_PENDING;
-    command.task.note = o.reason;
-    command.task.origin = "user";
+    const auto outcome = o.pop_done     ? beft::tasks::Status::Done
+                         : o.pop_failed ? beft::tasks::Status::Failed
+                                        : beft::tasks::Status::Pending;
+    command = beft::tasks::popCommand(o.pop_id, outcome, o.reason, "user", now, now);
     what = o.pop_id ? "pop of task " + std::to_string(o.pop_id) : "pop of the top task";
   } else {
-    command.command = beft::task_command_t::COMMAND_CLEAR;
-    command.task.origin = "user";
+    command = beft::tasks::clearCommand("user", now, now);
     what = "clear";
   }
   return std::nullopt;
