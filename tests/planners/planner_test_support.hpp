@@ -1,5 +1,5 @@
 // Test helpers: an independent cell-by-cell collision check (not the
-// PlanningMap's row scan), the shared maps folder, and small maps.
+// PlanningMap's row scan), the MovingAI maps of the repository, and small maps.
 #pragma once
 
 #include "planners/geometry.hpp"
@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <stdexcept>
 #include <string>
 
 namespace beft::planners::test {
@@ -56,7 +58,15 @@ inline std::string findCollision(const GridMap& grid, const Path& path) {
   return "";
 }
 
-// The shared MovingAI folder (../shared/benchmarks/movingai beside the repository).
+// The MovingAI maps kept in the repository (planners/bench/data/movingai).
 inline std::string movingAiDir() { return BEFT_MOVINGAI_DIR; }
+
+// One file of that folder. Throws naming the path when it is missing, so a
+// test that needs the file fails rather than skipping.
+inline std::string movingAiFile(const std::string& name) {
+  const std::string path = movingAiDir() + "/" + name;
+  if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("missing MovingAI file " + path);
+  return path;
+}
 
 }  // namespace beft::planners::test

@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <memory>
 
 namespace beft::planners {
@@ -29,15 +28,13 @@ std::vector<Problem> problems() {
   out.push_back({"comb r=1.2", std::make_shared<PlanningMap>(comb.map, 1.2), {comb.queries[0]}});
   const SyntheticCase gap = narrowGapCase();
   out.push_back({"narrow gap", std::make_shared<PlanningMap>(gap.map, 0.0), {gap.queries[0]}});
-  const std::string file = test::movingAiDir() + "/random-32-32-20.map";
-  if (std::filesystem::exists(file)) {
-    const auto queries = loadMovingAiScenario(file + ".scen");
-    Problem p{"random-32-32-20", std::make_shared<PlanningMap>(loadMovingAiMap(file), 0.0), {}};
-    for (size_t i : {queries.size() / 2, queries.size() - 1}) {
-      p.queries.push_back({cellCentre(queries[i].start_x, queries[i].start_y), cellCentre(queries[i].goal_x, queries[i].goal_y)});
-    }
-    out.push_back(p);
+  const std::string file = test::movingAiFile("random-32-32-20.map");
+  const auto queries = loadMovingAiScenario(file + ".scen");
+  Problem p{"random-32-32-20", std::make_shared<PlanningMap>(loadMovingAiMap(file), 0.0), {}};
+  for (size_t i : {queries.size() / 2, queries.size() - 1}) {
+    p.queries.push_back({cellCentre(queries[i].start_x, queries[i].start_y), cellCentre(queries[i].goal_x, queries[i].goal_y)});
   }
+  out.push_back(p);
   return out;
 }
 

@@ -36,10 +36,9 @@ Output runPlan(const std::string& args) {
   return out;
 }
 
-std::string mapFile() { return test::movingAiDir() + "/random-32-32-20.map"; }
+std::string mapFile() { return test::movingAiFile("random-32-32-20.map"); }
 
 TEST(PlanCli, PrintsOneJsonObjectWithAFreePath) {
-  if (!std::filesystem::exists(mapFile())) GTEST_SKIP() << "missing " << mapFile();
   const auto queries = loadMovingAiScenario(mapFile() + ".scen");
   const MovingAiQuery& q = queries.back();
   const std::string png = (std::filesystem::temp_directory_path() / ("beft_plan_" + std::to_string(getpid()) + ".png")).string();
@@ -68,7 +67,6 @@ TEST(PlanCli, PrintsOneJsonObjectWithAFreePath) {
 }
 
 TEST(PlanCli, BadInputGetsAClearErrorAndExitStatus2) {
-  if (!std::filesystem::exists(mapFile())) GTEST_SKIP() << "missing " << mapFile();
   const GridMap grid = loadMovingAiMap(mapFile());
   int bx = -1, by = -1;
   for (int y = 0; y < grid.height() && bx < 0; ++y) {

@@ -7,7 +7,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <beft/fire_t.hpp>
@@ -49,11 +48,11 @@ void publish(lcm::LCM& lcm, const std::string& channel, const std::string& data)
   ASSERT_EQ(lcm.publish(channel, data.data(), static_cast<unsigned>(data.size())), 0) << channel;
 }
 
-// Drains `source` until `count` messages came or two seconds passed.
+// Drains `source` until `count` messages came or twenty seconds passed.
 template <typename Source>
 std::vector<Received> receiveAtLeast(Source& source, std::size_t count) {
   std::vector<Received> got;
-  const auto give_up = std::chrono::steady_clock::now() + 2s;
+  const auto give_up = std::chrono::steady_clock::now() + 20s;
   while (got.size() < count && std::chrono::steady_clock::now() < give_up)
     source.receive(20, [&got](const beft::lcm_wire::Message& m) {
       got.push_back({std::string(m.channel), std::string(reinterpret_cast<const char*>(m.data), m.size), m.recv_utime});
@@ -148,10 +147,11 @@ TEST_F(UdpmReceiverTest, PutsLcmsFragmentsTogetherAndFiltersTheWholeMessage) {
   EXPECT_EQ(got[0].data.size(), large.size());
   EXPECT_TRUE(got[0].data == large);
   EXPECT_EQ(got[1].data, "small");
-  std::this_thread::sleep_for(50ms);
-  int more = 0;
-  receiver.drain([&more](const beft::lcm_wire::Message&) { ++more; });
-  EXPECT_EQ(more, 0);
+  // Anything the three above still gave would come before this one.
+  publish(sender, "CAMERA_DEPTH", "end");
+  const auto more = receiveAtLeast(receiver, 1);
+  ASSERT_EQ(more.size(), 1u);
+  EXPECT_EQ(more[0].data, "end");
   EXPECT_GT(receiver.stats().datagrams, 7u) << "both large messages came as fragments";
 }
 
@@ -171,9 +171,10 @@ TEST_F(UdpmReceiverTest, ASocketNobodyReadsKeepsWhatComesUntilItIsDrained) {
   Spec spec;
   spec.rules = {channelRule("INPUT")};
   Receiver inputs(endpoint_, spec);
+  Receiver witness(endpoint_, spec);  // a datagram reaches every socket of the group at once
   lcm::LCM sender(url_);
   for (int i = 0; i < 300; ++i) publish(sender, "INPUT", patterned(i % 30 == 0 ? 8000 : 300, i));
-  std::this_thread::sleep_for(50ms);
+  ASSERT_EQ(receiveAtLeast(witness, 300).size(), 300u);
   std::vector<std::string> got;
   const int count = inputs.drain([&got](const beft::lcm_wire::Message& m) {
     got.emplace_back(reinterpret_cast<const char*>(m.data), m.size);
@@ -193,16 +194,17 @@ TEST_F(UdpmReceiverTest, AnUnfilteredSocketCountsWhatTheKernelDropped) {
   Spec one;
   one.rules = {channelRule("X")};
   EXPECT_FALSE(Receiver(endpoint_, one).countsLosses()) << "a filtered socket's drops include the filtered";
+  Receiver witness(endpoint_, one);  // a datagram reaches every socket of the group at once
   lcm::LCM sender(url_);
   const int sent = 200;
   for (int i = 0; i < sent; ++i) publish(sender, "X", patterned(2000, i));
-  std::this_thread::sleep_for(50ms);
+  ASSERT_EQ(receiveAtLeast(witness, sent).size(), static_cast<std::size_t>(sent));
   int got = 0;
   const auto count = [&got](const beft::lcm_wire::Message&) { ++got; };
   recorder.drain(count);
   // The kernel reports its count with the next datagram it queues: one more.
   publish(sender, "X", "the last");
-  std::this_thread::sleep_for(20ms);
+  ASSERT_EQ(receiveAtLeast(witness, 1).size(), 1u);
   recorder.drain(count);
   EXPECT_LT(got, sent);
   EXPECT_GT(recorder.stats().kernel_dropped, 0u);

@@ -158,14 +158,17 @@ TEST(LaunchFile, SplitsQuotedArguments) {
 TEST(Supervisor, PrefixesOutputRestartsOnFailureAndEndsWithTheArbiter) {
   TempDir dir;
   const std::string counter = dir.path + "/starts";
+  const std::string out_log = dir.path + "/out.log";
+  // The arbiter ends once flaky has used up its restarts (at most a minute).
   const auto file = dir.write("run.xml", R"(<launch>
   <process name="flaky" command="sh" args="-c 'echo started >> )" + counter + R"(; echo flaky says hi; exit 3'" restart="on-failure" max_restarts="2" lcm_url="0"/>
   <process name="sleeper" command="sleep" args="100" lcm_url="0"/>
-  <process name="arbiter" command="sh" args="-c 'sleep 1.5; echo done; exit 0'" role="arbiter" lcm_url="0"/>
+  <process name="arbiter" command="sh" args="-c 'i=0; until grep -q restart.limit.reached )" + out_log +
+                                          R"( || [ $i -ge 1200 ]; do sleep 0.05; i=$((i+1)); done; echo done; exit 0'" role="arbiter" lcm_url="0"/>
 </launch>)");
   SupervisorOptions options;
   options.quiet_children = true;
-  options.output_file = dir.path + "/out.log";
+  options.output_file = out_log;
   const auto start = std::chrono::steady_clock::now();
   const auto outcome = supervise(loadLaunchFile(file, {}), options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
