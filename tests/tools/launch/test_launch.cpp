@@ -189,14 +189,19 @@ TEST(Supervisor, PrefixesOutputRestartsOnFailureAndEndsWithTheArbiter) {
 // state it ends on.
 TEST(Supervisor, StopsListenersWhileTheOthersStillRun) {
   TempDir dir;
-  const std::string pid_file = dir.path + "/infra.pid", seen = dir.path + "/seen";
+  const std::string pid_file = dir.path + "/infra.pid", seen = dir.path + "/seen", ready = dir.path + "/ready";
+  // The arbiter ends the run only once the blackboard wrote its pid and the
+  // bridge set its TERM handler (at most 60 s), however slow the machine; the
+  // handler reads the pid when it runs (\$), not when it is set.
   const auto file = dir.write("run.xml", R"(<launch>
   <process name="blackboard" group="infra" command="sh" args="-c 'echo $$ > )" + pid_file +
                                                R"(; trap &quot;exit 0&quot; TERM; while :; do sleep 0.05; done'" lcm_url="0"/>
-  <process name="bridge" group="listener" command="sh" args="-c 'trap &quot;sleep 0.3; kill -0 $(cat )" + pid_file +
+  <process name="bridge" group="listener" command="sh" args="-c 'trap &quot;sleep 0.3; kill -0 \$(cat )" + pid_file +
                                                R"() &amp;&amp; echo alive > )" + seen + R"( || echo gone > )" + seen +
-                                               R"(; exit 0&quot; TERM; while :; do sleep 0.05; done'" lcm_url="0"/>
-  <process name="arbiter" command="sh" args="-c 'sleep 1; exit 0'" role="arbiter" lcm_url="0"/>
+                                               R"(; exit 0&quot; TERM; touch )" + ready +
+                                               R"(; while :; do sleep 0.05; done'" lcm_url="0"/>
+  <process name="arbiter" command="sh" args="-c 'n=0; while [ ! -s )" + pid_file + R"( ] || [ ! -e )" + ready +
+                                               R"( ]; do n=$((n+1)); [ $n -gt 1200 ] &amp;&amp; exit 1; sleep 0.05; done; exit 0'" role="arbiter" lcm_url="0"/>
 </launch>)");
   SupervisorOptions options;
   options.quiet_children = true;
