@@ -1,8 +1,5 @@
 #include "tests/system/run_support.hpp"
 
-#include "lib/wire/obstacle_map_changes.hpp"
-#include "lib/wire/obstacle_map_codec.hpp"
-
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,15 +14,13 @@
 #include <stdexcept>
 #include <thread>
 
-#include <beft/camera_frame_t.hpp>
-
 #include "lib/common/channels.hpp"
-#include "lib/camera/frame_decoding.hpp"
+#include "lib/compare/difference_text.hpp"
 #include "lib/wire/guarded_decode.hpp"
-#include "lib/wire/hypothesis_changes.hpp"
 #include "lib/wire/log_reader.hpp"
-#include "lib/wire/message_check.hpp"
 #include "lib/wire/run_identity.hpp"
+#include "lib/wire/hypothesis_changes.hpp"
+#include "lib/wire/message_check.hpp"
 
 namespace beft::system_test {
 
@@ -83,12 +78,9 @@ std::string makeTempDir(const std::string& tag) {
 
 std::vector<LoggedMessage> readLog(const std::string& path, uint64_t* other_run_events, const std::string& run_id) {
   const int64_t run = run_id.empty() ? wire::runOfLog(path) : wire::parseRunId(run_id);
-  wire::LogReader log(path);
-  std::vector<LoggedMessage> events;
-  wire::LogEvent event;
-  while (log.nextOfRun(event, run)) events.push_back({event.channel, event.timestamp, event.data});
-  if (other_run_events) *other_run_events = log.otherRunEvents();
-  return events;
+  compare::RunLog log = compare::readRunLog(path, run);
+  if (other_run_events) *other_run_events = log.other_run_events;
+  return std::move(log.messages);
 }
 
 nlohmann::json readJson(const std::string& path) {
@@ -97,134 +89,43 @@ nlohmann::json readJson(const std::string& path) {
   return nlohmann::json::parse(in);
 }
 
-std::map<DataKey, std::vector<uint8_t>> dataMessages(const std::vector<LoggedMessage>& log) {
-  std::map<DataKey, std::vector<uint8_t>> messages;
-  std::map<std::pair<std::string, int64_t>, int> count;
-  for (const auto& event : log) {
-    if (!channels::isDataPlaneChannel(event.channel) || event.data.size() < 16) continue;
-    // What a process of the run would refuse (injected damage) is no message of the run.
-    if (!wire::MessageRules::beftTypes().checkForChannel(event.channel, event.data.data(), event.data.size()).ok())
-      continue;
-    int64_t utime = 0;  // the first field after the 8-byte fingerprint, big-endian
-    for (int i = 8; i < 16; ++i) utime = (utime << 8) | event.data[i];
-    const int order = count[{event.channel, utime}]++;
-    messages[{event.channel, utime, order}] = event.data;
-  }
-  return messages;
-}
-
-DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected_log,
-                                   const std::vector<LoggedMessage>& actual_log) {
-  const auto expected = dataMessages(expected_log);
-  const auto actual = dataMessages(actual_log);
+DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected, const std::vector<LoggedMessage>& actual,
+                                   const compare::ComparisonOptions& options) {
+  const compare::RunComparison comparison = compare::compareRuns(expected, actual, options);
   DataComparison result;
-  result.expected = expected.size();
-  for (const auto& [key, data] : expected) {
-    const auto it = actual.find(key);
-    if (it == actual.end()) continue;
-    ++result.compared;
-    if (it->second == data) continue;
-    if (++result.differing == 1)
-      result.first_difference = std::get<0>(key) + " at t = " + std::to_string(std::get<1>(key) * 1e-6) + " s";
-  }
+  result.expected = comparison.first_messages;
+  result.actual = comparison.second_messages;
+  if (!comparison.identical())
+    result.first_difference =
+        compare::describeDifference(comparison.differences.front(), compare::DifferenceLabels{"expected", "actual"});
   return result;
 }
 
-namespace {
-
-// A camera frame as its pixels: what the digest pins is the image, not how
-// zstd (whose version may change its bytes) packed it.
-std::vector<uint8_t> unpackedFrame(const std::vector<uint8_t>& data) {
-  beft::camera_frame_t frame{};
-  if (!wire::guardedDecode(data.data(), data.size(), frame).ok() || !camera::decodeCameraFrame(frame)) return data;
-  std::vector<uint8_t> bytes(frame.getEncodedSize());
-  frame.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
+std::vector<LoggedMessage> withoutRefused(const std::vector<LoggedMessage>& log, std::size_t& refused) {
+  std::vector<LoggedMessage> kept;
+  refused = 0;
+  for (const auto& message : log) {
+    const auto& rules = wire::MessageRules::beftTypes();
+    if (channels::isDataPlaneChannel(message.channel) &&
+        !rules.checkForChannel(message.channel, message.data.data(), message.data.size()).ok())
+      ++refused;
+    else
+      kept.push_back(message);
+  }
+  return kept;
 }
 
-// An obstacle map as its cells, for the same reason (RLE_ZSTD).
-std::vector<uint8_t> unpackedMap(const std::vector<uint8_t>& data) {
-  beft::obstacle_map_t map{};
-  if (!wire::guardedDecode(data.data(), data.size(), map).ok()) return data;
-  try {
-    map.data = planners::makeObstacleMap(planners::decodeObstacleMap(map), beft::obstacle_map_t::ENCODING_RAW).data;
-  } catch (const planners::ObstacleMapError&) {
-    return data;
+std::vector<LoggedMessage> withoutRepeats(const std::vector<LoggedMessage>& log, std::size_t& repeats) {
+  std::vector<LoggedMessage> kept;
+  std::set<std::pair<std::string, std::vector<uint8_t>>> seen;
+  repeats = 0;
+  for (const auto& message : log) {
+    if (channels::isDataPlaneChannel(message.channel) && !seen.insert({message.channel, message.data}).second)
+      ++repeats;
+    else
+      kept.push_back(message);
   }
-  map.data_size = static_cast<int32_t>(map.data.size());
-  map.encoding = beft::obstacle_map_t::ENCODING_RAW;
-  std::vector<uint8_t> bytes(map.getEncodedSize());
-  map.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
-}
-
-}  // namespace
-
-std::map<std::string, ChannelDigest> dataDigests(const std::vector<LoggedMessage>& log) {
-  const auto messages = dataMessages(log);
-  // With HYPOTHESIS_CHANGES, HYPOTHESES stands for the whole list of every
-  // tick, made from the keyframes and the changes: what it was when the
-  // whole list went out every tick.
-  // Likewise OBSTACLE_MAP with OBSTACLE_MAP_CHANGES: the map of every tick.
-  bool changes_sent = false, map_changes_sent = false;
-  for (const auto& [key, data] : messages) {
-    if (std::get<0>(key) == channels::kHypothesisChanges) changes_sent = true;
-    if (std::get<0>(key) == channels::kObstacleMapChanges) map_changes_sent = true;
-  }
-  std::map<std::string, ChannelDigest> digests;
-  auto add = [&digests](const std::string& channel, const std::vector<uint8_t>& bytes) {
-    ChannelDigest& digest = digests[channel];
-    ++digest.count;
-    for (const uint8_t byte : bytes) digest.hash = (digest.hash ^ byte) * 1099511628211ull;  // FNV-1a prime
-  };
-  for (const auto& [key, data] : messages) {
-    const std::string& channel = std::get<0>(key);
-    if (changes_sent && channel == channels::kHypotheses) continue;
-    if (map_changes_sent && channel == channels::kObstacleMap) continue;
-    const std::string type = channels::typeOfChannel(channel);
-    if (type == lcmTypeName<beft::camera_frame_t>()) add(channel, unpackedFrame(data));
-    else if (type == lcmTypeName<beft::obstacle_map_t>()) add(channel, unpackedMap(data));
-    else add(channel, data);
-  }
-  if (map_changes_sent) {
-    std::map<int64_t, beft::obstacle_map_t> keyframes;
-    std::map<int64_t, beft::obstacle_map_changes_t> changes_of_tick;
-    for (const auto& [key, data] : messages) {
-      if (std::get<0>(key) == channels::kObstacleMap) {
-        beft::obstacle_map_t keyframe{};
-        if (wire::guardedDecode(data.data(), data.size(), keyframe).ok()) keyframes[keyframe.tick] = keyframe;
-      } else if (std::get<0>(key) == channels::kObstacleMapChanges) {
-        beft::obstacle_map_changes_t changes{};
-        if (wire::guardedDecode(data.data(), data.size(), changes).ok()) changes_of_tick[changes.tick] = changes;
-      }
-    }
-    planners::ObstacleMapAssembler assembler;
-    for (const auto& [tick, changes] : changes_of_tick) {
-      const auto keyframe = keyframes.find(changes.keyframe_tick);
-      if (keyframe == keyframes.end()) continue;
-      beft::obstacle_map_t whole = keyframe->second;  // as a map of every tick was sent: raw, its tick's time
-      try {
-        whole.data = assembler.mapOf(keyframe->second, &changes)->cells;
-      } catch (const planners::ObstacleMapError&) {
-        continue;
-      }
-      whole.utime = changes.utime;
-      whole.tick = changes.tick;
-      whole.encoding = beft::obstacle_map_t::ENCODING_RAW;
-      whole.data_size = static_cast<int32_t>(whole.data.size());
-      std::vector<uint8_t> bytes(whole.getEncodedSize());
-      whole.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-      add(channels::kObstacleMap.name, bytes);
-    }
-  }
-  if (changes_sent) {
-    for (const auto& whole : hypothesesOfEachTick(log)) {
-      std::vector<uint8_t> bytes(whole.getEncodedSize());
-      whole.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-      add(channels::kHypotheses.name, bytes);
-    }
-  }
-  return digests;
+  return kept;
 }
 
 std::vector<beft::hypotheses_t> hypothesesOfEachTick(const std::vector<LoggedMessage>& log) {

@@ -5,9 +5,11 @@
 #include <beft/hypotheses_t.hpp>
 #include <nlohmann/json.hpp>
 
+#include "lib/compare/data_comparison.hpp"
+#include "lib/compare/run_log.hpp"
+
 #include <map>
 #include <string>
-#include <tuple>
 #include <vector>
 
 namespace beft::system_test {
@@ -24,11 +26,7 @@ std::string binDir();     // build/bin
 std::string sourceDir();  // the repository root
 std::string makeTempDir(const std::string& tag);
 
-struct LoggedMessage {
-  std::string channel;
-  int64_t timestamp = 0;  // logger receive time [us]
-  std::vector<uint8_t> data;
-};
+using LoggedMessage = compare::LoggedMessage;  // channel (plain name), timestamp [us], data
 
 // Every event of an LCM log file of one run, in order, under plain channel
 // names; other runs' events are counted. The run: `run_id` (hex, as beft run
@@ -51,28 +49,27 @@ std::vector<Message> messagesOn(const std::vector<LoggedMessage>& log, const std
 
 nlohmann::json readJson(const std::string& path);
 
-// What two runs are compared by: every message of the data channels (the
-// world's, the experts', the task stack's), keyed by (channel, utime, order
-// within that utime), so a datagram one recorder lost shifts nothing.
-using DataKey = std::tuple<std::string, int64_t, int>;
-std::map<DataKey, std::vector<uint8_t>> dataMessages(const std::vector<LoggedMessage>& log);
-
+// Two runs compared by their data messages (lib/compare/data_comparison.hpp):
+// every message of every data channel of both, in order, both ways; a
+// missing, extra or refused message is a difference.
 struct DataComparison {
-  std::size_t expected = 0, compared = 0, differing = 0;
-  std::string first_difference;  // "CHANNEL at t = S s", or ""
+  std::size_t expected = 0, actual = 0;  // data messages of each run
+  std::string first_difference;          // the earliest difference, named and decoded; "" when identical
+  bool identical() const { return first_difference.empty(); }
 };
-DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected, const std::vector<LoggedMessage>& actual);
+DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected, const std::vector<LoggedMessage>& actual,
+                                   const compare::ComparisonOptions& options = {});
 
-// A compact fingerprint of a run's data messages, per channel: how many and
-// a 64-bit FNV-1a hash over their bytes in DataKey order (a camera frame's
-// bytes once unpacked: its pixels, whatever zstd made of them). Pinned in
-// tests/system/data/ so a change that should alter no message can be checked
-// against the build before it without keeping its logs.
-struct ChannelDigest {
-  std::size_t count = 0;
-  uint64_t hash = 1469598103934665603ull;  // FNV-1a offset basis
-};
-std::map<std::string, ChannelDigest> dataDigests(const std::vector<LoggedMessage>& log);
+// The log without the messages the message guard refuses (traffic injected
+// on purpose, never a message of the run); `refused`: how many it left out.
+std::vector<LoggedMessage> withoutRefused(const std::vector<LoggedMessage>& log, std::size_t& refused);
+
+// The log without the data messages that repeat, byte for byte, an earlier
+// message of their channel: what a process killed and restarted mid-tick
+// (or an arbiter resuming firings in flight) sends again for that tick.
+// A re-sent message that differs stays, and is a difference. `repeats`: how
+// many it left out.
+std::vector<LoggedMessage> withoutRepeats(const std::vector<LoggedMessage>& log, std::size_t& repeats);
 
 // The whole list of hypotheses of every tick the log has one for, in tick
 // order: the HYPOTHESES keyframes with each tick's HYPOTHESIS_CHANGES applied

@@ -7,6 +7,7 @@
 #include <sndfile.h>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 
@@ -133,9 +134,11 @@ TEST(HearingMissions, KilledEarsAndAudioResumeAndTheRunsMessagesDoNotChange) {
   ASSERT_EQ(clean.result.exit_code, 0) << clean.result.output;
   const auto& killed = hearingRun("yard", "--kill ears@60 --kill audio@150");
   ASSERT_EQ(killed.result.exit_code, 0) << killed.result.output;
-  const DataComparison comparison = compareDataMessages(clean.log, killed.log);
+  // What the killed processes sent again, byte for byte, after their restart is left out.
+  std::size_t repeats = 0;
+  const DataComparison comparison = compareDataMessages(clean.log, withoutRepeats(killed.log, repeats));
+  std::printf("[binaural] %zu messages sent again after a restart left out\n", repeats);
   EXPECT_GT(comparison.expected, 1000u);
-  EXPECT_GE(comparison.compared * 100, comparison.expected * 50) << "messages missing from the disturbed run";
-  EXPECT_EQ(comparison.differing, 0u) << "first difference: " << comparison.first_difference;
+  EXPECT_TRUE(comparison.identical()) << comparison.first_difference;
   EXPECT_EQ(killed.report["ticks"], clean.report["ticks"]);
 }

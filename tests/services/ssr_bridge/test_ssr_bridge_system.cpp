@@ -429,7 +429,9 @@ TEST(SsrBridgeSystem, OutlivesAMissingAVanishingAndANonsensicalSsr) {
     }
   } stop_world{publishing, world};
 
-  std::this_thread::sleep_for(std::chrono::milliseconds(2500));  // SSR missing: two retries at least
+  // SSR missing: the bridge says so and keeps trying.
+  ASSERT_TRUE(waitFor(30, [&] { return bridge.output().find("SSR is not reachable") != std::string::npos; }))
+      << bridge.output();
   ASSERT_TRUE(bridge.running()) << bridge.output();
   FakeSsr ssr(ssr_port);
   ASSERT_TRUE(ssr.listening());
