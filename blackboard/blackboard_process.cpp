@@ -13,7 +13,6 @@
 
 #include "lib/wire/message_decoder.hpp"
 #include "lib/common/channels.hpp"
-#include "lib/wire/guarded_decode.hpp"
 #include "lib/common/log.hpp"
 #include "lib/wire/log_reader.hpp"
 #include "lib/wire/run_identity.hpp"
@@ -28,30 +27,13 @@ int64_t wallUtime() {
   return duration_cast<microseconds>(system_clock::now().time_since_epoch()).count();
 }
 
-// Queries answered at once, everything else stored.
+}  // namespace
+
+// Queries answered at once, everything else stored (or refused by the service).
 class Traffic {
  public:
-  explicit Traffic(lcm::LCM& lcm, BlackboardService& service) : lcm_(lcm), service_(service) {}
-
-  // Queries by name; everything else is stored (or refused by the service).
-  void onMessage(const transport::Message& message) {
-    const std::string channel(message.channel);
-    if (channel == channels::kBlackboardQuery) {
-      beft::bb_query_t query{};
-      if (wire::decodeFrom(channel, message.data, message.size, query)) onQuery(query);
-      return;
-    }
-    if (channel == channels::kRunStatus) {
-      beft::run_status_t status{};
-      if (wire::decodeFrom(channel, message.data, message.size, status) &&
-          status.state == beft::run_status_t::STATE_WAITING)
-        arbiter_waiting_ = true;
-    }
-    onAnyMessage(channel, message.data, static_cast<int>(message.size));
-  }
-
-  // Whether an arbiter said it waits for heartbeats since the last call.
-  bool takeArbiterWaiting() { return std::exchange(arbiter_waiting_, false); }
+  Traffic(lcm::LCM& lcm, BlackboardService& service, const service::AnswerWritePort<beft::bb_snapshot_t>& answers)
+      : lcm_(lcm), service_(service), answers_(answers) {}
 
   void onAnyMessage(const std::string& channel, const void* data, int size) {
     try {
@@ -78,7 +60,7 @@ class Traffic {
         log::warn("ignored a query: ", why_not);
         return;
       }
-      const int status = lcm_.publish(wire::runChannel(answer->channel), &answer->snapshot);
+      const int status = answers_.publish(lcm_, answer->channel, answer->snapshot);
       const double elapsed_ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       std::size_t bytes = 0;
@@ -104,8 +86,10 @@ class Traffic {
  private:
   lcm::LCM& lcm_;
   BlackboardService& service_;
-  bool arbiter_waiting_ = false;
+  const service::AnswerWritePort<beft::bb_snapshot_t>& answers_;
 };
+
+namespace {
 
 std::string joined(const std::vector<std::string>& items) {
   std::string out;
@@ -126,14 +110,13 @@ std::string BlackboardProcess::description() const {
          "'beft blackboard dump'.";
 }
 
-std::vector<service::Port> BlackboardProcess::reads() const {
-  return {{".*", "any beft type", "every channel; not " + joined(options_.exclude) + ", BB_QUERY, BB_SNAPSHOT_*"},
-          service::port(channels::kBlackboardQuery)};
+void BlackboardProcess::onQuery(const beft::bb_query_t& query) {
+  if (traffic_ != nullptr) traffic_->onQuery(query);
 }
 
-std::vector<service::Port> BlackboardProcess::writes() const {
-  return {{std::string(channels::kBlackboardSnapshotPrefix.name) + "<requester>",
-           channels::kBlackboardSnapshotPrefix.typeName(), "the answer to a query"}};
+void BlackboardProcess::store(const transport::Message& message) {
+  if (traffic_ != nullptr)
+    traffic_->onAnyMessage(std::string(message.channel), message.data, static_cast<int>(message.size));
 }
 
 void BlackboardProcess::addOptions(CLI::App& app) {
@@ -179,11 +162,8 @@ int BlackboardProcess::serve(service::Context& context) {
   // --batch-ms (one wake-up for many messages), and BB_QUERY on one that
   // wakes the process at once. Excluded channels named plainly (FIRE, DONE,
   // ...) are dropped in the kernel.
-  transport::Selection stored, queries;
-  stored.mode = transport::Selection::Mode::RejectListed;
-  for (const auto& pattern : options_.exclude)
-    if (transport::isPlainChannel(pattern)) stored.rules.push_back(transport::channelRule(pattern));
-  queries.rules.push_back(transport::channelRule(channels::kBlackboardQuery));
+  const transport::Selection stored = selection(service::Delivery::kQueued);
+  const transport::Selection queries = selection(service::Delivery::kWakes);
   transport::SplitReceivers sources;
   try {
     sources = transport::openSplitReceivers(context.lcm, context.lcm_url, queries, stored, 64, queue_capacity_);
@@ -197,8 +177,10 @@ int BlackboardProcess::serve(service::Context& context) {
   } else {
     log::info("receiving: ", sources.wake->description());  // one LCM subscription: queries and the rest
   }
-  Traffic traffic(context.lcm, *service);
-  const transport::Handler handler = [&traffic](const transport::Message& message) { traffic.onMessage(message); };
+  Traffic traffic(context.lcm, *service, answers_out_);
+  traffic_ = &traffic;  // until serve() returns
+  const std::unique_ptr<Traffic*, void (*)(Traffic**)> serving(&traffic_, [](Traffic** slot) { *slot = nullptr; });
+  const transport::Handler handler = [this](const transport::Message& message) { dispatch(message); };
   if (!context.resume_log.empty()) {
     // After a crash: the history it held, from the run's log (queries in it are not answered again).
     try {
@@ -219,9 +201,9 @@ int BlackboardProcess::serve(service::Context& context) {
   // Heartbeats once it listens: the arbiter waits for the first (mission.xml:
   // --wait-for blackboard), or a message sent before, such as the ground
   // truth that goes out only when the scene changes, would never be held.
-  service::HeartbeatSender heartbeats(context.lcm, context.process_name);
+  service::HeartbeatSender heartbeats(context.lcm, heartbeat_out_, context.process_name);
   while (!context.stop.any()) {
-    heartbeats.update(traffic.takeArbiterWaiting());
+    heartbeats.update(std::exchange(arbiter_waiting_, false));
     // A query wakes it at once; stored traffic is read at least every batch.
     transport::waitReadable({sources.wake->fd(), sources.queued && !gather ? sources.queued->fd() : -1},
                             gather ? batch_ms_ : 200);

@@ -19,10 +19,6 @@ void AcousticLabelsExpert::declareParameters(DeclaredParameters& parameters) {
   model::declareParameters(parameters, model_, {"aw_variance_deg2", "label_gain", "label_form"});
 }
 
-bool AcousticLabelsExpert::inputsReady(const expert::Firing& firing) const {
-  return scene_.has(firing.tick) && geometry_.has(firing.tick) && audio_.has(firing.tick);
-}
-
 expert::Outcome AcousticLabelsExpert::fire(const expert::Firing& firing, expert::Output& out) {
   const auto* scene = scene_.ofTick(firing.tick);
   const auto* geometry = geometry_.ofTick(firing.tick);

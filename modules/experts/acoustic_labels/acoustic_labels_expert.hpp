@@ -17,7 +17,6 @@ class AcousticLabelsExpert : public expert::Expert {
  public:
   std::string name() const override { return "acoustic_labels"; }
   std::string description() const override;
-  bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
  protected:

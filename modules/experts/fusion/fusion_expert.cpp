@@ -37,11 +37,6 @@ void FusionExpert::declareParameters(DeclaredParameters& parameters) {
 
 void FusionExpert::onStartUp() { fusion_ = HypothesisFusion(config_); }
 
-bool FusionExpert::inputsReady(const expert::Firing& firing) const {
-  const int64_t k = firing.tick;
-  return scene_.has(k) && vision_.has(k) && visual_labels_.has(k) && audio_.has(k) && acoustic_labels_.has(k);
-}
-
 expert::Outcome FusionExpert::fire(const expert::Firing& firing, expert::Output& out) {
   const int64_t k = firing.tick;
   TickEvidence evidence;

@@ -26,7 +26,6 @@ class FusionExpert : public expert::Expert {
  public:
   std::string name() const override { return "fusion"; }
   std::string description() const override;
-  bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
  protected:

@@ -22,10 +22,6 @@ void GeometryExpert::declareParameters(DeclaredParameters& parameters) {
                      "expert reads (off: only those that sound now or may be in front of the camera)");
 }
 
-bool GeometryExpert::inputsReady(const expert::Firing& firing) const {
-  return scene_.has(firing.tick) && robot_.has(firing.tick);
-}
-
 expert::Outcome GeometryExpert::fire(const expert::Firing& firing, expert::Output& out) {
   const auto* scene = scene_.ofTick(firing.tick);
   const auto* robot = robot_.ofTick(firing.tick);

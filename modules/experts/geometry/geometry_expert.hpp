@@ -14,7 +14,6 @@ class GeometryExpert : public expert::Expert {
  public:
   std::string name() const override { return "geometry"; }
   std::string description() const override;
-  bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
  protected:

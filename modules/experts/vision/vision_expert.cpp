@@ -49,11 +49,6 @@ void VisionExpert::declareParameters(DeclaredParameters& parameters) {
                      "width of the touching segment, across the stopped motion, centred where the platform touched [m]");
 }
 
-bool VisionExpert::inputsReady(const expert::Firing& firing) const {
-  return scene_.has(firing.tick) && depth_.has(firing.tick) && instance_.has(firing.tick) &&
-         (contact_.empty() || contact_.has(firing.tick));
-}
-
 bool VisionExpert::samePose(const camera_frame_t& a, const camera_frame_t& b) {
   return a.encoding == b.encoding && a.width == b.width && a.height == b.height && a.fov == b.fov &&
          a.range == b.range && a.cam_x == b.cam_x && a.cam_y == b.cam_y && a.cam_z == b.cam_z &&

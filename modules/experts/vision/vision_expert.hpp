@@ -30,7 +30,6 @@ class VisionExpert : public expert::Expert {
  public:
   std::string name() const override { return "vision"; }
   std::string description() const override;
-  bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
  protected:

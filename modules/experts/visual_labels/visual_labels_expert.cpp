@@ -18,10 +18,6 @@ void VisualLabelsExpert::declareParameters(DeclaredParameters& parameters) {
   model::declareParameters(parameters, model_, {"label_gain", "label_form"});
 }
 
-bool VisualLabelsExpert::inputsReady(const expert::Firing& firing) const {
-  return scene_.has(firing.tick) && geometry_.has(firing.tick) && vision_.has(firing.tick);
-}
-
 expert::Outcome VisualLabelsExpert::fire(const expert::Firing& firing, expert::Output& out) {
   const auto* scene = scene_.ofTick(firing.tick);
   const auto* geometry = geometry_.ofTick(firing.tick);

@@ -17,7 +17,6 @@ class VisualLabelsExpert : public expert::Expert {
  public:
   std::string name() const override { return "visual_labels"; }
   std::string description() const override;
-  bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
  protected:

@@ -71,51 +71,62 @@ bool operator!=(std::string_view channel, Channel<Message> known) { return chann
 template <typename Message>
 std::ostream& operator<<(std::ostream& out, Channel<Message> channel) { return out << channel.name; }
 
-// X(constant, name, type): the one list of the blackboard's channels.
-#define BEFT_CHANNELS(X)                                                                        \
-  /* Sensor side (world process). */                                                         \
-  X(kGroundTruth, "GT_OBJECTS", scene_objects_t) /* when the scene changes, and keyframes */  \
-  X(kSceneVersion, "GT_VERSION", scene_version_t) /* every tick: which GT_OBJECTS holds */    \
-  X(kRobotState, "ROBOT_STATE", robot_state_t)                                                \
-  X(kContact, "CONTACT", contact_t)                                                           \
-  X(kCameraColor, "CAMERA_COLOR", camera_frame_t)                                             \
-  X(kCameraDepth, "CAMERA_DEPTH", camera_frame_t)                                             \
-  X(kCameraInstance, "CAMERA_INSTANCE", camera_frame_t)                                       \
-  X(kRobotCommand, "ROBOT_CMD", robot_command_t)                                              \
-  X(kEars, "EARS", binaural_block_t) /* beft-ears, with --acoustics binaural */                \
-  /* Low-level experts. */                                                                   \
-  X(kGeometry, "GEOMETRY", geometry_percepts_t)                                               \
-  X(kVision, "VISION", visual_percepts_t)                                                     \
-  X(kObstacleMap, "OBSTACLE_MAP", obstacle_map_t) /* at keyframes: the whole map */          \
-  X(kObstacleMapChanges, "OBSTACLE_MAP_CHANGES", obstacle_map_changes_t) /* every tick */      \
-  X(kObstacleMapFelt, "OBSTACLE_MAP_FELT", felt_contacts_t) /* every tick: contacts marked */  \
-  X(kAudio, "AUDIO", acoustic_percepts_t)                                                     \
-  /* Mid-level experts. */                                                                   \
-  X(kLabelsVisual, "LABELS_VISUAL", labels_t)                                                 \
-  X(kLabelsAcoustic, "LABELS_ACOUSTIC", labels_t)                                             \
-  /* High-level experts. */                                                                  \
-  X(kHypotheses, "HYPOTHESES", hypotheses_t) /* at keyframes: the whole list */              \
-  X(kHypothesisChanges, "HYPOTHESIS_CHANGES", hypothesis_changes_t) /* every tick */          \
-  X(kDynamicWeights, "DYNAMIC_WEIGHTS", dynamic_weights_t)                                    \
-  /* Tasks and planning. */                                                                  \
-  X(kTaskStack, "TASK_STACK", task_stack_t)                                                   \
-  X(kTaskCommand, "TASK_COMMAND", task_command_t)                                             \
-  X(kTaskEvents, "TASK_EVENTS", task_events_t)                                                \
-  X(kPlanRequest, "PLAN_REQUEST", plan_request_t)                                             \
-  X(kPlanResult, "PLAN_RESULT", plan_result_t)                                                \
-  /* Control plane (arbiter). */                                                             \
-  X(kFire, "FIRE", fire_t)                                                                    \
-  X(kDone, "DONE", done_t)                                                                    \
-  X(kHeartbeat, "HEARTBEAT", heartbeat_t)                                                     \
-  X(kMarking, "MARKING", marking_t)                                                           \
-  X(kRunStatus, "RUN_STATUS", run_status_t)                                                   \
-  X(kStopRequest, "STOP_REQUEST", run_status_t) /* end the run after this tick */            \
-  /* Blackboard service. */                                                                  \
-  X(kBlackboardQuery, "BB_QUERY", bb_query_t)                                                 \
-  /* URL-wide: every run announces itself (run_identity.hpp). */                             \
-  X(kRunBeacons, "BEFT_RUNS", run_beacon_t)
+// Which plane a channel belongs to (DESIGN.md: the blackboard is the data
+// plane, the arbiter the control plane).
+enum class Plane {
+  kData,     // what the world and the experts publish for a tick: two runs of one scenario and seed
+             // publish alike, and runs are compared by these (tests, beft bench faults)
+  kReport,   // published by an expert for a tick, for people and tools, not compared (TASK_EVENTS)
+  kService,  // requests to and answers of services (PLAN_RESULT holds the wall-clock planning time)
+  kControl,  // the arbiter's tokens, the experts' answers and the run's state
+  kUrlWide,  // every run on the URL announces itself
+};
 
-#define BEFT_DECLARE_CHANNEL(constant, name, type) inline constexpr Channel<type> constant{name};
+// X(constant, name, type, plane): the one list of the blackboard's channels.
+#define BEFT_CHANNELS(X)                                                                              \
+  /* Sensor side (world process). */                                                               \
+  X(kGroundTruth, "GT_OBJECTS", scene_objects_t, Data) /* when the scene changes, and keyframes */  \
+  X(kSceneVersion, "GT_VERSION", scene_version_t, Data) /* every tick: which GT_OBJECTS holds */    \
+  X(kRobotState, "ROBOT_STATE", robot_state_t, Data)                                                \
+  X(kContact, "CONTACT", contact_t, Data)                                                           \
+  X(kCameraColor, "CAMERA_COLOR", camera_frame_t, Data)                                             \
+  X(kCameraDepth, "CAMERA_DEPTH", camera_frame_t, Data)                                             \
+  X(kCameraInstance, "CAMERA_INSTANCE", camera_frame_t, Data)                                       \
+  X(kRobotCommand, "ROBOT_CMD", robot_command_t, Data) /* the tasks expert's */                     \
+  X(kEars, "EARS", binaural_block_t, Data) /* beft-ears, with --acoustics binaural */                \
+  /* Low-level experts. */                                                                         \
+  X(kGeometry, "GEOMETRY", geometry_percepts_t, Data)                                               \
+  X(kVision, "VISION", visual_percepts_t, Data)                                                     \
+  X(kObstacleMap, "OBSTACLE_MAP", obstacle_map_t, Data) /* at keyframes: the whole map */          \
+  X(kObstacleMapChanges, "OBSTACLE_MAP_CHANGES", obstacle_map_changes_t, Data) /* every tick */      \
+  X(kObstacleMapFelt, "OBSTACLE_MAP_FELT", felt_contacts_t, Data) /* every tick: contacts marked */  \
+  X(kAudio, "AUDIO", acoustic_percepts_t, Data)                                                     \
+  /* Mid-level experts. */                                                                         \
+  X(kLabelsVisual, "LABELS_VISUAL", labels_t, Data)                                                 \
+  X(kLabelsAcoustic, "LABELS_ACOUSTIC", labels_t, Data)                                             \
+  /* High-level experts. */                                                                        \
+  X(kHypotheses, "HYPOTHESES", hypotheses_t, Data) /* at keyframes: the whole list */              \
+  X(kHypothesisChanges, "HYPOTHESIS_CHANGES", hypothesis_changes_t, Data) /* every tick */          \
+  X(kDynamicWeights, "DYNAMIC_WEIGHTS", dynamic_weights_t, Data)                                    \
+  /* Tasks and planning. */                                                                        \
+  X(kTaskStack, "TASK_STACK", task_stack_t, Data)                                                   \
+  X(kTaskCommand, "TASK_COMMAND", task_command_t, Data) /* audio, dw, exploration; beft task */     \
+  X(kTaskEvents, "TASK_EVENTS", task_events_t, Report)                                              \
+  X(kPlanRequest, "PLAN_REQUEST", plan_request_t, Data) /* the tasks expert's */                    \
+  X(kPlanResult, "PLAN_RESULT", plan_result_t, Service)                                             \
+  /* Control plane (arbiter). */                                                                   \
+  X(kFire, "FIRE", fire_t, Control)                                                                 \
+  X(kDone, "DONE", done_t, Control)                                                                 \
+  X(kHeartbeat, "HEARTBEAT", heartbeat_t, Control)                                                  \
+  X(kMarking, "MARKING", marking_t, Control)                                                        \
+  X(kRunStatus, "RUN_STATUS", run_status_t, Control)                                                \
+  X(kStopRequest, "STOP_REQUEST", run_status_t, Control) /* end the run after this tick */          \
+  /* Blackboard service. */                                                                        \
+  X(kBlackboardQuery, "BB_QUERY", bb_query_t, Service)                                              \
+  /* URL-wide: every run announces itself (run_identity.hpp). */                                   \
+  X(kRunBeacons, "BEFT_RUNS", run_beacon_t, UrlWide)
+
+#define BEFT_DECLARE_CHANNEL(constant, name, type, plane) inline constexpr Channel<type> constant{name};
 BEFT_CHANNELS(BEFT_DECLARE_CHANNEL)
 #undef BEFT_DECLARE_CHANNEL
 
@@ -125,26 +136,25 @@ inline constexpr Channel<bb_snapshot_t> kBlackboardSnapshotPrefix{"BB_SNAPSHOT_"
 struct ChannelEntry {
   const char* name;
   std::string type;  // e.g. "beft.robot_state_t"
+  Plane plane;
 };
 
 // Every channel of the list above with its type, in that order.
 inline const std::vector<ChannelEntry>& allChannels() {
-#define BEFT_CHANNEL_ENTRY(constant, name, type) ChannelEntry{name, lcmTypeName<type>()},
+#define BEFT_CHANNEL_ENTRY(constant, name, type, plane) ChannelEntry{name, lcmTypeName<type>(), Plane::k##plane},
   static const std::vector<ChannelEntry> entries = {BEFT_CHANNELS(BEFT_CHANNEL_ENTRY)};
 #undef BEFT_CHANNEL_ENTRY
   return entries;
 }
 
-// The data plane: what the world and the experts publish for a tick, which
-// two runs of one scenario and seed must publish alike (control messages,
-// wall-clock fields such as PLAN_RESULT's planning time, and services' answers
-// left out). Runs are compared by these (tests, beft bench faults).
+// Whether a channel is of the data plane (Plane::kData in the list above).
 inline bool isDataPlaneChannel(const std::string& channel) {
-  static const std::set<std::string> names = {
-      kGroundTruth.name, kSceneVersion.name, kRobotState.name,  kContact.name,        kCameraColor.name,    kCameraDepth.name,    kCameraInstance.name,
-      kEars.name,        kGeometry.name,    kVision.name,      kObstacleMap.name, kObstacleMapChanges.name, kObstacleMapFelt.name, kAudio.name,          kLabelsVisual.name,
-      kLabelsAcoustic.name, kHypotheses.name, kHypothesisChanges.name, kDynamicWeights.name, kTaskStack.name,   kTaskCommand.name,
-      kRobotCommand.name,   kPlanRequest.name};
+  static const std::set<std::string> names = [] {
+    std::set<std::string> data;
+    for (const auto& entry : allChannels())
+      if (entry.plane == Plane::kData) data.insert(entry.name);
+    return data;
+  }();
   return names.count(channel) > 0;
 }
 

@@ -51,6 +51,12 @@ std::vector<std::string> Expert::inputsLacking(const Firing& firing) const {
   return lacking;
 }
 
+bool Expert::inputsReady(const Firing& firing) const {
+  for (const auto* port : inputs_)
+    if (port->lacksTick(firing.tick)) return false;
+  return true;
+}
+
 bool Expert::onMessage(const std::string& channel, const void* data, int size) {
   for (auto* port : inputs_)
     if (channel == port->channel()) return port->receive(data, size);

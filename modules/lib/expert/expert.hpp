@@ -104,9 +104,11 @@ class Expert {
   // are not a message of its type (the runner reports it).
   bool onMessage(const std::string& channel, const void* data, int size);
 
-  // True when what this firing needs has arrived (e.g. the inputs of its tick).
+  // True when what this firing needs has arrived; by default, when no
+  // declared input lacks the firing's tick (inputsLacking). Override only to
+  // add conditions (a planner's answer) or to read some input otherwise.
   // The runner waits a bounded time for it, then fires anyway with a warning.
-  virtual bool inputsReady(const Firing& firing) const { (void)firing; return true; }
+  virtual bool inputsReady(const Firing& firing) const;
   // The channels read by tick that hold nothing of the firing's tick.
   std::vector<std::string> inputsLacking(const Firing& firing) const;
   // Compute from what was stored, publish through out, say how it went.

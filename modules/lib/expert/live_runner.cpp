@@ -12,7 +12,6 @@
 #include <memory>
 #include <optional>
 #include <set>
-#include <unordered_map>
 
 #include <beft/bb_snapshot_t.hpp>
 #include <beft/done_t.hpp>
@@ -47,19 +46,13 @@ class LcmOutput : public Output {
  public:
   explicit LcmOutput(lcm::LCM& lcm) : lcm_(lcm) {}
   void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
-    if (lcm_.publish(onThisRun(channel), bytes.data(), static_cast<unsigned>(bytes.size())) != 0)
+    if (lcm_.publish(run_names_.of(channel), bytes.data(), static_cast<unsigned>(bytes.size())) != 0)
       log::warn("could not publish on ", channel, " (", bytes.size(), " bytes)");
   }
 
  private:
-  // The run's name of each channel, made once: publishing is on every firing's path.
-  const std::string& onThisRun(const std::string& channel) {
-    auto it = run_names_.find(channel);
-    if (it == run_names_.end()) it = run_names_.emplace(channel, wire::runChannel(channel)).first;
-    return it->second;
-  }
   lcm::LCM& lcm_;
-  std::unordered_map<std::string, std::string> run_names_;
+  wire::RunChannelNames run_names_;
 };
 
 // Tells whether the blackboard's copy of a channel is the message already

@@ -18,6 +18,7 @@
 
 #include "lib/wire/channel_history.hpp"
 #include "lib/common/channels.hpp"
+#include "lib/wire/decoding_handler.hpp"
 #include "lib/wire/guarded_decode.hpp"
 
 namespace beft::expert {
@@ -122,7 +123,7 @@ class TickInput : public InputPortBase {
 template <typename Message>
 class HandledInput : public InputPortBase {
  public:
-  using Handler = std::function<void(Message&&)>;
+  using Handler = typename wire::DecodingHandler<Message>::Handler;
   HandledInput(Expert& owner, channels::Channel<Message> channel, Handler handler,
                std::function<bool()> wanted = {})
       : InputPortBase(owner, channel.name, channel.typeName()),
@@ -131,14 +132,11 @@ class HandledInput : public InputPortBase {
 
   bool receive(const void* data, int size) override {
     if (wanted_ && !wanted_()) return true;
-    Message message{};
-    if (!decodeMessage(channel(), data, size, message)) return false;
-    handler_(std::move(message));
-    return true;
+    return size >= 0 && handler_(channel(), data, static_cast<std::size_t>(size));
   }
 
  private:
-  Handler handler_;
+  wire::DecodingHandler<Message> handler_;
   std::function<bool()> wanted_;
 };
 

@@ -95,8 +95,10 @@ int runServiceMain(int argc, char** argv, Service& service) {
   return service.serve(context);
 }
 
-HeartbeatSender::HeartbeatSender(lcm::LCM& lcm, const std::string& process_name, double period_s)
+HeartbeatSender::HeartbeatSender(lcm::LCM& lcm, const WritePort<beft::heartbeat_t>& port,
+                                 const std::string& process_name, double period_s)
     : lcm_(lcm),
+      port_(port),
       period_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period_s))),
       next_(Clock::now()),
       last_waiting_answer_(next_ - std::chrono::seconds(1)) {
@@ -112,7 +114,7 @@ void HeartbeatSender::update(bool arbiter_waiting) {
   const bool answer_waiting = arbiter_waiting && now - last_waiting_answer_ > std::chrono::milliseconds(50);
   if (now < next_ && !answer_waiting) return;
   heartbeat_.utime = wallMicros();
-  lcm_.publish(wire::runChannel(channels::kHeartbeat), &heartbeat_);
+  port_.publish(lcm_, heartbeat_);
   ++sent_;
   if (answer_waiting) last_waiting_answer_ = now;
   if (now >= next_) next_ += period_;

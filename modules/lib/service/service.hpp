@@ -1,9 +1,9 @@
 // One way to write a process that serves rather than fires (the planner, the
-// blackboard, the recorder, the arbiter): a class that says what it is, what
-// it reads and writes and which options it takes, and a serve() loop. The
-// runner around it does what every such process needs: the command line with
-// --help, --interface, --lcm-url and --name, heap retention, logging, LCM,
-// and SIGINT/SIGTERM.
+// blackboard, the recorder, the arbiter): a class that says what it is,
+// declares what it reads and writes as port members (ports.hpp) and which
+// options it takes, and a serve() loop. The runner around it does what every
+// such process needs: the command line with --help, --interface, --lcm-url
+// and --name, heap retention, logging, LCM, and SIGINT/SIGTERM.
 #pragma once
 
 #include <atomic>
@@ -14,6 +14,7 @@
 #include <beft/heartbeat_t.hpp>
 
 #include "lib/common/channels.hpp"
+#include "lib/service/ports.hpp"
 
 namespace CLI {
 class App;
@@ -23,17 +24,6 @@ class LCM;
 }
 
 namespace beft::service {
-
-// A channel a service reads or writes, with what it does with it.
-struct Port {
-  std::string channel;
-  std::string type;  // e.g. "beft.done_t"
-  std::string note;  // e.g. "an expert finished a firing"
-};
-template <typename Message>
-Port port(channels::Channel<Message> channel, std::string note = "") {
-  return {channel.name, channel.typeName(), std::move(note)};
-}
 
 // What stops a service: SIGINT (counted: the arbiter ends the run after the
 // tick on the first, at once on the second) and SIGTERM.
@@ -53,13 +43,11 @@ struct Context {
   std::string resume_log;
 };
 
-class Service {
+// What it reads and writes (reads(), writes()) comes from its ports.
+class Service : public PortSet {
  public:
-  virtual ~Service() = default;
   virtual std::string name() const = 0;         // default process name, e.g. "planner"
   virtual std::string description() const = 0;  // the paragraph of --help
-  virtual std::vector<Port> reads() const = 0;
-  virtual std::vector<Port> writes() const = 0;
   // Its own command-line options.
   virtual void addOptions(CLI::App& app) { (void)app; }
   // After parsing, before LCM: check the options, build the logic. Throw
@@ -86,7 +74,8 @@ std::string interfaceText(const Service& service, const std::string& process_nam
 // the experts answer, so a run never waits a period for it.
 class HeartbeatSender {
  public:
-  HeartbeatSender(lcm::LCM& lcm, const std::string& process_name, double period_s = 1.0);
+  HeartbeatSender(lcm::LCM& lcm, const WritePort<beft::heartbeat_t>& port, const std::string& process_name,
+                  double period_s = 1.0);
   // Call on every turn of the service's loop.
   void update(bool arbiter_waiting);
   int sent() const { return sent_; }
@@ -94,6 +83,7 @@ class HeartbeatSender {
  private:
   using Clock = std::chrono::steady_clock;
   lcm::LCM& lcm_;
+  const WritePort<beft::heartbeat_t>& port_;
   beft::heartbeat_t heartbeat_{};
   Clock::duration period_;
   Clock::time_point next_;

@@ -16,8 +16,8 @@ std::string blackboardAnswerChannel(const std::string& process_name) {
   return std::string(channels::kBlackboardSnapshotPrefix.name) + process_name + "_" + std::to_string(getpid());
 }
 
-void askBlackboard(lcm::LCM& lcm, const std::string& answer_channel, int64_t query_id,
-                   const std::vector<std::string>& channels) {
+beft::bb_query_t blackboardQuery(const std::string& answer_channel, int64_t query_id,
+                                 const std::vector<std::string>& channels) {
   beft::bb_query_t query{};
   query.utime = std::chrono::duration_cast<std::chrono::microseconds>(
                     std::chrono::system_clock::now().time_since_epoch())
@@ -26,6 +26,12 @@ void askBlackboard(lcm::LCM& lcm, const std::string& answer_channel, int64_t que
   query.query_id = query_id;
   query.channels = channels;
   query.num_channels = static_cast<int32_t>(query.channels.size());
+  return query;
+}
+
+void askBlackboard(lcm::LCM& lcm, const std::string& answer_channel, int64_t query_id,
+                   const std::vector<std::string>& channels) {
+  const beft::bb_query_t query = blackboardQuery(answer_channel, query_id, channels);
   lcm.publish(runChannel(channels::kBlackboardQuery.name), &query);
 }
 

@@ -75,6 +75,17 @@ std::string runChannel(const std::string& channel, int64_t run_id) {
 
 std::string runChannel(const std::string& channel) { return runChannel(channel, runId()); }
 
+const std::string& RunChannelNames::of(const std::string& channel) {
+  const int64_t run = runId();
+  if (run != run_id_) {
+    names_.clear();
+    run_id_ = run;
+  }
+  auto it = names_.find(channel);
+  if (it == names_.end()) it = names_.emplace(channel, runChannel(channel, run)).first;
+  return it->second;
+}
+
 std::string runIdText(int64_t run_id) {
   char text[20];
   std::snprintf(text, sizeof text, "%llx", static_cast<unsigned long long>(run_id));

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 
 namespace beft::wire {
 
@@ -36,6 +37,17 @@ int64_t runIdFor(const std::string& description);
 // URL-wide channels (BEFT_RUNS, LCM's own).
 std::string runChannel(const std::string& channel, int64_t run_id);
 std::string runChannel(const std::string& channel);  // this process's run
+
+// The run's names of channels, each made once (publishing is on every
+// firing's path); made again if the process's run changes.
+class RunChannelNames {
+ public:
+  const std::string& of(const std::string& channel);
+
+ private:
+  int64_t run_id_ = 0;
+  std::unordered_map<std::string, std::string> names_;
+};
 
 struct RunChannel {
   std::string_view base;  // "VISION"

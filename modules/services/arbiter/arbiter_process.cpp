@@ -40,16 +40,9 @@ std::string ArbiterProcess::description() const {
          "FAILED, 2 on bad input.";
 }
 
-std::vector<service::Port> ArbiterProcess::reads() const {
-  return {service::port(channels::kDone, "an expert finished a firing"),
-          service::port(channels::kHeartbeat, "liveness of the experts named in the net"),
-          service::port(channels::kStopRequest, "message = why; the run ends at the end of the tick")};
-}
-
-std::vector<service::Port> ArbiterProcess::writes() const {
-  return {service::port(channels::kFire, "re-sent until DONE"),
-          service::port(channels::kMarking, "after every step"),
-          service::port(channels::kRunStatus, "at start, every tick, and at the end")};
+ArbiterProcess::ArbiterProcess() {
+  include(outlets_);  // FIRE, MARKING, RUN_STATUS first; the beacons after
+  include(inbox_);
 }
 
 void ArbiterProcess::addOptions(CLI::App& app) {
@@ -102,7 +95,7 @@ int ArbiterProcess::serve(service::Context& context) {
   std::unique_ptr<ArbiterEventQueue> events;
   try {
     firing_log = std::make_unique<FiringLog>(quiet_ ? nullptr : stdout, firing_log_path_);
-    events = std::make_unique<ArbiterEventQueue>(context.lcm, context.lcm_url);
+    events = std::make_unique<ArbiterEventQueue>(context.lcm, context.lcm_url, inbox_);
   } catch (const std::exception& e) {
     log::error(e.what());
     return 2;
@@ -111,7 +104,7 @@ int ArbiterProcess::serve(service::Context& context) {
   // Fully buffered: the firing log flushes its lines every quarter second (and log lines flush it first).
   std::setvbuf(stdout, nullptr, _IOFBF, 1 << 16);
   SteadyClock clock;
-  LcmArbiterOutput output(context.lcm, firing_log.get());
+  LcmArbiterOutput output(context.lcm, outlets_, firing_log.get());
   ArbiterCore core(std::move(net_), config_, clock, output);
   if (!context.resume_log.empty()) {
     try {

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "services/arbiter/arbiter_core.hpp"
+#include "services/arbiter/arbiter_inbox.hpp"
+#include "services/arbiter/lcm_arbiter.hpp"
 #include "lib/service/service.hpp"
 
 namespace beft::arbiter {
@@ -14,8 +16,7 @@ class ArbiterProcess : public service::Service {
  public:
   std::string name() const override { return "arbiter"; }
   std::string description() const override;
-  std::vector<service::Port> reads() const override;
-  std::vector<service::Port> writes() const override;
+  ArbiterProcess();
   void addOptions(CLI::App& app) override;
   // Reads the net (std::invalid_argument with every problem, FILE:LINE).
   void onStartUp() override;
@@ -28,6 +29,8 @@ class ArbiterProcess : public service::Service {
   bool quiet_ = false;
   int spin_us_ = 1000;
   Net net_;
+  ArbiterInbox inbox_;
+  ArbiterOutlets outlets_;
 };
 
 }  // namespace beft::arbiter

@@ -6,16 +6,16 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include <atomic>
-#include <chrono>
 #include <memory>
 #include <string>
-#include <variant>
-#include <vector>
+
+#include <beft/fire_t.hpp>
+#include <beft/marking_t.hpp>
+#include <beft/run_status_t.hpp>
 
 #include "services/arbiter/arbiter_core.hpp"
+#include "services/arbiter/arbiter_inbox.hpp"
 #include "services/arbiter/firing_log.hpp"
-#include "services/arbiter/other_run_watch.hpp"
 #include "lib/service/service.hpp"
 #include "lib/transport/transport.hpp"
 
@@ -26,10 +26,18 @@ class SteadyClock : public Clock {
   double now() const override;
 };
 
-// Publishes the core's messages on their channels and writes the firing log.
+// What the arbiter writes, declared once as ports.
+struct ArbiterOutlets : service::PortSet {
+  service::WritePort<beft::fire_t> fire{*this, channels::kFire, "re-sent until DONE"};
+  service::WritePort<beft::marking_t> marking{*this, channels::kMarking, "after every step"};
+  service::WritePort<beft::run_status_t> run_status{*this, channels::kRunStatus,
+                                                    "at start, every tick, and at the end"};
+};
+
+// Publishes the core's messages on their ports and writes the firing log.
 class LcmArbiterOutput : public ArbiterOutput {
  public:
-  LcmArbiterOutput(lcm::LCM& lcm, FiringLog* firing_log);
+  LcmArbiterOutput(lcm::LCM& lcm, const ArbiterOutlets& outlets, FiringLog* firing_log);
   void sendFire(const beft::fire_t& fire) override;
   void sendMarking(const beft::marking_t& marking) override;
   void sendRunStatus(const beft::run_status_t& status) override;
@@ -37,49 +45,36 @@ class LcmArbiterOutput : public ArbiterOutput {
 
  private:
   lcm::LCM& lcm_;
+  const ArbiterOutlets& outlets_;
   FiringLog* firing_log_;
-  std::string fire_channel_, marking_channel_, run_status_channel_;  // on this run (run_identity.hpp)
 };
 
-struct StopRequest {
-  std::string why;
-};
-using ArbiterEvent = std::variant<beft::done_t, beft::heartbeat_t, StopRequest>;
-
-// Receives DONE, HEARTBEAT and STOP_REQUEST (transport.hpp: on udpm a
-// socket of its own, read in the loop's thread) and queues what arrives.
+// Receives what the inbox's ports take (transport.hpp: on udpm a socket of
+// its own, read in the loop's thread) and queues it there.
 class ArbiterEventQueue {
  public:
   // Throws std::runtime_error if it cannot receive on `url`.
-  ArbiterEventQueue(lcm::LCM& lcm, const std::string& url);
+  ArbiterEventQueue(lcm::LCM& lcm, const std::string& url, ArbiterInbox& inbox);
   ~ArbiterEventQueue();
   ArbiterEventQueue(const ArbiterEventQueue&) = delete;
   ArbiterEventQueue& operator=(const ArbiterEventQueue&) = delete;
 
-  // The channels it receives: DONE, HEARTBEAT, STOP_REQUEST.
-  static std::vector<std::string> channelsRead();
-
   // Sends this run's beacon on BEFT_RUNS when half a second has passed.
-  void announce(int64_t tick);
+  void announce(int64_t tick) { inbox_.announce(lcm_, tick); }
 
   // Waits up to `timeout_ms` for messages and queues every one there; polls
   // for the first `spin_us` microseconds of it instead of sleeping. Returns
   // false if receiving failed.
   bool receive(int timeout_ms, int spin_us = 0);
   // Hands every queued event to the core, in arrival order.
-  void deliverTo(ArbiterCore& core);
-  bool empty() const { return events_.empty(); }
+  void deliverTo(ArbiterCore& core) { inbox_.deliverTo(core); }
+  bool empty() const { return inbox_.empty(); }
   std::string description() const;
 
  private:
-  void onMessage(const transport::Message& message);
-
-
   lcm::LCM& lcm_;
+  ArbiterInbox& inbox_;
   std::unique_ptr<transport::Receiver> source_;
-  std::vector<ArbiterEvent> events_;
-  OtherRunWatch other_runs_;
-  std::chrono::steady_clock::time_point next_beacon_{};
 };
 
 // Set by signal handlers, read by the loop.

@@ -43,17 +43,6 @@ std::string PlannerProcess::description() const {
          "the goal heading at the end. Obstacles are inflated by the robot radius.";
 }
 
-std::vector<service::Port> PlannerProcess::reads() const {
-  return {service::port(channels::kObstacleMap, "keyframes: the whole map"),
-          service::port(channels::kObstacleMapChanges, "a request is planned on the map of its tick"),
-          service::port(channels::kPlanRequest, "each answered once"),
-          service::port(channels::kRunStatus, "an arbiter waiting for heartbeats is answered at once")};
-}
-
-std::vector<service::Port> PlannerProcess::writes() const {
-  return {service::port(channels::kPlanResult), service::port(channels::kHeartbeat, "every second")};
-}
-
 void PlannerProcess::addOptions(CLI::App& app) {
   namespace bp = beft::planners;
   app.add_option("--planner", config_.default_planner, "planner for requests that name none: " + joined(bp::plannerNames()))
@@ -81,29 +70,17 @@ void PlannerProcess::onStartUp() {
   planner_ = std::make_unique<PlannerService>(config_);
 }
 
-void PlannerProcess::onMessage(const transport::Message& message) {
-  const std::string channel(message.channel);
-  const bool keyframe = channel == channels::kObstacleMap, changes = channel == channels::kObstacleMapChanges;
-  if (keyframe || changes) {
-    if (keyframe ? !wire::validFrom<beft::obstacle_map_t>(channel, message.data, message.size)
-                 : !wire::validFrom<beft::obstacle_map_changes_t>(channel, message.data, message.size))
-      return;
-    KeptMessage kept_message{0, 0, std::vector<uint8_t>(message.data, message.data + message.size)};
-    wire::encodedUtime(message.data, message.size, kept_message.utime);
-    wire::encodedTick(message.data, message.size, kept_message.tick);
-    auto& kept = keyframe ? recent_keyframes_ : recent_changes_;
-    while (!kept.empty() && kept.back().utime >= kept_message.utime) kept.pop_back();  // a tick sent again
-    kept.push_back(std::move(kept_message));
-    if (kept.size() > (keyframe ? kKeyframesKept : kChangesKept)) kept.pop_front();
-  } else if (channel == channels::kPlanRequest) {
-    beft::plan_request_t request{};
-    if (wire::decodeFrom(channel, message.data, message.size, request)) requests_.push_back(std::move(request));
-  } else if (channel == channels::kRunStatus) {
-    beft::run_status_t status{};
-    if (wire::decodeFrom(channel, message.data, message.size, status) &&
-        status.state == beft::run_status_t::STATE_WAITING)
-      arbiter_waiting_ = true;
-  }
+void PlannerProcess::keep(std::deque<KeptMessage>& kept, std::size_t most, const transport::Message& message) {
+  KeptMessage kept_message{0, 0, std::vector<uint8_t>(message.data, message.data + message.size)};
+  wire::encodedUtime(message.data, message.size, kept_message.utime);
+  wire::encodedTick(message.data, message.size, kept_message.tick);
+  while (!kept.empty() && kept.back().utime >= kept_message.utime) kept.pop_back();  // a tick sent again
+  kept.push_back(std::move(kept_message));
+  if (kept.size() > most) kept.pop_front();
+}
+
+void PlannerProcess::onRunStatus(const beft::run_status_t& status) {
+  if (status.state == beft::run_status_t::STATE_WAITING) arbiter_waiting_ = true;
 }
 
 std::shared_ptr<const planners::ObstacleCells> PlannerProcess::mapFor(const beft::plan_request_t& request) {
@@ -121,7 +98,7 @@ std::shared_ptr<const planners::ObstacleCells> PlannerProcess::mapFor(const beft
   beft::obstacle_map_changes_t changes{};
   const bool with_changes = changes_bytes != nullptr && changes_bytes->utime >= keyframe_bytes->utime;
   if (with_changes) {
-    if (!wire::guardedDecode(changes_bytes->bytes.data(), changes_bytes->bytes.size(), changes).ok())
+    if (!changes_in_.decode(changes_bytes->bytes, changes))
       throw planners::ObstacleMapError("not an obstacle_map_changes_t");
     keyframe_bytes = nullptr;
     for (const auto& kept : recent_keyframes_)
@@ -131,7 +108,7 @@ std::shared_ptr<const planners::ObstacleCells> PlannerProcess::mapFor(const beft
                                        " for the changes of tick " + std::to_string(changes.tick));
   }
   beft::obstacle_map_t keyframe{};
-  if (!wire::guardedDecode(keyframe_bytes->bytes.data(), keyframe_bytes->bytes.size(), keyframe).ok())
+  if (!keyframes_in_.decode(keyframe_bytes->bytes, keyframe))
     throw planners::ObstacleMapError("not an obstacle_map_t");
   return assembler_.mapOf(keyframe, with_changes ? &changes : nullptr);
 }
@@ -162,7 +139,7 @@ void PlannerProcess::answerOne(lcm::LCM& lcm, const beft::plan_request_t& reques
       log::debug("request ", request.request_id, " was answered before; ignored");
       return;
     }
-    lcm.publish(wire::runChannel(channels::kPlanResult), &*result);
+    results_out_.publish(lcm, *result);
     ++answered_;
     if (result->success)
       log::info("request ", request.request_id, " (", result->planner, "): ", result->num_waypoints,
@@ -189,7 +166,7 @@ void PlannerProcess::resumeFromLog(const std::string& log_path, int64_t live_sin
   while (log.nextOfRun(event, wire::runId())) {
     transport::Message message{event.channel.c_str(), event.data.data(), event.data.size()};
     if (event.channel == channels::kObstacleMap || event.channel == channels::kObstacleMapChanges) {
-      onMessage(message);
+      dispatch(message);
     } else if (event.channel == channels::kPlanRequest) {
       beft::plan_request_t request{};
       if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), request)) {
@@ -226,10 +203,8 @@ void PlannerProcess::answerUnanswered(lcm::LCM& lcm) {
 int PlannerProcess::serve(service::Context& context) {
   // On udpm the maps (one a tick) queue on a socket nothing waits on and are
   // read when a request comes; requests wake the process.
-  transport::Selection maps, requests;
-  maps.rules = {transport::channelRule(channels::kObstacleMap), transport::channelRule(channels::kObstacleMapChanges)};
-  requests.rules = {transport::channelRule(channels::kPlanRequest),
-                    control::runStatusIn(beft::run_status_t::STATE_WAITING, "an arbiter waiting for heartbeats")};
+  const transport::Selection maps = selection(service::Delivery::kQueued);
+  const transport::Selection requests = selection(service::Delivery::kWakes);
   transport::SplitReceivers sources;
   try {
     sources = transport::openSplitReceivers(context.lcm, context.lcm_url, requests, maps, 16, 1000);
@@ -242,7 +217,7 @@ int PlannerProcess::serve(service::Context& context) {
   log::info("planning with ", config_.default_planner, " (robot radius ", config_.robot_radius, " m) on ",
             context.lcm_url);
   const int64_t live_since_us = wallMicros();
-  const transport::Handler to_inbox = [this](const transport::Message& m) { onMessage(m); };
+  const transport::Handler to_inbox = [this](const transport::Message& m) { dispatch(m); };
   if (!context.resume_log.empty()) {
     try {
       resumeFromLog(context.resume_log, live_since_us);
@@ -252,7 +227,7 @@ int PlannerProcess::serve(service::Context& context) {
     }
     answerUnanswered(context.lcm);
   }
-  service::HeartbeatSender heartbeats(context.lcm, context.process_name);
+  service::HeartbeatSender heartbeats(context.lcm, heartbeat_out_, context.process_name);
   while (!context.stop.any()) {
     heartbeats.update(arbiter_waiting_);
     arbiter_waiting_ = false;

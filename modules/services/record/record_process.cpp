@@ -17,10 +17,6 @@ std::string RecordProcess::description() const {
          "then closes the file.";
 }
 
-std::vector<service::Port> RecordProcess::reads() const {
-  return {{".*", "any", "every channel but --exclude, in the order the messages entered the host"}};
-}
-
 void RecordProcess::addOptions(CLI::App& app) {
   app.add_option("file", options_.path, "the log file to write (required)");
   app.add_option("--exclude", options_.exclude_regex, "channels not recorded (POSIX extended regex, whole name)");
@@ -73,7 +69,7 @@ void RecordProcess::onStartUp() {
 
 int RecordProcess::serve(service::Context& context) {
   try {
-    Recorder recorder(context.lcm, context.lcm_url, options_);
+    Recorder recorder(context.lcm, context.lcm_url, options_, recorded_.taken());
     log::info("receiving: ", recorder.description());
     if (batch_ms_ > 0 && !transport::roomToGather(recorder.receiveBufferBytes())) batch_ms_ = 0;
     log::info("recording ", context.lcm_url, " into ", options_.path,

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "services/record/recorded_ports.hpp"
 #include "services/record/recorder.hpp"
 #include "lib/service/service.hpp"
 
@@ -12,10 +13,9 @@ namespace beft::record {
 
 class RecordProcess : public service::Service {
  public:
+  RecordProcess() { include(recorded_); }
   std::string name() const override { return "record"; }
   std::string description() const override;
-  std::vector<service::Port> reads() const override;
-  std::vector<service::Port> writes() const override { return {}; }
   void addOptions(CLI::App& app) override;
   void onStartUp() override;
   int serve(service::Context& context) override;
@@ -30,6 +30,7 @@ class RecordProcess : public service::Service {
   std::string camera_ = "all";  // --camera, parsed into options_ at start-up
   bool quiet_ = false;
   int batch_ms_ = 5;
+  RecordedPorts recorded_;
 };
 
 }  // namespace beft::record

@@ -10,7 +10,8 @@
 
 namespace beft::record {
 
-Recorder::Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options) : options_(std::move(options)) {
+Recorder::Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options, const transport::Selection& taken)
+    : options_(std::move(options)) {
   std::error_code error;
   if (!options_.overwrite && std::filesystem::exists(options_.path, error))
     throw std::runtime_error(options_.path + ": exists (--force replaces it)");
@@ -23,12 +24,8 @@ Recorder::Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options)
     }
   }
   // Listening before the file appears: whoever waits for the file to start
-  // publishing (the launcher) loses nothing. Every channel: an empty list of
-  // channels to drop.
-  transport::Selection everything;
-  everything.mode = transport::Selection::Mode::RejectListed;
-  everything.every_run = true;  // the log keeps every run heard, under the names heard
-  source_ = transport::openReceiver(lcm, url, everything, 64, options_.queue_capacity);
+  // publishing (the launcher) loses nothing.
+  source_ = transport::openReceiver(lcm, url, taken, 64, options_.queue_capacity);
   take_ = [this](const transport::Message& message) {
     if (has_exclude_ && std::regex_match(message.channel.begin(), message.channel.end(), exclude_)) return;
     if (!options_.camera.keeps(message.channel, message.data, message.size)) {

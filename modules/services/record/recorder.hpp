@@ -40,10 +40,11 @@ struct RecordOptions {
 
 class Recorder {
  public:
-  // Starts receiving on `url` (which `lcm` was opened with), then creates the
-  // file (so once the file exists, everything sent is recorded); throws
-  // std::runtime_error with the reason if it cannot.
-  Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options);
+  // Starts receiving what `taken` selects (RecordedPorts: every channel of
+  // every run) on `url` (which `lcm` was opened with), then
+  // creates the file (so once the file exists, everything sent is
+  // recorded); throws std::runtime_error with the reason if it cannot.
+  Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options, const transport::Selection& taken);
   ~Recorder();
   Recorder(const Recorder&) = delete;
   Recorder& operator=(const Recorder&) = delete;

@@ -8,12 +8,7 @@
 #include <thread>
 
 #include <CLI/CLI.hpp>
-#include <beft/bb_snapshot_t.hpp>
-#include <beft/robot_state_t.hpp>
-#include <beft/scene_objects_t.hpp>
-
 #include "lib/common/channels.hpp"
-#include "lib/wire/guarded_decode.hpp"
 #include "lib/common/log.hpp"
 #include "lib/wire/blackboard_query.hpp"
 
@@ -27,15 +22,6 @@ std::string SsrBridgeProcess::description() const {
          "volume from the object's level; SSR's listener at the robot's head, looking where the head looks. It "
          "clears SSR's scene when it connects, sends only what changed, only listens to the run (nothing waits "
          "for it), and tries again every second while SSR is not there.";
-}
-
-std::vector<service::Port> SsrBridgeProcess::reads() const {
-  return {service::port(channels::kGroundTruth, "the acoustic objects: sound file, position, sounding, level"),
-          service::port(channels::kRobotState, "the head's position and heading: SSR's listener")};
-}
-
-std::vector<service::Port> SsrBridgeProcess::writes() const {
-  return {service::port(channels::kBlackboardQuery, "until GT_OBJECTS is heard, every 0.2 s: the scene in force")};
 }
 
 void SsrBridgeProcess::addOptions(CLI::App& app) {
@@ -57,39 +43,31 @@ void SsrBridgeProcess::onStartUp() {
     throw std::invalid_argument("--scenario " + scenario_ + ": no such file");
 }
 
-void SsrBridgeProcess::onMessage(const transport::Message& message) {
-  if (message.channel == channels::kGroundTruth.name) {
-    newest_objects_.assign(message.data, message.data + message.size);
-    heard_objects_ = true;
-  } else if (message.channel == snapshot_channel_) {
-    beft::bb_snapshot_t snapshot{};
-    if (heard_objects_ || !wire::guardedDecode(message.data, static_cast<std::size_t>(message.size), snapshot).ok())
-      return;
-    for (const auto& entry : snapshot.entries)
-      if (entry.channel == channels::kGroundTruth.name && !entry.data.empty()) {
-        newest_objects_ = entry.data;
-        heard_objects_ = true;
-        log::info("the scene in force from the blackboard (its ground truth of t = ", entry.utime * 1e-6, " s)");
-      }
-    if (!heard_objects_) return;
-  } else if (message.channel == channels::kRobotState.name) {
-    newest_robot_.assign(message.data, message.data + message.size);
-  } else {
-    return;
-  }
+void SsrBridgeProcess::keepObjects(const uint8_t* data, std::size_t size) {
+  newest_objects_.assign(data, data + size);
+  heard_objects_ = true;
   heard_news_ = true;
+}
+
+void SsrBridgeProcess::onSceneAnswer(const beft::bb_snapshot_t& snapshot) {
+  if (heard_objects_) return;
+  for (const auto& entry : snapshot.entries)
+    if (entry.channel == channels::kGroundTruth.name && !entry.data.empty()) {
+      keepObjects(entry.data.data(), entry.data.size());
+      log::info("the scene in force from the blackboard (its ground truth of t = ", entry.utime * 1e-6, " s)");
+    }
 }
 
 void SsrBridgeProcess::tellSsr(SsrLink& link, SceneMirror& mirror) {
   if (!newest_objects_.empty()) {
     beft::scene_objects_t objects{};
-    if (wire::decodeFrom(channels::kGroundTruth.name, newest_objects_.data(), newest_objects_.size(), objects))
+    if (objects_in_.decode(newest_objects_, objects))
       mirror.setObjects(objects);
     newest_objects_.clear();
   }
   if (!newest_robot_.empty()) {
     beft::robot_state_t robot{};
-    if (wire::decodeFrom(channels::kRobotState.name, newest_robot_.data(), newest_robot_.size(), robot))
+    if (robot_in_.decode(newest_robot_, robot))
       mirror.setRobot(robot);
     newest_robot_.clear();
   }
@@ -119,7 +97,7 @@ void SsrBridgeProcess::askForTheScene(lcm::LCM& lcm) {
   const auto now = std::chrono::steady_clock::now();
   if (heard_objects_ || now < next_query_) return;
   next_query_ = now + std::chrono::milliseconds(200);
-  wire::askBlackboard(lcm, snapshot_channel_, ++queries_, {channels::kGroundTruth.name});
+  query_out_.publish(lcm, wire::blackboardQuery(scene_answer_in_.channel(), ++queries_, {channels::kGroundTruth.name}));
 }
 
 void SsrBridgeProcess::logWarnings(SceneMirror& mirror) {
@@ -127,13 +105,10 @@ void SsrBridgeProcess::logWarnings(SceneMirror& mirror) {
 }
 
 int SsrBridgeProcess::serve(service::Context& context) {
-  snapshot_channel_ = wire::blackboardAnswerChannel(context.process_name);
-  transport::Selection selection;
-  selection.rules = {transport::channelRule(channels::kGroundTruth.name),
-                     transport::channelRule(channels::kRobotState.name), transport::channelRule(snapshot_channel_)};
+  scene_answer_in_.answerOn(wire::blackboardAnswerChannel(context.process_name));
   std::unique_ptr<transport::Receiver> receiver;
   try {
-    receiver = transport::openReceiver(context.lcm, context.lcm_url, selection);
+    receiver = transport::openReceiver(context.lcm, context.lcm_url, selection(service::Delivery::kWakes));
   } catch (const std::exception& e) {
     log::error("cannot receive on ", context.lcm_url, ": ", e.what());
     return 1;
@@ -145,7 +120,7 @@ int SsrBridgeProcess::serve(service::Context& context) {
   SsrLink link(ssr_host_, ssr_port_);
   log::info("mirroring the run into SSR at ", link.address(),
             scenario_.empty() ? ", sounds relative to the current directory" : ", sounds relative to " + scenario_dir);
-  const transport::Handler keep = [this](const transport::Message& m) { onMessage(m); };
+  const transport::Handler keep = [this](const transport::Message& m) { dispatch(m); };
   std::vector<std::string> from_ssr;
   while (!context.stop.any()) {
     askForTheScene(context.lcm);

@@ -42,10 +42,6 @@ void EarsExpert::onStartUp() {
   sounds_ = std::make_unique<hearing::SoundBank>(folder.empty() ? "." : folder, rate, warn);
 }
 
-bool EarsExpert::inputsReady(const expert::Firing& firing) const {
-  return scene_.has(firing.tick) && robot_.has(firing.tick);
-}
-
 expert::Outcome EarsExpert::fire(const expert::Firing& firing, expert::Output& out) {
   const auto* scene = scene_.ofTick(firing.tick);
   const auto* robot = robot_.ofTick(firing.tick);

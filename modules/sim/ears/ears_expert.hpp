@@ -21,7 +21,6 @@ class EarsExpert : public expert::Expert {
  public:
   std::string name() const override { return "ears"; }
   std::string description() const override;
-  bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
  protected:

@@ -129,11 +129,13 @@ void benchLcm(const Net& net, int64_t ticks, const std::string& url) {
   std::atomic<bool> stop{false};
   std::thread responder(respond, url, net.experts(), std::ref(stop));
   SteadyClock clock;
-  LcmArbiterOutput output(lcm, nullptr);
+  ArbiterOutlets outlets;
+  LcmArbiterOutput output(lcm, outlets, nullptr);
   ArbiterConfig config;
   config.max_ticks = ticks;
   ArbiterCore core(net, config, clock, output);
-  ArbiterEventQueue events(lcm, url);
+  ArbiterInbox inbox;
+  ArbiterEventQueue events(lcm, url, inbox);
   const auto start = std::chrono::steady_clock::now();
   runArbiterLoop(events, core, clock);
   stop = true;

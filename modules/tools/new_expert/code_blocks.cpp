@@ -43,14 +43,6 @@ std::string ports(const ExpertSpec& spec) {
   return text;
 }
 
-std::string inputsReady(const ExpertSpec& spec) {
-  if (spec.reads.empty()) return "(void)firing;\n  return true;";
-  std::string text = "return ";
-  for (std::size_t i = 0; i < spec.reads.size(); ++i)
-    text += (i == 0 ? "" : " &&\n         ") + inputMember(spec.reads[i]) + ".has(firing.tick)";
-  return text + ";";
-}
-
 std::string inputChecks(const ExpertSpec& spec) {
   std::string text;
   for (const auto& channel : spec.reads)
@@ -129,7 +121,6 @@ std::map<std::string, std::string> templateValues(const ExpertSpec& spec) {
           {"message_includes", messageIncludes(spec)},
           {"port_includes", reads_scene ? "#include \"lib/expert/scene_input.hpp\"\n" : ""},
           {"ports", ports(spec)},
-          {"inputs_ready", inputsReady(spec)},
           {"input_checks", inputChecks(spec)},
           {"publishing", publishing(spec)},
           {"deliveries", testDeliveries(spec)},

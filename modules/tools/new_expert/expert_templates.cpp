@@ -40,7 +40,6 @@ class {{class}} : public expert::Expert {
  public:
   std::string name() const override { return "{{name}}"; }
   std::string description() const override;
-  bool inputsReady(const expert::Firing& firing) const override;
   expert::Outcome fire(const expert::Firing& firing, expert::Output& out) override;
 
  protected:
@@ -67,10 +66,6 @@ std::string {{class}}::description() const {
 
 void {{class}}::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("every_n_ticks", every_n_ticks_, 1, 1000000, "publish at ticks that are a multiple of this only");
-}
-
-bool {{class}}::inputsReady(const expert::Firing& firing) const {
-  {{inputs_ready}}
 }
 
 expert::Outcome {{class}}::fire(const expert::Firing& firing, expert::Output& out) {

@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <mutex>
 #include <thread>
 
@@ -62,15 +65,33 @@ class ScalingExpert : public expert::Expert {
   expert::OutputPort<beft::robot_state_t> scaled_out_{*this, kScaled};
 };
 
-// Reads nothing and takes a second per firing, like the task executor waiting for a plan.
+// Reads nothing and works on its firing until the test lets it finish (at
+// most a minute), like the task executor waiting for a plan.
 class SlowExpert : public expert::Expert {
  public:
   std::string name() const override { return "slow"; }
   std::string description() const override { return "test expert"; }
   expert::Outcome fire(const expert::Firing&, expert::Output&) override {
-    std::this_thread::sleep_for(1s);
+    std::unique_lock<std::mutex> lock(mutex_);
+    working_ = true;
+    changed_.notify_all();
+    changed_.wait_for(lock, 60s, [this] { return released_; });
     return expert::Outcome::success();
   }
+  bool working() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return working_;
+  }
+  void release() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    released_ = true;
+    changed_.notify_all();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool working_ = false, released_ = false;
 };
 
 int uniquePort(int offset) { return 21000 + (getpid() * 7 + offset) % 9000; }
@@ -112,6 +133,23 @@ struct DoneCollector {
     beats.push_back(*h);
   }
   std::vector<beft::heartbeat_t> beats;
+
+  size_t doneCount() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return done.size();
+  }
+  int heartbeatCount() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return heartbeats;
+  }
+  int beatsIn(const std::string& state) {
+    std::lock_guard<std::mutex> lock(mutex);
+    return static_cast<int>(std::count_if(beats.begin(), beats.end(), [&](const auto& b) { return b.state == state; }));
+  }
+  bool lastBeatIs(const std::string& state, int64_t last_firing_id) {
+    std::lock_guard<std::mutex> lock(mutex);
+    return !beats.empty() && beats.back().state == state && beats.back().last_firing_id == last_firing_id;
+  }
 };
 
 // The options of a live "scaler" on its own port, without blackboard catch-up.
@@ -123,9 +161,21 @@ expert::LiveOptions scalerOptions(int port_offset) {
   return options;
 }
 
-void pump(lcm::LCM& lcm, std::chrono::milliseconds how_long) {
-  const auto end = std::chrono::steady_clock::now() + how_long;
-  while (std::chrono::steady_clock::now() < end) lcm.handleTimeout(10);
+// Handles the bus until `condition` holds; false if it still does not after
+// a generous deadline (the machine is shared: never a short window).
+bool pumpUntil(lcm::LCM& lcm, const std::function<bool()>& condition, std::chrono::seconds deadline = 30s) {
+  const auto end = std::chrono::steady_clock::now() + deadline;
+  while (!condition()) {
+    if (std::chrono::steady_clock::now() >= end) return false;
+    lcm.handleTimeout(10);
+  }
+  return true;
+}
+
+// The runner sends its first heartbeat once it listens: from then on
+// nothing published to it is lost.
+bool waitUntilListening(lcm::LCM& lcm, DoneCollector& collector) {
+  return pumpUntil(lcm, [&] { return collector.heartbeatCount() >= 1; });
 }
 
 }  // namespace
@@ -136,28 +186,33 @@ TEST(LiveRunner, FiresOncePerFiringAndRepeatsDoneForDuplicates) {
   expert::LiveOptions options = scalerOptions(1);
   options.heartbeat_period_s = 0.05;
   const std::string url = options.lcm_url;
-  std::atomic<int> exit_code{-1};
-  std::thread runner([&] { exit_code = expert::runLive(scaler, options); });
-
   lcm::LCM lcm(url);
   ASSERT_TRUE(lcm.good());
   DoneCollector collector;
   lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
   lcm.subscribe("SCALED", &DoneCollector::onScaled, &collector);
   lcm.subscribe(channels::kHeartbeat, &DoneCollector::onHeartbeat, &collector);
-  pump(lcm, 200ms);
+  std::atomic<int> exit_code{-1};
+  std::thread runner([&] { exit_code = expert::runLive(scaler, options); });
+  EXPECT_TRUE(waitUntilListening(lcm, collector));
 
   const auto state = stateAt(3, 1.5);
   lcm.publish(channels::kRobotState, &state);
   const auto fire = fireToken("scaler", 3, 10);
   lcm.publish(channels::kFire, &fire);
-  pump(lcm, 150ms);
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 1; }));
   lcm.publish(channels::kFire, &fire);  // a re-send: DONE again, no second run
   const auto other = fireToken("someone_else", 3, 11);
   lcm.publish(channels::kFire, &other);
   const auto stale = fireToken("scaler", 2, 9);
   lcm.publish(channels::kFire, &stale);
-  pump(lcm, 200ms);
+  // The next firing's DONE comes after whatever the three above caused.
+  const auto next_state = stateAt(4, 0.25);
+  lcm.publish(channels::kRobotState, &next_state);
+  const auto next = fireToken("scaler", 4, 12);
+  lcm.publish(channels::kFire, &next);
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 3; }));
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.heartbeatCount() >= 2; }));
 
   beft::run_status_t end{};
   end.state = beft::run_status_t::STATE_FINISHED;
@@ -166,16 +221,18 @@ TEST(LiveRunner, FiresOncePerFiringAndRepeatsDoneForDuplicates) {
   runner.join();
 
   EXPECT_EQ(exit_code.load(), 0);
-  EXPECT_EQ(scaler.fires.load(), 1);
+  EXPECT_EQ(scaler.fires.load(), 2);
   std::lock_guard<std::mutex> lock(collector.mutex);
-  ASSERT_EQ(collector.done.size(), 2u);
-  for (const auto& d : collector.done) {
-    EXPECT_EQ(d.firing_id, 10);
-    EXPECT_EQ(d.expert, "scaler");
-    EXPECT_EQ(d.outcome, beft::done_t::OUTCOME_OK);
+  ASSERT_EQ(collector.done.size(), 3u);
+  const int64_t expected_ids[] = {10, 10, 12};
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(collector.done[i].firing_id, expected_ids[i]);
+    EXPECT_EQ(collector.done[i].expert, "scaler");
+    EXPECT_EQ(collector.done[i].outcome, beft::done_t::OUTCOME_OK);
   }
-  ASSERT_EQ(collector.scaled.size(), 1u);
+  ASSERT_EQ(collector.scaled.size(), 2u);
   EXPECT_DOUBLE_EQ(collector.scaled[0].x, 3.0);
+  EXPECT_DOUBLE_EQ(collector.scaled[1].x, 0.5);
   EXPECT_GE(collector.heartbeats, 2);
 }
 
@@ -183,26 +240,21 @@ TEST(LiveRunner, AnswersAWaitingArbiterWithAHeartbeatAtOnce) {
   ScalingExpert scaler;
   scaler.startUp();
   expert::LiveOptions options = scalerOptions(3);
-  options.heartbeat_period_s = 30;  // only the first one comes by itself
+  options.heartbeat_period_s = 3600;  // only the first one comes by itself
   const std::string url = options.lcm_url;
   lcm::LCM lcm(url);
   DoneCollector collector;
   lcm.subscribe(channels::kHeartbeat, &DoneCollector::onHeartbeat, &collector);
   std::thread runner([&] { expert::runLive(scaler, options); });
-  pump(lcm, 300ms);
-  {
-    std::lock_guard<std::mutex> lock(collector.mutex);
-    EXPECT_EQ(collector.heartbeats, 1);
-  }
+  EXPECT_TRUE(waitUntilListening(lcm, collector));
+  EXPECT_EQ(collector.heartbeatCount(), 1);
   beft::run_status_t waiting{};
   waiting.state = beft::run_status_t::STATE_WAITING;
   waiting.message = "waiting for heartbeats from: scaler";
   lcm.publish(channels::kRunStatus, &waiting);
-  pump(lcm, 300ms);
-  {
-    std::lock_guard<std::mutex> lock(collector.mutex);
-    EXPECT_EQ(collector.heartbeats, 2) << "no heartbeat in answer to WAITING";
-  }
+  // The next periodic one is an hour away: a second one is the answer.
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.heartbeatCount() >= 2; })) << "no heartbeat in answer to WAITING";
+  EXPECT_EQ(collector.heartbeatCount(), 2);
   beft::run_status_t end{};
   end.state = beft::run_status_t::STATE_FINISHED;
   lcm.publish(channels::kRunStatus, &end);
@@ -219,10 +271,18 @@ TEST(LiveRunner, KeepsItsHeartbeatDuringALongFiring) {
   lcm.subscribe(channels::kHeartbeat, &DoneCollector::onHeartbeat, &collector);
   lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
   std::thread runner([&] { expert::runLive(slow, options); });
-  pump(lcm, 200ms);
+  EXPECT_TRUE(waitUntilListening(lcm, collector));
   const auto fire = fireToken("slow", 1, 7);
   lcm.publish(channels::kFire, &fire);
-  pump(lcm, 1400ms);
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return slow.working(); }));
+  // While the firing lasts (until released), five more beats say so.
+  const int firing_before = collector.beatsIn("firing");
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.beatsIn("firing") >= firing_before + 5; }))
+      << "heartbeats stopped while the expert worked on its firing";
+  EXPECT_EQ(collector.doneCount(), 0u);
+  slow.release();
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 1 && collector.lastBeatIs("idle", 7); }))
+      << "no DONE, or no idle heartbeat after it";
   beft::run_status_t end{};
   end.state = beft::run_status_t::STATE_FINISHED;
   lcm.publish(channels::kRunStatus, &end);
@@ -230,12 +290,7 @@ TEST(LiveRunner, KeepsItsHeartbeatDuringALongFiring) {
 
   std::lock_guard<std::mutex> lock(collector.mutex);
   ASSERT_EQ(collector.done.size(), 1u);
-  int firing = 0;
-  for (const auto& beat : collector.beats) firing += beat.state == "firing";
-  EXPECT_GE(firing, 5) << "heartbeats stopped while the expert worked on its firing";
   ASSERT_FALSE(collector.beats.empty());
-  EXPECT_EQ(collector.beats.back().state, "idle");
-  EXPECT_EQ(collector.beats.back().last_firing_id, 7);
   EXPECT_EQ(collector.beats.front().last_firing_id, -1);
 }
 
@@ -245,15 +300,15 @@ TEST(LiveRunner, WaitsForInputsThenFiresAnyway) {
   expert::LiveOptions options = scalerOptions(2);
   options.ready_timeout_s = 0.2;
   const std::string url = options.lcm_url;
-  std::thread runner([&] { expert::runLive(scaler, options); });
-
   lcm::LCM lcm(url);
   DoneCollector collector;
   lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
-  pump(lcm, 150ms);
+  lcm.subscribe(channels::kHeartbeat, &DoneCollector::onHeartbeat, &collector);
+  std::thread runner([&] { expert::runLive(scaler, options); });
+  EXPECT_TRUE(waitUntilListening(lcm, collector));
   const auto fire = fireToken("scaler", 5, 1);
   lcm.publish(channels::kFire, &fire);  // no ROBOT_STATE for tick 5 ever comes
-  pump(lcm, 500ms);
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 1; }));
   beft::run_status_t end{};
   end.state = beft::run_status_t::STATE_FAILED;
   lcm.publish(channels::kRunStatus, &end);
@@ -318,27 +373,24 @@ TEST(LiveRunner, ALostInputIsAskedOfTheBlackboardAgain) {
   options.process_name = "reader";
   options.catch_up = true;
   options.refill_after_s = 0.2;
-  std::thread runner([&] { expert::runLive(reader, options); });
-
   lcm::LCM lcm(options.lcm_url);
   DoneCollector collector;
   FakeBlackboard blackboard;
   blackboard.lcm = &lcm;
   lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
   lcm.subscribe(channels::kBlackboardQuery, &FakeBlackboard::onQuery, &blackboard);
-  pump(lcm, 150ms);  // its catch-up query finds nothing
+  std::thread runner([&] { expert::runLive(reader, options); });
+  // Its catch-up query (sent once it listens) finds nothing.
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return blackboard.queries.load() >= 1; }));
   const int catch_up_queries = blackboard.queries.load();
   const auto fire = fireToken("reader", 6, 1);
   lcm.publish(channels::kFire, &fire);  // tick 6: the blackboard holds only tick 5
-  pump(lcm, 500ms);
-  {
-    std::lock_guard<std::mutex> lock(collector.mutex);
-    EXPECT_TRUE(collector.done.empty()) << "fired without the input of its tick";
-  }
-  EXPECT_GT(blackboard.queries.load(), catch_up_queries) << "never asked the blackboard again";
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return blackboard.queries.load() > catch_up_queries; }))
+      << "never asked the blackboard again";
   const auto fire5 = fireToken("reader", 5, 2);
   lcm.publish(channels::kFire, &fire5);  // tick 5: lost live, held by the blackboard
-  pump(lcm, 800ms);
+  // Firing 1's DONE, had it fired without its input, would come before this one.
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 1; }));
   beft::run_status_t end{};
   end.state = beft::run_status_t::STATE_FINISHED;
   lcm.publish(channels::kRunStatus, &end);
@@ -346,7 +398,7 @@ TEST(LiveRunner, ALostInputIsAskedOfTheBlackboardAgain) {
 
   std::lock_guard<std::mutex> lock(collector.mutex);
   ASSERT_EQ(collector.done.size(), 1u);
-  EXPECT_EQ(collector.done[0].firing_id, 2);
+  EXPECT_EQ(collector.done[0].firing_id, 2) << "fired without the input of its tick";
   EXPECT_EQ(collector.done[0].outcome, beft::done_t::OUTCOME_OK) << collector.done[0].message;
 }
 
@@ -359,25 +411,28 @@ TEST(LiveRunner, AnInputArrivingAfterItsFireIsWaitedFor) {
     ScalingExpert scaler;
     scaler.startUp();
     expert::LiveOptions options = scalerOptions(direct ? 3 : 4);
+    options.heartbeat_period_s = 0.05;
     const std::string url = options.lcm_url;
-    std::thread runner([&] { expert::runLive(scaler, options); });
-
     lcm::LCM lcm(url);
     DoneCollector collector;
     lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
     lcm.subscribe("SCALED", &DoneCollector::onScaled, &collector);
-    pump(lcm, 150ms);
+    lcm.subscribe(channels::kHeartbeat, &DoneCollector::onHeartbeat, &collector);
+    std::thread runner([&] { expert::runLive(scaler, options); });
+
+    EXPECT_TRUE(waitUntilListening(lcm, collector));
     const auto early = stateAt(6, 1.0);  // before the FIRE, as on one machine
     lcm.publish(channels::kRobotState, &early);
     const auto fire6 = fireToken("scaler", 6, 1);
     lcm.publish(channels::kFire, &fire6);
-    pump(lcm, 100ms);
+    EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 1; }));
     const auto fire7 = fireToken("scaler", 7, 2);
     lcm.publish(channels::kFire, &fire7);
-    pump(lcm, 50ms);
+    // A beat saying "firing" after firing 1 finished: FIRE 7 has arrived.
+    EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.lastBeatIs("firing", 1); }));
     const auto late = stateAt(7, 4.0);  // after its FIRE
     lcm.publish(channels::kRobotState, &late);
-    pump(lcm, 200ms);
+    EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 2; }));
     beft::run_status_t end{};
     end.state = beft::run_status_t::STATE_FINISHED;
     lcm.publish(channels::kRunStatus, &end);
@@ -555,4 +610,71 @@ TEST(Replay, MissingLogIsAClearError) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/run.lcmlog"), std::string::npos);
   }
+}
+
+namespace {
+// Declares its inputs and nothing more: whether a firing may run comes from
+// the framework (no inputsReady of its own).
+class DeclaredInputsOnly : public expert::Expert {
+ public:
+  std::string name() const override { return "declared"; }
+  std::string description() const override { return "test expert"; }
+  expert::Outcome fire(const expert::Firing& f, expert::Output&) override {
+    fires.fetch_add(1);
+    return robot_.has(f.tick) ? expert::Outcome::success() : expert::Outcome::failure("fired without its input");
+  }
+  void keep(const beft::robot_state_t& state) { robot_.store(state); }
+  std::atomic<int> fires{0};
+
+ private:
+  expert::TickInput<beft::robot_state_t> robot_{*this, channels::kRobotState};
+  // Needed only once one was heard (older logs lack it).
+  expert::TickInput<beft::robot_state_t> optional_{*this, kScaled, 16, {}, /*optional_until_heard=*/true};
+};
+}  // namespace
+
+TEST(Ports, WithoutAnOverrideAFiringWaitsForEveryDeclaredTickInput) {
+  DeclaredInputsOnly expert;
+  const expert::Firing tick3{"declared", "t", 3, 300000, 1};
+  EXPECT_FALSE(expert.inputsReady(tick3)) << "nothing heard yet";
+  expert.keep(stateAt(2, 1.0));
+  EXPECT_FALSE(expert.inputsReady(tick3)) << "only the previous tick's";
+  expert.keep(stateAt(3, 1.0));
+  EXPECT_TRUE(expert.inputsReady(tick3)) << "the optional input was never heard";
+  EXPECT_EQ(expert.inputsLacking(tick3), std::vector<std::string>{});
+}
+
+TEST(LiveRunner, WithoutAnOverrideAFiringLackingItsTickInputDoesNotFire) {
+  DeclaredInputsOnly expert;
+  expert.startUp();
+  expert::LiveOptions options = scalerOptions(5);
+  options.process_name = "declared";
+  options.ready_timeout_s = 0;  // wait as long as it takes
+  options.heartbeat_period_s = 0.05;
+  lcm::LCM lcm(options.lcm_url);
+  DoneCollector collector;
+  lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
+  lcm.subscribe(channels::kHeartbeat, &DoneCollector::onHeartbeat, &collector);
+  std::thread runner([&] { expert::runLive(expert, options); });
+  EXPECT_TRUE(waitUntilListening(lcm, collector));
+  const auto previous = stateAt(5, 1.0);
+  lcm.publish(channels::kRobotState, &previous);
+  const auto fire = fireToken("declared", 6, 1);
+  lcm.publish(channels::kFire, &fire);
+  // A beat saying "firing" with no firing done yet: FIRE 6 has arrived and waits.
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.lastBeatIs("firing", -1); }));
+  EXPECT_EQ(expert.fires.load(), 0) << "fired without the ROBOT_STATE of its tick";
+  EXPECT_EQ(collector.doneCount(), 0u);
+  const auto own = stateAt(6, 2.0);
+  lcm.publish(channels::kRobotState, &own);
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 1; }));
+  beft::run_status_t end{};
+  end.state = beft::run_status_t::STATE_FINISHED;
+  lcm.publish(channels::kRunStatus, &end);
+  runner.join();
+
+  std::lock_guard<std::mutex> lock(collector.mutex);
+  ASSERT_EQ(collector.done.size(), 1u);
+  EXPECT_EQ(collector.done[0].outcome, beft::done_t::OUTCOME_OK) << collector.done[0].message;
+  EXPECT_EQ(expert.fires.load(), 1);
 }

@@ -416,7 +416,8 @@ TEST(ArbiterEventQueue, PollsThenSleepsWithinTheTimeOutAndMissesNothing) {
   const std::string url = uniqueUrl(7);
   lcm::LCM lcm(url);
   ASSERT_TRUE(lcm.good());
-  beft::arbiter::ArbiterEventQueue queue(lcm, url);
+  beft::arbiter::ArbiterInbox inbox;
+  beft::arbiter::ArbiterEventQueue queue(lcm, url, inbox);
   EXPECT_NE(queue.description().find("receiving only DONE, HEARTBEAT, STOP_REQUEST"), std::string::npos)
       << queue.description();
   // Nothing comes: the wait, poll included, lasts the time-out and no longer.
@@ -428,7 +429,8 @@ TEST(ArbiterEventQueue, PollsThenSleepsWithinTheTimeOutAndMissesNothing) {
   EXPECT_LT(waited, std::chrono::milliseconds(60 + 500)) << "the poll counted against the time-out";
   // A DONE sent while it polls, one while it sleeps: both are taken.
   for (const int delay_ms : {2, 40}) {
-    beft::arbiter::ArbiterEventQueue queue(lcm, url);
+    beft::arbiter::ArbiterInbox inbox;
+    beft::arbiter::ArbiterEventQueue queue(lcm, url, inbox);
     std::thread sender([&url, delay_ms] {
       std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
       lcm::LCM lcm_sender(url);

@@ -1,6 +1,7 @@
 // Which camera frames a recording keeps (--camera all | none | every:N), and
 // the recorder keeping exactly those, every other message untouched.
 #include "lib/launch/camera_sampling.hpp"
+#include "services/record/recorded_ports.hpp"
 #include "services/record/recorder.hpp"
 
 #include <unistd.h>
@@ -81,7 +82,7 @@ TEST(Recorder, KeepsTheCameraFramesItIsToldToAndEveryOtherMessage) {
     beft::record::RecordOptions options;
     options.path = path;
     options.camera = CameraSampling::parse("every:5");
-    beft::record::Recorder recorder(lcm, "memq://", options);
+    beft::record::Recorder recorder(lcm, "memq://", options, beft::record::RecordedPorts().taken());
     for (int64_t tick = 0; tick < 12; ++tick) {
       for (const auto& [channel, encoding] :
            {std::pair{"CAMERA_COLOR", 0}, {"CAMERA_DEPTH", 1}, {"CAMERA_INSTANCE", 2}}) {

@@ -1,5 +1,6 @@
 // The run recorder: in-process on memq (order, content, exclusions, refusals),
 // then beft-record as a process stopped right after a burst of messages.
+#include "services/record/recorded_ports.hpp"
 #include "services/record/recorder.hpp"
 #include "services/record/timestamp_order.hpp"
 
@@ -61,7 +62,7 @@ TEST(Recorder, WritesEveryMessageInOrderAndLeavesOutExcludedChannels) {
     beft::record::RecordOptions options;
     options.path = path;
     options.exclude_regex = "HEARTBEAT|FIRE";
-    beft::record::Recorder recorder(lcm, "memq://", options);
+    beft::record::Recorder recorder(lcm, "memq://", options, beft::record::RecordedPorts().taken());
     for (int i = 0; i < 200; ++i) {
       const std::string data = payload(i, i % 50 == 0 ? 60000 : 16);
       lcm.publish(i % 3 == 0 ? "A" : i % 3 == 1 ? "HEARTBEAT" : "B_LONGER_NAME", data.data(),
@@ -110,16 +111,17 @@ TEST(Recorder, RefusesToReplaceAFileOrABadPattern) {
   lcm::LCM lcm("memq://");
   beft::record::RecordOptions options;
   options.path = path;
-  EXPECT_THROW(beft::record::Recorder(lcm, "memq://", options), std::runtime_error);
+  const beft::transport::Selection taken = beft::record::RecordedPorts().taken();
+  EXPECT_THROW(beft::record::Recorder(lcm, "memq://", options, taken), std::runtime_error);
   std::stringstream kept;
   kept << std::ifstream(path).rdbuf();
   EXPECT_EQ(kept.str(), "precious");
   options.overwrite = true;
   options.exclude_regex = "(unclosed";
-  EXPECT_THROW(beft::record::Recorder(lcm, "memq://", options), std::runtime_error);
+  EXPECT_THROW(beft::record::Recorder(lcm, "memq://", options, taken), std::runtime_error);
   options.exclude_regex.clear();
   options.path = tempPath("no/such/folder/x.lcmlog");
-  EXPECT_THROW(beft::record::Recorder(lcm, "memq://", options), std::runtime_error);
+  EXPECT_THROW(beft::record::Recorder(lcm, "memq://", options, taken), std::runtime_error);
   std::filesystem::remove(path);
 }
 
