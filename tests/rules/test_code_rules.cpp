@@ -4,12 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
-#include <unistd.h>
-
 #include "tests/rules/code_rules.hpp"
+#include "tests/rules/planted_tree.hpp"
 
 namespace fs = std::filesystem;
 using beft::rules::describe;
@@ -31,26 +29,10 @@ std::string functionOfLines(const std::string& signature, int lines) {
   return signature + " {\n  int total = 0;\n" + statements(lines - 4) + "  return total;\n}\n";
 }
 
-// A scratch repository tree, removed at the end of the test.
-class PlantedTree {
- public:
-  PlantedTree() : root_(fs::temp_directory_path() / ("beft_rules_" + std::to_string(::getpid()) + "_" +
-                                                     ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
-    fs::remove_all(root_);
-  }
-  ~PlantedTree() { fs::remove_all(root_); }
-
-  void write(const std::string& relative, const std::string& text) const {
-    fs::create_directories((root_ / relative).parent_path());
-    std::ofstream(root_ / relative) << text;
-  }
-  const fs::path& root() const { return root_; }
-
- private:
-  fs::path root_;
-};
 
 }  // namespace
+
+using beft::rules::PlantedTree;
 
 TEST(CodeRules, TheSourceTreeHasNoOverlongFunction) {
   const auto overlong = overlongFunctions(BEFT_SOURCE_DIR);

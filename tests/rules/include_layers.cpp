@@ -1,4 +1,4 @@
-#include "tests/layers/include_layers.hpp"
+#include "tests/rules/include_layers.hpp"
 
 #include <algorithm>
 #include <fstream>

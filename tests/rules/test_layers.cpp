@@ -3,12 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
-#include <unistd.h>
-
-#include "tests/layers/include_layers.hpp"
+#include "tests/rules/include_layers.hpp"
+#include "tests/rules/planted_tree.hpp"
 
 namespace fs = std::filesystem;
 using beft::layers::checkIncludes;
@@ -18,12 +16,11 @@ using beft::layers::mayInclude;
 
 namespace {
 
-// A scratch repository tree, removed at the end of the test.
-class PlantedTree {
+// A tree that keeps the rules: a library, an expert on it, a tool on a
+// service and a planner.
+class PlantedTree : public beft::rules::PlantedTree {
  public:
-  PlantedTree() : root_(fs::temp_directory_path() / ("beft_layers_" + std::to_string(::getpid()) + "_" +
-                                                     ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
-    fs::remove_all(root_);
+  PlantedTree() {
     write("modules/lib/common/log.hpp", "#pragma once\n");
     write("modules/lib/wire/codec.hpp", "#pragma once\n#include \"lib/common/log.hpp\"\n");
     write("modules/experts/audio/heard.hpp", "#pragma once\n#include \"lib/wire/codec.hpp\"\n");
@@ -32,16 +29,6 @@ class PlantedTree {
     write("modules/tools/report/main.cpp", "#include \"services/arbiter/core.hpp\"\n#include \"planners/plan.hpp\"\n");
     write("planners/plan.hpp", "#pragma once\n#include \"lib/common/log.hpp\"\n");
   }
-  ~PlantedTree() { fs::remove_all(root_); }
-
-  void write(const std::string& relative, const std::string& text) const {
-    fs::create_directories((root_ / relative).parent_path());
-    std::ofstream(root_ / relative) << text;
-  }
-  const fs::path& root() const { return root_; }
-
- private:
-  fs::path root_;
 };
 
 }  // namespace
