@@ -101,33 +101,6 @@ DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected, c
   return result;
 }
 
-std::vector<LoggedMessage> withoutRefused(const std::vector<LoggedMessage>& log, std::size_t& refused) {
-  std::vector<LoggedMessage> kept;
-  refused = 0;
-  for (const auto& message : log) {
-    const auto& rules = wire::MessageRules::beftTypes();
-    if (channels::isDataPlaneChannel(message.channel) &&
-        !rules.checkForChannel(message.channel, message.data.data(), message.data.size()).ok())
-      ++refused;
-    else
-      kept.push_back(message);
-  }
-  return kept;
-}
-
-std::vector<LoggedMessage> withoutRepeats(const std::vector<LoggedMessage>& log, std::size_t& repeats) {
-  std::vector<LoggedMessage> kept;
-  std::set<std::pair<std::string, std::vector<uint8_t>>> seen;
-  repeats = 0;
-  for (const auto& message : log) {
-    if (channels::isDataPlaneChannel(message.channel) && !seen.insert({message.channel, message.data}).second)
-      ++repeats;
-    else
-      kept.push_back(message);
-  }
-  return kept;
-}
-
 std::vector<beft::hypotheses_t> hypothesesOfEachTick(const std::vector<LoggedMessage>& log) {
   std::map<int64_t, beft::hypotheses_t> keyframes, whole_of_tick;
   std::vector<beft::hypothesis_changes_t> changes;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lib/compare/data_comparison.hpp"
+#include "lib/compare/message_filters.hpp"
 #include "lib/compare/run_log.hpp"
 
 #include <map>
@@ -60,16 +61,10 @@ struct DataComparison {
 DataComparison compareDataMessages(const std::vector<LoggedMessage>& expected, const std::vector<LoggedMessage>& actual,
                                    const compare::ComparisonOptions& options = {});
 
-// The log without the messages the message guard refuses (traffic injected
-// on purpose, never a message of the run); `refused`: how many it left out.
-std::vector<LoggedMessage> withoutRefused(const std::vector<LoggedMessage>& log, std::size_t& refused);
-
-// The log without the data messages that repeat, byte for byte, an earlier
-// message of their channel: what a process killed and restarted mid-tick
-// (or an arbiter resuming firings in flight) sends again for that tick.
-// A re-sent message that differs stays, and is a difference. `repeats`: how
-// many it left out.
-std::vector<LoggedMessage> withoutRepeats(const std::vector<LoggedMessage>& log, std::size_t& repeats);
+// What a comparison may leave out of a run: refused (injected) messages and
+// a restarted process's exact repeats (lib/compare/message_filters.hpp).
+using compare::withoutRefused;
+using compare::withoutRepeats;
 
 // The whole list of hypotheses of every tick the log has one for, in tick
 // order: the HYPOTHESES keyframes with each tick's HYPOTHESIS_CHANGES applied

@@ -1,21 +1,21 @@
-// A run's data messages from its log, as two runs are compared: this run's
-// channels, what the guard takes, keyed by (channel, utime, order).
+// A fault run's data messages against the clean run's, as the benchmark's
+// table says it: lib/compare, with the refused (injected) messages left out
+// and counted.
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <string>
-#include <tuple>
-#include <vector>
+
+#include "lib/compare/run_log.hpp"
 
 namespace beft::bench {
 
-using DataKey = std::tuple<std::string, int64_t, int>;
-// run_id 0: the run of the log's first FIRE.
-std::map<DataKey, std::vector<uint8_t>> dataMessages(const std::string& log_path, int64_t run_id = 0);
+// The clean run's messages, read once (run_id 0: the run of the log's arbiter).
+std::vector<compare::LoggedMessage> dataMessages(const std::string& log_path, int64_t run_id);
 
-// "yes", or the first difference ("VISION at t = 12.3 s differs", "... missing").
-std::string compareRuns(const std::map<DataKey, std::vector<uint8_t>>& expected,
-                        const std::map<DataKey, std::vector<uint8_t>>& actual);
+// "yes", or "no: " and the first difference ("VISION message #12 (tick 12, ...): bytes differ");
+// either followed by how many refused messages the run's log held.
+std::string compareRuns(const std::vector<compare::LoggedMessage>& clean, const std::string& log_path,
+                        int64_t run_id);
 
 }  // namespace beft::bench

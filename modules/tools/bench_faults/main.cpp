@@ -142,7 +142,7 @@ std::vector<Outcome> runCleanAndFaulty(const Options& o, const std::string& kill
   outcomes.push_back(runYard("clean", clean_dir, "", o.ticks, nullptr));
   const auto clean = beft::bench::dataMessages(clean_dir + "/run.lcmlog", outcomes.back().run_id);
   auto compare = [&](Outcome outcome, const std::string& dir) {
-    outcome.identical = beft::bench::compareRuns(clean, beft::bench::dataMessages(dir + "/run.lcmlog", outcome.run_id));
+    outcome.identical = beft::bench::compareRuns(clean, dir + "/run.lcmlog", outcome.run_id);
     outcomes.push_back(outcome);
   };
   outcomes.back().identical = "(reference)";
