@@ -189,12 +189,31 @@ class Runner {
         log::warn("dropped stale FIRE ", fire->firing_id, " (already at ", pending_->firing_id, ")");
       return;
     }
+    if (repeatsTheFiringDone(*fire)) {
+      // A restarted arbiter whose log lacked the first FIRE fires it again
+      // under a new id: its DONE answers, the outputs are not sent twice.
+      log::info("FIRE ", fire->firing_id, " repeats firing ", pending_->firing_id, " of tick ", fire->tick,
+                ", already done: its DONE sent again");
+      pending_->firing_id = fire->firing_id;
+      last_fired_id_ = last_done_.firing_id = fire->firing_id;
+      if (heartbeat_) heartbeat_->setState(false, last_fired_id_);
+      resendDone();
+      return;
+    }
     if (pending_ && !pending_fired_)
       log::warn("FIRE ", pending_->firing_id, " superseded by ", fire->firing_id, " before it ran");
     pending_ = Firing{fire->expert, fire->transition, fire->tick, fire->utime, fire->firing_id};
     if (heartbeat_) heartbeat_->setState(true, last_fired_id_);
     pending_fired_ = false;
     pending_since_ = Clock::now();
+  }
+
+  // Whether a newer FIRE asks for the firing that ran last, successfully: the
+  // same transition at the same tick.
+  bool repeatsTheFiringDone(const beft::fire_t& fire) const {
+    return pending_ && pending_fired_ && last_done_.outcome == beft::done_t::OUTCOME_OK &&
+           last_done_.firing_id == pending_->firing_id && pending_->tick == fire.tick &&
+           pending_->transition == fire.transition;
   }
 
   void onRunStatus(const beft::run_status_t& status) {

@@ -236,6 +236,61 @@ TEST(LiveRunner, FiresOncePerFiringAndRepeatsDoneForDuplicates) {
   EXPECT_GE(collector.heartbeats, 2);
 }
 
+// A restarted arbiter whose log lacked a FIRE sends it again under a new
+// id: the expert answers with its DONE under that id and sends nothing twice;
+// after a failed firing, or for another tick, it runs again.
+TEST(LiveRunner, AFiringDoneAndFiredAgainUnderANewIdIsNotRunTwice) {
+  ScalingExpert scaler;
+  scaler.startUp();
+  expert::LiveOptions options = scalerOptions(6);
+  options.ready_timeout_s = 0.2;  // tick 5 fails for want of its input, at once
+  const std::string url = options.lcm_url;
+  lcm::LCM lcm(url);
+  ASSERT_TRUE(lcm.good());
+  DoneCollector collector;
+  lcm.subscribe(channels::kDone, &DoneCollector::onDone, &collector);
+  lcm.subscribe("SCALED", &DoneCollector::onScaled, &collector);
+  lcm.subscribe(channels::kHeartbeat, &DoneCollector::onHeartbeat, &collector);
+  std::thread runner([&] { expert::runLive(scaler, options); });
+  EXPECT_TRUE(waitUntilListening(lcm, collector));
+
+  const auto state = stateAt(3, 1.5);
+  lcm.publish(channels::kRobotState, &state);
+  const auto first = fireToken("scaler", 3, 10);
+  lcm.publish(channels::kFire, &first);
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 1; }));
+  const auto again = fireToken("scaler", 3, 13);  // the same transition and tick, a new id
+  lcm.publish(channels::kFire, &again);
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 2; }));
+  const auto failing = fireToken("scaler", 5, 14);  // no ROBOT_STATE of tick 5: fails after the timeout
+  lcm.publish(channels::kFire, &failing);
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 3; }));
+  const auto state5 = stateAt(5, 4.0);
+  lcm.publish(channels::kRobotState, &state5);
+  const auto retried = fireToken("scaler", 5, 15);  // after a failure the firing runs again
+  lcm.publish(channels::kFire, &retried);
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 4; }));
+  beft::run_status_t end{};
+  end.state = beft::run_status_t::STATE_FINISHED;
+  lcm.publish(channels::kRunStatus, &end);
+  runner.join();
+
+  std::lock_guard<std::mutex> lock(collector.mutex);
+  ASSERT_EQ(collector.done.size(), 4u);
+  const int64_t expected_ids[] = {10, 13, 14, 15};
+  const int8_t expected_outcomes[] = {beft::done_t::OUTCOME_OK, beft::done_t::OUTCOME_OK,
+                                      beft::done_t::OUTCOME_FAILED, beft::done_t::OUTCOME_OK};
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(collector.done[i].firing_id, expected_ids[i]);
+    EXPECT_EQ(collector.done[i].outcome, expected_outcomes[i]) << collector.done[i].message;
+  }
+  EXPECT_EQ(collector.done[1].tick, 3);
+  ASSERT_EQ(collector.scaled.size(), 2u) << "tick 3's output sent twice";
+  EXPECT_DOUBLE_EQ(collector.scaled[0].x, 3.0);
+  EXPECT_DOUBLE_EQ(collector.scaled[1].x, 8.0);
+  EXPECT_EQ(scaler.fires.load(), 3);
+}
+
 TEST(LiveRunner, AnswersAWaitingArbiterWithAHeartbeatAtOnce) {
   ScalingExpert scaler;
   scaler.startUp();
