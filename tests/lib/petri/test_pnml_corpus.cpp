@@ -109,7 +109,9 @@ TEST(PnmlCorpus, EveryFileIsReadOrRefusedAndAgreesWithWhatWasPublished) {
     if (expect.contains("nupn_safe")) {
       ++with_published_property;
       for (int tokens : analysis.max_tokens) EXPECT_LE(tokens, 1);
-      if (analysis.complete) EXPECT_EQ(analysis.safe(), true);
+      if (analysis.complete) {
+        EXPECT_EQ(analysis.safe(), true);
+      }
     }
   }
   EXPECT_GE(analysed, 30u);

@@ -1,5 +1,5 @@
 // Analysis of any P/T net, pinned on nets small enough to check by hand
-// (tests/services/arbiter/nets/ptnets/, each file says what it holds).
+// (tests/lib/petri/nets/ptnets/, each file says what it holds).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -93,7 +93,9 @@ TEST(NetAnalysis, AnUnboundedGeneratorGetsAWitnessThatRepeats) {
   // Replaying the witness reaches what it says, and it covers the earlier marking.
   Marking m = net.initialMarking();
   for (size_t i = 0; i < witness.trace.size(); ++i) {
-    if (i == witness.covered_after) EXPECT_EQ(m, witness.covered);
+    if (i == witness.covered_after) {
+      EXPECT_EQ(m, witness.covered);
+    }
     const Transition& t = net.transitions[witness.trace[i]];
     ASSERT_TRUE(isEnabled(t, m));
     consumeInputs(t, m);
