@@ -121,7 +121,7 @@ BackgroundRun startYard(const std::string& tag) {
     execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
-  for (int i = 0; i < 200 && (background.url.empty() || background.run_id.empty()); ++i) {
+  for (int i = 0; i < 3000 && (background.url.empty() || background.run_id.empty()); ++i) {  // up to a minute
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     const auto text = runCommand("cat " + out, 5).output;
     const auto line = lineAfter(text, "[run] LCM ");
