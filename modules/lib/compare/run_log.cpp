@@ -4,14 +4,7 @@
 
 namespace beft::compare {
 
-int64_t runOfLogFile(const std::string& path) {
-  if (const int64_t arbiter_run = wire::runOfLog(path)) return arbiter_run;
-  wire::LogReader log(path);
-  wire::LogEvent event;
-  while (log.next(event))
-    if (const int64_t run = wire::splitRunChannel(event.channel).run_id) return run;
-  return 0;
-}
+int64_t runOfLogFile(const std::string& path) { return wire::runOfLog(path); }
 
 RunLog readRunLog(const std::string& path, std::optional<int64_t> run_id) {
   RunLog run;

@@ -23,7 +23,7 @@ struct RunLog {
   wire::LogDamage damage;               // what the reader skipped
 };
 
-// The run a log is of: its arbiter's (wire::runOfLog), else that of the
+// The run a log is of (wire::runOfLog): its arbiter's, else that of the
 // first channel carrying a run suffix, else 0.
 int64_t runOfLogFile(const std::string& path);
 

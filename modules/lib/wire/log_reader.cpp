@@ -155,11 +155,14 @@ bool LogReader::nextOfRun(LogEvent& event, int64_t run_id) {
 int64_t runOfLog(const std::string& path) {
   LogReader log(path);
   LogEvent event;
+  int64_t first_run_seen = 0;
   while (log.next(event)) {
     const RunChannel split = splitRunChannel(event.channel);
+    if (split.run_id == 0) continue;  // in a log with run ids, a plain channel is foreign
     if (split.base == "FIRE" || split.base == "MARKING") return split.run_id;
+    if (first_run_seen == 0) first_run_seen = split.run_id;
   }
-  return 0;
+  return first_run_seen;
 }
 
 bool waitForLogPast(const std::string& path, int64_t since_us, double timeout_s) {

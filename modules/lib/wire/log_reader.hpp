@@ -72,8 +72,11 @@ class LogReader {
   LogDamage damage_;
 };
 
-// The run a log is of: that of its first FIRE or MARKING (the arbiter's), 0
-// if it has none or they carry no run id.
+// The run a log is of: that of its first FIRE or MARKING carrying a run id
+// (the arbiter's), else of its first channel carrying one; 0 for a log in
+// which no channel carries one (recorded before runs had ids). Channels
+// without an id in a log with ids are foreign (a forged FIRE sent first does
+// not make the log an old one); a log without ids is read to its end.
 int64_t runOfLog(const std::string& path);
 
 // Waits until a log still being written holds an event received at or after

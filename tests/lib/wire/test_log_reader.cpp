@@ -12,6 +12,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "lib/wire/log_reader.hpp"
+#include "lib/wire/run_identity.hpp"
 
 using beft::wire::LogEvent;
 using beft::wire::LogReader;
@@ -35,6 +36,20 @@ class TempLog {
       event.channel = "CH" + std::to_string(i);
       event.datalen = static_cast<int32_t>(data.size());
       event.data = data.data();
+      log.writeEvent(&event);
+    }
+  }
+  // One small event per channel, in order.
+  void writeChannels(const std::vector<std::string>& channels) {
+    lcm::LogFile log(path_, "w");
+    const uint8_t payload[4] = {1, 2, 3, 4};
+    for (std::size_t i = 0; i < channels.size(); ++i) {
+      lcm::LogEvent event{};
+      event.eventnum = static_cast<int64_t>(i);
+      event.timestamp = 1000 + static_cast<int64_t>(i);
+      event.channel = channels[i];
+      event.datalen = sizeof payload;
+      event.data = const_cast<uint8_t*>(payload);
       log.writeEvent(&event);
     }
   }
@@ -163,4 +178,29 @@ TEST(LogReader, AMissingFileIsAClearError) {
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find("/nonexistent/run.lcm"), std::string::npos);
   }
+}
+
+TEST(RunOfLog, IsTheArbitersRunAndAPlainForgedFireBeforeItIsForeign) {
+  using beft::wire::runChannel;
+  using beft::wire::runOfLog;
+  const int64_t run = 0x1f3a5c7e9b2d4f60, other = 0x0123456789abcdef;
+  TempLog forged;
+  forged.writeChannels({"FIRE", "RUN_STATUS", runChannel("VISION", run), runChannel("MARKING", run)});
+  EXPECT_EQ(runOfLog(forged.path()), run);
+  TempLog without_arbiter;  // only data channels with an id: their run
+  without_arbiter.writeChannels({"GEOMETRY", runChannel("VISION", run), runChannel("FIRE", other)});
+  EXPECT_EQ(runOfLog(without_arbiter.path()), other);
+  TempLog data_only;
+  data_only.writeChannels({"GEOMETRY", runChannel("VISION", run)});
+  EXPECT_EQ(runOfLog(data_only.path()), run);
+  TempLog old;  // recorded before runs had ids
+  old.writeChannels({"MARKING", "FIRE", "VISION"});
+  EXPECT_EQ(runOfLog(old.path()), 0);
+  // Read as its run, the forged log's plain channels are another run's.
+  LogReader reader(forged.path());
+  LogEvent event;
+  std::vector<std::string> read;
+  while (reader.nextOfRun(event, run)) read.push_back(event.channel);
+  EXPECT_EQ(read, (std::vector<std::string>{"VISION", "MARKING"}));
+  EXPECT_EQ(reader.otherRunEvents(), 2u);
 }
