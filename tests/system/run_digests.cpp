@@ -5,11 +5,11 @@
 #include <functional>
 #include <limits>
 #include <set>
-#include <tuple>
 
 #include <beft/camera_frame_t.hpp>
 
 #include "lib/camera/frame_decoding.hpp"
+#include "lib/compare/data_order.hpp"
 #include "lib/common/channels.hpp"
 #include "lib/wire/encoded_stamp.hpp"
 #include "lib/wire/guarded_decode.hpp"
@@ -20,23 +20,9 @@
 namespace beft::system_test {
 namespace {
 
-// Every data message of the run, a refused one too, in (channel, utime,
-// order within that utime) order; a message too short for a utime takes
-// that of the channel's message before it.
-using DataKey = std::tuple<std::string, int64_t, int>;
-std::map<DataKey, const std::vector<uint8_t>*> dataMessages(const std::vector<LoggedMessage>& log) {
-  std::map<DataKey, const std::vector<uint8_t>*> messages;
-  std::map<std::pair<std::string, int64_t>, int> count;
-  std::map<std::string, int64_t> last_utime;
-  for (const auto& event : log) {
-    if (!channels::isDataPlaneChannel(event.channel)) continue;
-    int64_t& utime = last_utime[event.channel];
-    wire::encodedUtime(event.data.data(), event.data.size(), utime);
-    const int order = count[{event.channel, utime}]++;
-    messages[{event.channel, utime, order}] = &event.data;
-  }
-  return messages;
-}
+// Every data message of the run, a refused one too, per channel in the order
+// runs are compared (lib/compare/data_order.hpp).
+using DataMessages = std::map<std::string, compare::ChannelMessages>;
 
 template <typename Message>
 std::vector<uint8_t> encoded(const Message& message) {
@@ -71,16 +57,19 @@ using DigestVisitor = std::function<void(const std::string& channel, const std::
 
 // The whole obstacle map of every tick, from the keyframes and the changes:
 // as a map of every tick was sent (raw, its tick's time).
-void visitWholeMaps(const std::map<DataKey, const std::vector<uint8_t>*>& messages, const DigestVisitor& visit) {
+void visitWholeMaps(const DataMessages& messages, const DigestVisitor& visit) {
   std::map<int64_t, beft::obstacle_map_t> keyframes;
   std::map<int64_t, beft::obstacle_map_changes_t> changes_of_tick;
-  for (const auto& [key, data] : messages) {
-    if (std::get<0>(key) == channels::kObstacleMap) {
-      beft::obstacle_map_t keyframe{};
-      if (wire::guardedDecode(data->data(), data->size(), keyframe).ok()) keyframes[keyframe.tick] = keyframe;
-    } else if (std::get<0>(key) == channels::kObstacleMapChanges) {
-      beft::obstacle_map_changes_t changes{};
-      if (wire::guardedDecode(data->data(), data->size(), changes).ok()) changes_of_tick[changes.tick] = changes;
+  for (const auto& [channel, placed] : messages) {
+    for (const auto& [place, entry] : placed) {
+      const std::vector<uint8_t>& data = entry.message->data;
+      if (channel == channels::kObstacleMap) {
+        beft::obstacle_map_t keyframe{};
+        if (wire::guardedDecode(data.data(), data.size(), keyframe).ok()) keyframes[keyframe.tick] = keyframe;
+      } else if (channel == channels::kObstacleMapChanges) {
+        beft::obstacle_map_changes_t changes{};
+        if (wire::guardedDecode(data.data(), data.size(), changes).ok()) changes_of_tick[changes.tick] = changes;
+      }
     }
   }
   planners::ObstacleMapAssembler assembler;
@@ -103,20 +92,19 @@ void visitWholeMaps(const std::map<DataKey, const std::vector<uint8_t>*>& messag
 
 // Every message as the digest takes it, per channel in order.
 void forEachDigestedMessage(const std::vector<LoggedMessage>& log, const DigestVisitor& visit) {
-  const auto messages = dataMessages(log);
-  bool changes_sent = false, map_changes_sent = false;
-  for (const auto& [key, data] : messages) {
-    if (std::get<0>(key) == channels::kHypothesisChanges) changes_sent = true;
-    if (std::get<0>(key) == channels::kObstacleMapChanges) map_changes_sent = true;
-  }
-  for (const auto& [key, data] : messages) {
-    const std::string& channel = std::get<0>(key);
+  const DataMessages messages = compare::dataMessagesByChannel(log);
+  const bool changes_sent = messages.count(channels::kHypothesisChanges.name) > 0;
+  const bool map_changes_sent = messages.count(channels::kObstacleMapChanges.name) > 0;
+  for (const auto& [channel, placed] : messages) {
     if (changes_sent && channel == channels::kHypotheses) continue;
     if (map_changes_sent && channel == channels::kObstacleMap) continue;
     const std::string type = channels::typeOfChannel(channel);
-    if (type == lcmTypeName<beft::camera_frame_t>()) visit(channel, unpackedFrame(*data));
-    else if (type == lcmTypeName<beft::obstacle_map_t>()) visit(channel, unpackedMap(*data));
-    else visit(channel, *data);
+    for (const auto& [place, entry] : placed) {
+      const std::vector<uint8_t>& data = entry.message->data;
+      if (type == lcmTypeName<beft::camera_frame_t>()) visit(channel, unpackedFrame(data));
+      else if (type == lcmTypeName<beft::obstacle_map_t>()) visit(channel, unpackedMap(data));
+      else visit(channel, data);
+    }
   }
   if (map_changes_sent) visitWholeMaps(messages, visit);
   if (changes_sent)

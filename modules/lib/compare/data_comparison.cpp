@@ -2,52 +2,14 @@
 
 #include <algorithm>
 #include <map>
-#include <tuple>
 
-#include "lib/common/channels.hpp"
-#include "lib/wire/encoded_stamp.hpp"
+#include "lib/compare/data_order.hpp"
 #include "lib/wire/message_check.hpp"
 
 namespace beft::compare {
 namespace {
 
-// A message's place in its channel: (utime, rank among that utime's messages).
-using Place = std::pair<int64_t, int>;
-
-struct ChannelMessage {
-  const LoggedMessage* message = nullptr;
-  std::size_t index = 0;
-};
-
-using ChannelMessages = std::map<Place, ChannelMessage>;
-
-bool compared(const std::string& channel, const ComparisonOptions& options) {
-  return channels::isDataPlaneChannel(channel) && (options.channels.empty() || options.channels.count(channel) > 0);
-}
-
-// The data messages of one run, per channel, by place; `count`: how many.
-std::map<std::string, ChannelMessages> byChannel(const std::vector<LoggedMessage>& log,
-                                                 const ComparisonOptions& options, std::size_t& count) {
-  std::map<std::string, ChannelMessages> channels;
-  std::map<std::string, int64_t> last_utime;
-  std::map<std::pair<std::string, int64_t>, int> rank;
-  count = 0;
-  for (const auto& message : log) {
-    if (!compared(message.channel, options)) continue;
-    int64_t& utime = last_utime[message.channel];  // too short to hold one: that of the message before
-    wire::encodedUtime(message.data.data(), message.data.size(), utime);
-    const int order = rank[{message.channel, utime}]++;
-    channels[message.channel][{utime, order}] = {&message, 0};
-    ++count;
-  }
-  for (auto& [channel, messages] : channels) {
-    std::size_t index = 0;
-    for (auto& [place, entry] : messages) entry.index = index++;
-  }
-  return channels;
-}
-
-DifferingMessage side(const ChannelMessage& entry, int64_t utime, const std::string& channel) {
+DifferingMessage side(const PlacedMessage& entry, int64_t utime, const std::string& channel) {
   DifferingMessage out;
   out.present = true;
   out.index = entry.index;
@@ -59,7 +21,7 @@ DifferingMessage side(const ChannelMessage& entry, int64_t utime, const std::str
   return out;
 }
 
-bool refused(const ChannelMessage& entry, const std::string& channel) {
+bool refused(const PlacedMessage& entry, const std::string& channel) {
   const auto& data = entry.message->data;
   return !wire::MessageRules::beftTypes().checkForChannel(channel, data.data(), data.size()).ok();
 }
@@ -95,8 +57,8 @@ int64_t utimeOf(const MessageDifference& difference) {
 RunComparison compareRuns(const std::vector<LoggedMessage>& first, const std::vector<LoggedMessage>& second,
                           const ComparisonOptions& options) {
   RunComparison result;
-  const auto first_channels = byChannel(first, options, result.first_messages);
-  const auto second_channels = byChannel(second, options, result.second_messages);
+  const auto first_channels = dataMessagesByChannel(first, options.channels, &result.first_messages);
+  const auto second_channels = dataMessagesByChannel(second, options.channels, &result.second_messages);
   std::set<std::string> names;
   for (const auto& [channel, messages] : first_channels) names.insert(channel);
   for (const auto& [channel, messages] : second_channels) names.insert(channel);
