@@ -2,6 +2,7 @@
 // under tests/experts/, and the .lcm of each new channel's message type.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,15 @@ struct GeneratedFile {
 std::vector<GeneratedFile> expertFiles(const ExpertSpec& spec);
 
 // Writes every file under root, creating folders; SpecError, before any is
-// written, if one of them exists.
-void writeFiles(const std::string& root, const std::vector<GeneratedFile>& files);
+// written, if one of them exists. A kill cannot leave it half done: the
+// files and `steps` (what the run prints) go to a staging folder under root,
+// marked complete once all are there, then each file is moved into place.
+void writeFiles(const std::string& root, const std::vector<GeneratedFile>& files, const std::string& steps);
+
+// What a killed run left: a staging folder not marked complete (killed while
+// writing) is removed, and nothing is returned; one marked complete (killed
+// while moving) has its files not yet in place moved there, and its steps
+// are returned, as the killed run would have printed them.
+std::optional<std::string> finishInterruptedWrite(const std::string& root);
 
 }  // namespace beft::new_expert

@@ -11,10 +11,16 @@ int main(int argc, char** argv) {
   ExpertRequest request;
   if (const auto code = parseCommandLine(argc, argv, request)) return *code;
   try {
+    if (const auto steps = finishInterruptedWrite(request.root)) {
+      std::cerr << "beft-new-expert: an earlier run was stopped while putting its files in place; they are all "
+                   "there now (run again for anything else)\n";
+      std::cout << *steps;
+      return 0;
+    }
     const ExpertSpec spec = checkRequest(request);
     const auto files = expertFiles(spec);
     const std::string steps = manualSteps(spec, files);  // reads the nets before anything is written
-    writeFiles(spec.root, files);
+    writeFiles(spec.root, files, steps);
     std::cout << steps;
     return 0;
   } catch (const SpecError& error) {

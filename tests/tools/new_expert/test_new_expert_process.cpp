@@ -114,6 +114,41 @@ TEST_F(NewExpertProgram, ASecondRunOfTheSameNameIsRefusedAndChangesNothing) {
   EXPECT_EQ(readFile(fs::path(root_) / "modules/experts/threat/threat_expert.cpp"), source);
 }
 
+// A run killed while moving its staged files into place (some moved, the
+// staging folder marked complete): the next run moves the rest and prints
+// what the killed run would have printed.
+TEST_F(NewExpertProgram, ARunKilledWhileMovingItsFilesIsFinishedByTheNextRun) {
+  const ProgramResult first = generate("threat --writes TASK_COMMAND");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const auto files = filesUnderRoot();
+  const std::string source = readFile(fs::path(root_) / "modules/experts/threat/threat_expert.cpp");
+  const fs::path staging = fs::path(root_) / ".beft-new-expert-staging";
+  for (const char* moved_back : {"modules/experts/threat/threat_expert.cpp", "tests/experts/threat/CMakeLists.txt"}) {
+    fs::create_directories((staging / moved_back).parent_path());
+    fs::rename(fs::path(root_) / moved_back, staging / moved_back);
+  }
+  std::ofstream(staging / ".steps") << "the steps of the killed run\n";
+  std::ofstream(staging / ".complete");
+  const ProgramResult next = generate("other --writes TASK_COMMAND");
+  EXPECT_EQ(next.exit_code, 0) << next.output;
+  EXPECT_NE(next.output.find("the steps of the killed run"), std::string::npos) << next.output;
+  EXPECT_FALSE(fs::exists(staging));
+  EXPECT_EQ(filesUnderRoot(), files) << "'other' is not written: the interrupted run is finished first";
+  EXPECT_EQ(readFile(fs::path(root_) / "modules/experts/threat/threat_expert.cpp"), source);
+}
+
+// A run killed while writing (the staging folder not marked complete) put
+// nothing in place: the next run drops what it staged and writes its own.
+TEST_F(NewExpertProgram, ARunKilledWhileWritingLeavesNothingBehind) {
+  const fs::path staging = fs::path(root_) / ".beft-new-expert-staging";
+  fs::create_directories(staging / "modules/experts/threat");
+  std::ofstream(staging / "modules/experts/threat/main.cpp") << "// cut short";
+  const ProgramResult run = generate("threat --writes TASK_COMMAND");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_FALSE(fs::exists(staging));
+  EXPECT_NE(readFile(fs::path(root_) / "modules/experts/threat/main.cpp").find("int main"), std::string::npos);
+}
+
 TEST(NewExpertHelp, ExplainsTheCommand) {
   const ProgramResult run = runCommand(binDir() + "/beft-new-expert --help 2>&1", 60);
   EXPECT_EQ(run.exit_code, 0);
