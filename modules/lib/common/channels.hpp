@@ -32,11 +32,14 @@
 #include <beft/obstacle_map_t.hpp>
 #include <beft/plan_request_t.hpp>
 #include <beft/plan_result_t.hpp>
+#include <beft/record_status_t.hpp>
+#include <beft/repair_request_t.hpp>
 #include <beft/robot_command_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/run_beacon_t.hpp>
 #include <beft/run_status_t.hpp>
 #include <beft/scene_objects_t.hpp>
+#include <beft/sender_state_t.hpp>
 #include <beft/task_command_t.hpp>
 #include <beft/task_events_t.hpp>
 #include <beft/task_stack_t.hpp>
@@ -80,6 +83,7 @@ enum class Plane {
   kService,  // requests to and answers of services (PLAN_RESULT holds the wall-clock planning time)
   kControl,  // the arbiter's tokens, the experts' answers and the run's state
   kUrlWide,  // every run on the URL announces itself
+  kTransport,  // the transport's own repair traffic: not the run's, never recorded
 };
 
 // X(constant, name, type, plane): the one list of the blackboard's channels.
@@ -123,6 +127,11 @@ enum class Plane {
   X(kStopRequest, "STOP_REQUEST", run_status_t, Control) /* end the run after this tick */          \
   /* Blackboard service. */                                                                        \
   X(kBlackboardQuery, "BB_QUERY", bb_query_t, Service)                                              \
+  /* The recorder's account of its log. */                                                        \
+  X(kRecordStatus, "RECORD_STATUS", record_status_t, Report)                                        \
+  /* Loss repair (lib/transport/reliable_sender.hpp). */                                            \
+  X(kRepairRequest, "BEFT_REPAIR", repair_request_t, Transport)                                     \
+  X(kSenderState, "BEFT_SENDERS", sender_state_t, Transport)                                        \
   /* URL-wide: every run announces itself (run_identity.hpp). */                                   \
   X(kRunBeacons, "BEFT_RUNS", run_beacon_t, UrlWide)
 

@@ -1,13 +1,16 @@
 #include "lib/transport/transport.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <set>
 #include <stdexcept>
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "lib/transport/detail/repairing_source.hpp"
 #include "lib/transport/detail/udpm_filter.hpp"
 #include "lib/transport/detail/udpm_receiver.hpp"
+#include "lib/common/channels.hpp"
 #include "lib/common/log.hpp"
 #include "lib/wire/reject_counter.hpp"
 #include "lib/wire/run_identity.hpp"
@@ -125,6 +128,7 @@ class RunFilter : public Receiver {
   }
   int receiveBufferBytes() const override { return inner_->receiveBufferBytes(); }
   uint64_t kernelDropped() const override { return inner_->kernelDropped(); }
+  RepairStats repairStats() const override { return inner_->repairStats(); }
 
  private:
   std::unique_ptr<Receiver> inner_;
@@ -136,6 +140,18 @@ Selection onThisRun(const Selection& selection) {
   Selection named = selection;
   for (auto& rule : named.rules) rule.channel = wire::runChannel(rule.channel);
   return named;
+}
+
+// A receiver that takes whole channels also takes the senders' states,
+// which tell it of a lost last message (a recorder's "everything" has them).
+Selection withSenderStates(const Selection& selection) {
+  if (selection.mode != Selection::Mode::AcceptListed) return selection;
+  const bool takes_whole_channels =
+      std::any_of(selection.rules.begin(), selection.rules.end(), [](const Rule& rule) { return rule.field.empty(); });
+  if (!takes_whole_channels) return selection;
+  Selection with_states = selection;
+  with_states.rules.push_back(channelRule(channels::kSenderState.name));
+  return with_states;
 }
 
 }  // namespace
@@ -193,10 +209,12 @@ bool roomToGather(int receive_buffer_bytes) {
 
 std::unique_ptr<Receiver> openReceiver(lcm::LCM& lcm, const std::string& url, const Selection& spec,
                                        std::size_t batch, int lcm_queue_capacity) {
-  const Selection named = spec.every_run ? spec : onThisRun(spec);
+  const Selection with_states = withSenderStates(spec);
+  const Selection named = spec.every_run ? with_states : onThisRun(with_states);
   std::unique_ptr<Receiver> receiver;
   if (directReceiveFor(url)) receiver = std::make_unique<DirectSource>(*udpm::parseUrl(url), named, batch);
   else receiver = std::make_unique<LcmSource>(lcm, url, named, lcm_queue_capacity);
+  receiver = detail::withRepair(std::move(receiver), lcm, named);
   if (spec.every_run) return receiver;
   return std::make_unique<RunFilter>(std::move(receiver));
 }

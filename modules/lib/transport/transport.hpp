@@ -10,6 +10,9 @@
 // receive thread costs two wake-ups and five system calls per message). On
 // any other URL (memq:// in tests, file://), or with BEFT_UDPM_RECEIVER=0 in
 // the environment, LCM's own receive thread, with the same selection.
+// Either way every message's envelope comes off, and what was lost on the
+// way is asked for again and handed on in order (publisher.hpp,
+// detail/stream_tracker.hpp).
 #pragma once
 
 #include <cstddef>
@@ -65,6 +68,18 @@ struct Selection {
 // True when an LCM subscription pattern is a plain channel name (no regex).
 bool isPlainChannel(const std::string& pattern);
 
+// What loss repair did on a receiver (detail/stream_tracker.hpp).
+struct RepairStats {
+  uint64_t gaps = 0;             // messages found missing
+  uint64_t repaired = 0;         // of those, got by repair
+  uint64_t lost = 0;             // of those, given up (the sender no longer had them, or died)
+  uint64_t duplicates = 0;       // copies dropped
+  uint64_t joined_late = 0;      // streams first heard after their early messages
+  uint64_t requests = 0;         // repair requests sent
+  uint64_t unauthenticated = 0;  // refused in a run with a key: no valid tag
+  uint64_t waiting = 0;          // messages held now behind a gap
+};
+
 class Receiver {
  public:
   virtual ~Receiver() = default;
@@ -83,6 +98,7 @@ class Receiver {
   // Datagrams the kernel dropped for want of buffer space, where known (a
   // direct receiver of every channel).
   virtual uint64_t kernelDropped() const { return 0; }
+  virtual RepairStats repairStats() const { return {}; }
 };
 
 // True when `url` gets the direct receiver; otherwise `why` says why not.

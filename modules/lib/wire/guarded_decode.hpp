@@ -10,15 +10,18 @@
 #include <cstdint>
 #include <string>
 
+#include "lib/wire/envelope.hpp"
 #include "lib/wire/message_check.hpp"
 #include "lib/wire/reject_counter.hpp"
 
 namespace beft::wire {
 
-// Checks, then decodes into message; the verdict says why not.
+// Checks, then decodes into message; the verdict says why not. An envelope
+// at the end (envelope.hpp: what a subscriber of LCM's own gets) is left out.
 template <typename Message>
 Verdict guardedDecode(const void* data, std::size_t size, Message& message) {
   static const uint64_t fingerprint = static_cast<uint64_t>(Message::getHash());
+  size = payloadSize(static_cast<const uint8_t*>(data), size);
   if (size > static_cast<std::size_t>(INT_MAX)) return {Fault::kLengthBeyondBytes, ""};
   Verdict verdict = MessageRules::beftTypes().check(fingerprint, data, size);
   if (!verdict.ok()) return verdict;
@@ -30,6 +33,7 @@ Verdict guardedDecode(const void* data, std::size_t size, Message& message) {
 template <typename Message>
 bool validFrom(const std::string& channel, const void* data, std::size_t size) {
   static const uint64_t fingerprint = static_cast<uint64_t>(Message::getHash());
+  size = payloadSize(static_cast<const uint8_t*>(data), size);
   const Verdict verdict = MessageRules::beftTypes().check(fingerprint, data, size);
   if (!verdict.ok()) processRejects().count(channel, verdict);
   return verdict.ok();

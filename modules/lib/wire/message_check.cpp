@@ -334,6 +334,7 @@ const char* faultName(Fault fault) {
     case Fault::kUndecodable: return "refused by the generated decoder";
     case Fault::kBadPayload: return "payload refused by its reader";
     case Fault::kOtherRun: return "of another run on this URL";
+    case Fault::kUnauthenticated: return "without a valid tag of the run's key";
   }
   return "unknown fault";
 }

@@ -37,6 +37,7 @@ enum class Fault : uint8_t {
   kUndecodable,        // the generated decoder refused what the guard passed
   kBadPayload,         // the payload's own reader refused it (a camera frame's compressed pixels)
   kOtherRun,           // on another run's channel (run_identity.hpp): dropped, not malformed
+  kUnauthenticated,    // in a run with a key: no valid tag (lib/transport/message_key.hpp)
 };
 
 // "length beyond the bytes", ... (static text)

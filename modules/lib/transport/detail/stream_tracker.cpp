@@ -1,0 +1,181 @@
+#include "lib/transport/detail/stream_tracker.hpp"
+
+#include <algorithm>
+
+namespace beft::transport::detail {
+
+namespace {
+
+constexpr std::size_t kMostAskedAtOnce = 256;  // repair_request_t.count's bound
+
+}  // namespace
+
+StreamTracker::StreamTracker(Tracks tracks, Options options) : tracks_(std::move(tracks)), options_(options) {}
+
+StreamTracker::Stream& StreamTracker::streamOf(uint64_t sender, std::string_view channel) {
+  auto [at, made] = streams_.try_emplace(Key{sender, std::string(channel)});
+  if (made) at->second.channel = std::string(channel);
+  return at->second;
+}
+
+void StreamTracker::hear(uint64_t sender, int64_t now_us) {
+  Sender& heard = senders_[sender];
+  heard.last_heard_us = now_us;
+  heard.dead = false;
+}
+
+// A stream's first number heard: a young stream is taken from its first
+// message (the ones before were lost on the way); an older one from here on
+// (this receiver came late, and its early messages are not its business).
+void StreamTracker::start(Stream& stream, uint64_t first_heard, int64_t now_us) {
+  if (first_heard <= options_.young_stream) {
+    stream.next = 1;
+    if (first_heard > 1) markMissing(stream, 1, first_heard, now_us);
+  } else {
+    stream.next = first_heard;
+    ++stats_.joined_late;
+  }
+}
+
+void StreamTracker::markMissing(Stream& stream, uint64_t from, uint64_t to, int64_t now_us) {
+  for (uint64_t sequence = from; sequence < to; ++sequence) {
+    if (stream.held.count(sequence) || stream.missing.count(sequence)) continue;
+    stream.missing[sequence] = Ask{now_us, std::max(options_.first_retry_us, 2 * round_trip_us_), 0};
+    ++stats_.gaps;
+  }
+}
+
+void StreamTracker::filled(Stream& stream, uint64_t sequence, int64_t now_us) {
+  const auto asked = stream.missing.find(sequence);
+  if (asked == stream.missing.end()) return;
+  ++stats_.repaired;
+  if (asked->second.first_us > 0) {
+    // The round trip, smoothed as TCP smooths its RTT (RFC 6298, alpha 1/8).
+    const int64_t sample = std::max<int64_t>(now_us - asked->second.first_us, 100);
+    round_trip_us_ += (sample - round_trip_us_) / 8;
+  }
+  stream.missing.erase(asked);
+}
+
+void StreamTracker::accept(const Message& message, const wire::Envelope& envelope, int64_t now_us,
+                           const Handler& deliver) {
+  hear(envelope.sender, now_us);
+  Stream& stream = streamOf(envelope.sender, message.channel);
+  const uint64_t sequence = envelope.sequence;
+  if (sequence == 0) return;
+  if (stream.next == 0) start(stream, sequence, now_us);
+  if (sequence < stream.next || stream.held.count(sequence)) {
+    ++stats_.duplicates;
+    return;
+  }
+  if (sequence - stream.next > options_.widest_gap) {
+    ++stats_.implausible;
+    return;
+  }
+  filled(stream, sequence, now_us);
+  if (sequence == stream.next) {
+    deliver(message);
+    ++stream.next;
+  } else {
+    markMissing(stream, stream.next, sequence, now_us);
+    stream.held[sequence] = Held{std::vector<uint8_t>(message.data, message.data + message.size), message.recv_utime};
+  }
+  advance(stream, false, deliver);
+}
+
+// Hands on what is held in order; skips what is given up (no longer kept,
+// or, when the sender is dead, anything before what is held).
+void StreamTracker::advance(Stream& stream, bool sender_dead, const Handler& deliver) {
+  for (;;) {
+    if (!stream.held.empty() && stream.held.begin()->first == stream.next) {
+      auto held = stream.held.begin();
+      Message message;
+      message.channel = stream.channel;
+      message.data = held->second.bytes.data();
+      message.size = held->second.bytes.size();
+      message.recv_utime = held->second.recv_utime;
+      deliver(message);
+      stream.held.erase(held);
+      ++stream.next;
+      continue;
+    }
+    const bool given_up = stream.next < stream.gone_below || (sender_dead && !stream.held.empty());
+    if (!given_up) break;
+    if (stream.missing.erase(stream.next)) ++stats_.lost;
+    ++stream.next;
+  }
+  if (sender_dead) {
+    stats_.lost += stream.missing.size();
+    stream.missing.clear();
+  }
+}
+
+void StreamTracker::onState(const beft::sender_state_t& state, int64_t now_us, const Handler& deliver) {
+  const auto sender = static_cast<uint64_t>(state.sender);
+  hear(sender, now_us);
+  const std::size_t count = std::min({state.channels.size(), state.last_sequences.size(), state.first_kept.size()});
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!tracks_(state.channels[i]) || state.last_sequences[i] < 1) continue;
+    const auto last = static_cast<uint64_t>(state.last_sequences[i]);
+    Stream& stream = streamOf(sender, state.channels[i]);
+    if (stream.next == 0) {
+      if (last > options_.young_stream) {
+        stream.next = last + 1;  // came late: nothing of it is this receiver's business
+        ++stats_.joined_late;
+        continue;
+      }
+      stream.next = 1;
+    }
+    if (last >= stream.next && last - stream.next <= options_.widest_gap) markMissing(stream, stream.next, last + 1, now_us);
+    stream.gone_below = std::max<uint64_t>(stream.gone_below, static_cast<uint64_t>(std::max<int64_t>(0, state.first_kept[i])));
+    advance(stream, false, deliver);
+  }
+}
+
+std::vector<beft::repair_request_t> StreamTracker::due(int64_t now_us, const Handler& deliver) {
+  std::vector<beft::repair_request_t> requests;
+  for (auto& [key, stream] : streams_) {
+    if (stream.missing.empty()) continue;
+    Sender& sender = senders_[key.first];
+    if (now_us - sender.last_heard_us > options_.dead_after_us) {
+      sender.dead = true;
+      advance(stream, true, deliver);
+      continue;
+    }
+    beft::repair_request_t request;
+    request.sender = static_cast<int64_t>(key.first);
+    request.channel = stream.channel;
+    for (auto& [sequence, ask] : stream.missing) {
+      if (ask.next_us > now_us) continue;
+      if (request.sequences.size() >= kMostAskedAtOnce) break;
+      request.sequences.push_back(static_cast<int64_t>(sequence));
+      if (ask.first_us == 0) ask.first_us = now_us;
+      ask.next_us = now_us + ask.wait_us;
+      ask.wait_us = std::min(ask.wait_us * 2, options_.slowest_retry_us);
+    }
+    if (request.sequences.empty()) continue;
+    request.count = static_cast<int32_t>(request.sequences.size());
+    ++stats_.requests;
+    requests.push_back(std::move(request));
+  }
+  return requests;
+}
+
+int64_t StreamTracker::nextDueUs() const {
+  int64_t next = std::numeric_limits<int64_t>::max();
+  for (const auto& [key, stream] : streams_) {
+    if (stream.missing.empty()) continue;
+    for (const auto& [sequence, ask] : stream.missing) next = std::min(next, ask.next_us);
+    const auto sender = senders_.find(key.first);
+    if (sender != senders_.end()) next = std::min(next, sender->second.last_heard_us + options_.dead_after_us + 1);
+  }
+  return next;
+}
+
+std::size_t StreamTracker::heldMessages() const {
+  std::size_t held = 0;
+  for (const auto& [key, stream] : streams_) held += stream.held.size();
+  return held;
+}
+
+}  // namespace beft::transport::detail

@@ -1,0 +1,113 @@
+// The receiver's side of loss repair: every (sender, channel) a receiver
+// takes is a stream numbered from 1 (the envelope's sequence number). A gap
+// in the numbers, or a sender's state (BEFT_SENDERS) that names a message not
+// yet heard, is a loss: it is asked for (a repair request, the NACK of PGM
+// and NORM) at once, then again after a back-off sized to the measured round
+// trip, as long as the sender is heard. Messages after a gap are held and
+// handed on in order once it is filled, so a handler sees each stream
+// complete, in order and once. A gap is given up only when its sender says
+// the message is no longer kept, or falls silent (dead): then what was held
+// goes on, and the loss is counted.
+//
+// Pure logic with the time passed in, so the tests drive it message by message.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <beft/repair_request_t.hpp>
+#include <beft/sender_state_t.hpp>
+
+#include "lib/transport/transport.hpp"
+#include "lib/wire/envelope.hpp"
+
+namespace beft::transport::detail {
+
+class StreamTracker {
+ public:
+  struct Options {
+    int64_t dead_after_us = 3'000'000;    // a sender not heard for this long is given up
+    int64_t first_retry_us = 2'000;       // shortest wait before asking again
+    int64_t slowest_retry_us = 250'000;   // longest wait between asks
+    uint64_t young_stream = 64;           // a stream first heard at or below this number is asked for from 1
+    uint64_t widest_gap = 65'536;         // a jump further than this is not believed (a damaged envelope)
+  };
+  // Whether the receiver takes a channel (as sent, with its run suffix) as a stream.
+  using Tracks = std::function<bool(std::string_view channel)>;
+
+  StreamTracker(Tracks tracks, Options options);
+  explicit StreamTracker(Tracks tracks) : StreamTracker(std::move(tracks), Options{}) {}
+
+  bool tracks(std::string_view channel) const { return tracks_(channel); }
+
+  // A message with its envelope on a tracked channel (`message` without the
+  // envelope): handed to `deliver` now, with any it completes, or held, or
+  // dropped as a copy already had.
+  void accept(const Message& message, const wire::Envelope& envelope, int64_t now_us, const Handler& deliver);
+  // A sender's state: a last message not heard is a loss; a gap no longer
+  // kept is given up.
+  void onState(const beft::sender_state_t& state, int64_t now_us, const Handler& deliver);
+  // The repair requests due at `now_us` (one per stream), and gives up on
+  // senders not heard for dead_after_us.
+  std::vector<beft::repair_request_t> due(int64_t now_us, const Handler& deliver);
+  // When due() next has something to do [us]; max() when nothing waits.
+  int64_t nextDueUs() const;
+
+  struct Stats {
+    uint64_t gaps = 0;         // messages found missing
+    uint64_t repaired = 0;     // of those, got later
+    uint64_t lost = 0;         // of those, given up
+    uint64_t duplicates = 0;   // copies dropped
+    uint64_t joined_late = 0;  // streams first heard after their early messages were gone
+    uint64_t implausible = 0;  // envelopes whose number jumped too far, dropped
+    uint64_t requests = 0;     // repair requests sent
+  };
+  const Stats& stats() const { return stats_; }
+  int64_t roundTripUs() const { return round_trip_us_; }
+  std::size_t heldMessages() const;
+
+ private:
+  struct Held {
+    std::vector<uint8_t> bytes;
+    int64_t recv_utime = 0;
+  };
+  struct Ask {
+    int64_t next_us = 0;     // when to ask (again)
+    int64_t wait_us = 0;     // the wait after the next ask
+    int64_t first_us = 0;    // when first asked, for the round trip
+  };
+  struct Stream {
+    std::string channel;
+    uint64_t next = 0;       // next number to hand on; 0: nothing heard yet
+    uint64_t gone_below = 0; // the sender no longer keeps numbers below this
+    std::map<uint64_t, Held> held;
+    std::map<uint64_t, Ask> missing;
+  };
+  struct Sender {
+    int64_t last_heard_us = 0;
+    bool dead = false;
+  };
+  using Key = std::pair<uint64_t, std::string>;
+
+  Stream& streamOf(uint64_t sender, std::string_view channel);
+  void start(Stream& stream, uint64_t first_heard, int64_t now_us);
+  void markMissing(Stream& stream, uint64_t from, uint64_t to, int64_t now_us);
+  void filled(Stream& stream, uint64_t sequence, int64_t now_us);
+  void advance(Stream& stream, bool sender_dead, const Handler& deliver);
+  void hear(uint64_t sender, int64_t now_us);
+
+  Tracks tracks_;
+  Options options_;
+  std::map<Key, Stream> streams_;
+  std::map<uint64_t, Sender> senders_;
+  int64_t round_trip_us_ = 5'000;
+  Stats stats_;
+};
+
+}  // namespace beft::transport::detail
