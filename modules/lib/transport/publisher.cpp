@@ -2,6 +2,7 @@
 
 #include <sys/random.h>
 
+#include <chrono>
 #include <map>
 #include <mutex>
 
@@ -37,6 +38,10 @@ class Publisher {
     wire::Envelope envelope;
     envelope.sender = sender_;
     envelope.sequence = own ? ++own_sequence_ : kept_.nextSequence(channel);
+    const int64_t now_us = std::chrono::duration_cast<std::chrono::microseconds>(
+                               std::chrono::system_clock::now().time_since_epoch())
+                               .count();
+    envelope.stream_start_us = own ? now_us : kept_.streamStart(channel, now_us);
     const auto* payload = static_cast<const uint8_t*>(data);
     if (const MessageKey* key = processKey()) {
       envelope.tagged = true;
@@ -47,7 +52,7 @@ class Publisher {
     wire::appendEnvelope(bytes, envelope);
     const int status = lcm.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
     if (own) return status;
-    kept_.keep(channel, envelope.sequence, std::move(bytes));
+    kept_.keep(channel, envelope.sequence, std::move(bytes), envelope.stream_start_us);
     if (reliable_) reliable_->published();
     return status;
   }

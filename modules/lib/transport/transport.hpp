@@ -78,6 +78,7 @@ struct RepairStats {
   uint64_t requests = 0;         // repair requests sent
   uint64_t unauthenticated = 0;  // refused in a run with a key: no valid tag
   uint64_t waiting = 0;          // messages held now behind a gap
+  uint64_t outstanding = 0;      // messages missing now, still asked for
 };
 
 class Receiver {

@@ -30,9 +30,10 @@ bool splitEnvelope(const uint8_t* data, std::size_t size, std::size_t& payload_s
   if (size < total) return false;
   const uint8_t* at = data + size - total;
   envelope.sender = readU64(at);
-  envelope.sequence = readU64(at + 8);
+  envelope.stream_start_us = static_cast<int64_t>(readU64(at + 8));
+  envelope.sequence = readU64(at + 16);
   envelope.tagged = tag_size != 0;
-  if (envelope.tagged) std::memcpy(envelope.tag.data(), at + 16, kTagBytes);
+  if (envelope.tagged) std::memcpy(envelope.tag.data(), at + 24, kTagBytes);
   payload_size = size - total;
   return true;
 }
@@ -46,6 +47,7 @@ std::size_t payloadSize(const uint8_t* data, std::size_t size) {
 
 void appendEnvelope(std::vector<uint8_t>& bytes, const Envelope& envelope) {
   writeU64(bytes, envelope.sender);
+  writeU64(bytes, static_cast<uint64_t>(envelope.stream_start_us));
   writeU64(bytes, envelope.sequence);
   if (envelope.tagged) bytes.insert(bytes.end(), envelope.tag.begin(), envelope.tag.end());
   bytes.push_back(envelope.tagged ? static_cast<uint8_t>(kTagBytes) : 0);

@@ -2,7 +2,7 @@
 // sent it, its number on its channel, and (in a run with a key) a tag that
 // proves the sender holds the key.
 //
-//   payload | sender (8) | sequence (8) | tag (0 or 16) | tag size (1) | "BENV"
+//   payload | sender (8) | stream start (8) | sequence (8) | tag (0 or 16) | tag size (1) | "BENV"
 //
 // All integers big-endian. LCM's generated decoders (C++, Java: lcm-spy) read
 // their fields and ignore what follows, so a message with an envelope decodes
@@ -22,13 +22,14 @@ namespace beft::wire {
 constexpr std::size_t kTagBytes = 16;
 
 struct Envelope {
-  uint64_t sender = 0;    // the publishing process's id, drawn at its start (never 0)
-  uint64_t sequence = 0;  // per sender and channel, from 1
+  uint64_t sender = 0;          // the publishing process's id, drawn at its start (never 0)
+  int64_t stream_start_us = 0;  // when the sender published its first message on the channel [us since the epoch]
+  uint64_t sequence = 0;        // per sender and channel, from 1
   bool tagged = false;
   std::array<uint8_t, kTagBytes> tag{};
 };
 
-constexpr std::size_t kEnvelopeBytes = 8 + 8 + 1 + 4;  // without a tag
+constexpr std::size_t kEnvelopeBytes = 8 + 8 + 8 + 1 + 4;  // without a tag
 
 // The envelope's size when `tagged`.
 constexpr std::size_t envelopeBytes(bool tagged) { return kEnvelopeBytes + (tagged ? kTagBytes : 0); }

@@ -38,11 +38,16 @@ void RecordProcess::recordUntilStopped(Recorder& recorder, const service::StopSi
   // waits until the log holds what was published before it started), and
   // at most that much is lost if the machine dies.
   auto next_flush = std::chrono::steady_clock::now() + std::chrono::milliseconds(100);
+  auto next_status = std::chrono::steady_clock::now() + std::chrono::seconds(1);
   while (!stop.any()) {
     const int handled = recorder.handle(100);
     if (handled < 0 && !stop.any()) throw std::runtime_error("LCM receive failed; stopping");
     // Let the next messages gather, unless this read was a large one (a burst: keep up with it).
     if (handled > 0 && handled < 256 && batch_ms_ > 0) std::this_thread::sleep_for(std::chrono::milliseconds(batch_ms_));
+    if (std::chrono::steady_clock::now() >= next_status) {
+      recorder.writeStatus(false);
+      next_status = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+    }
     if (std::chrono::steady_clock::now() >= next_flush) {
       recorder.flush();
       next_flush = std::chrono::steady_clock::now() + std::chrono::milliseconds(100);
@@ -57,9 +62,16 @@ void RecordProcess::reportEnd(const Recorder& recorder) const {
                   ? "; " + std::to_string(recorder.cameraFramesLeftOut()) + " camera frames left out (--camera " +
                         options_.camera.text() + ")"
                   : std::string());
-  if (recorder.kernelDropped() > 0)
-    log::error(recorder.kernelDropped(), " datagram(s) lost before they were recorded: the receive "
-               "buffer was full (raise recv_buf_size in the LCM URL, or net.core.rmem_max)");
+  const transport::RepairStats repairs = recorder.repairs();
+  if (repairs.gaps > 0)
+    log::info("loss repair: ", repairs.gaps, " message(s) missed at first, ", repairs.repaired, " repaired, ",
+              repairs.lost + repairs.outstanding, " lost", recorder.kernelDropped() > 0
+                  ? " (" + std::to_string(recorder.kernelDropped()) + " datagram(s) dropped by the kernel: the receive "
+                    "buffer was full; raise recv_buf_size in the LCM URL, or net.core.rmem_max)"
+                  : std::string());
+  if (repairs.lost + repairs.outstanding > 0 || repairs.joined_late > 0)
+    log::error("the log is not complete: ", repairs.lost + repairs.outstanding, " message(s) lost, ",
+               repairs.joined_late, " stream(s) first heard late");
 }
 
 void RecordProcess::onStartUp() {
@@ -76,6 +88,7 @@ int RecordProcess::serve(service::Context& context) {
               options_.camera.keepsAll() ? "" : " (camera frames: " + options_.camera.text() + ")");
     recordUntilStopped(recorder, context.stop);
     recorder.drain(100, 3000);
+    recorder.writeStatus(true);
     recorder.flush();
     reportEnd(recorder);
   } catch (const std::exception& e) {

@@ -6,7 +6,11 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include <beft/record_status_t.hpp>
+
+#include "lib/common/channels.hpp"
 #include "lib/common/log.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::record {
 
@@ -77,9 +81,37 @@ void Recorder::drain(int quiet_ms, int longest_ms) {
   using Clock = std::chrono::steady_clock;
   const auto give_up = Clock::now() + std::chrono::milliseconds(longest_ms);
   while (Clock::now() < give_up) {
-    if (handle(quiet_ms) <= 0) break;  // quiet for quiet_ms, or an error
+    const int taken = handle(quiet_ms);
+    if (taken < 0) break;
+    const transport::RepairStats repairs = source_->repairStats();
+    if (taken == 0 && repairs.outstanding == 0 && repairs.waiting == 0) break;  // quiet, and nothing missing
   }
   writeHeld();
+}
+
+void Recorder::writeStatus(bool final) {
+  const transport::RepairStats repairs = source_->repairStats();
+  const int64_t now_us = std::chrono::duration_cast<std::chrono::microseconds>(
+                             std::chrono::system_clock::now().time_since_epoch())
+                             .count();
+  beft::record_status_t status;
+  status.utime = now_us;
+  status.messages = events_;
+  status.repaired = static_cast<int64_t>(repairs.repaired);
+  // What is still missing at the end is lost to the log.
+  status.lost = static_cast<int64_t>(repairs.lost + (final ? repairs.outstanding : 0));
+  status.joined_late = static_cast<int64_t>(repairs.joined_late);
+  status.kernel_dropped = static_cast<int64_t>(source_->kernelDropped());
+  status.complete = status.lost == 0 && repairs.outstanding == 0 && repairs.waiting == 0 && status.joined_late == 0;
+  status.final = final;
+  std::vector<uint8_t> bytes(static_cast<std::size_t>(status.getEncodedSize()));
+  status.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  writeHeld();
+  // Not one of the messages heard: events() and bytes() leave it out.
+  const int64_t events = events_, written_bytes = bytes_;
+  write({wire::runChannel(channels::kRecordStatus.name), std::move(bytes), now_us});
+  events_ = events;
+  bytes_ = written_bytes;
 }
 
 void Recorder::flush() {

@@ -53,8 +53,8 @@ class Recorder {
   // those older than a millisecond, oldest first. Returns how many were
   // taken, -1 if receiving failed.
   int handle(int timeout_ms);
-  // Keeps writing until nothing arrived for `quiet_ms` (or `longest_ms`
-  // passed), then writes what it still holds.
+  // Keeps writing until nothing arrived for `quiet_ms` and nothing is still
+  // being repaired (or `longest_ms` passed), then writes what it still holds.
   void drain(int quiet_ms, int longest_ms);
   void flush();
 
@@ -62,6 +62,13 @@ class Recorder {
   int64_t cameraFramesLeftOut() const { return camera_frames_left_out_; }
   int64_t bytes() const { return bytes_; }
   uint64_t kernelDropped() const { return source_->kernelDropped(); }
+  // What loss repair did for the log: gaps found, repaired, given up.
+  transport::RepairStats repairs() const { return source_->repairStats(); }
+  // Writes the log's own account of its completeness (RECORD_STATUS,
+  // record_status_t) into the log: every second while recording, and once
+  // more, `final`, after the run. Complete: nothing known to be lost, nothing
+  // still missing, no stream first heard after its early messages.
+  void writeStatus(bool final);
   std::string description() const { return source_->description(); }
   // What the kernel granted the direct receiver's socket [bytes], -1 without one.
   int receiveBufferBytes() const { return source_->receiveBufferBytes(); }

@@ -25,7 +25,7 @@ class Tracker : public ::testing::Test {
     handed.emplace_back(reinterpret_cast<const char*>(message.data), message.size);
   };
 
-  void receive(uint64_t sequence, int64_t now_us, uint64_t sender = kSender) {
+  void receive(uint64_t sequence, int64_t now_us, uint64_t sender = kSender, int64_t stream_start_us = 0) {
     const std::string payload = "m" + std::to_string(sequence);
     Message message;
     message.channel = kChannel;
@@ -34,6 +34,7 @@ class Tracker : public ::testing::Test {
     beft::wire::Envelope envelope;
     envelope.sender = sender;
     envelope.sequence = sequence;
+    envelope.stream_start_us = stream_start_us;
     tracker.accept(message, envelope, now_us, deliver);
   }
 
@@ -43,6 +44,7 @@ class Tracker : public ::testing::Test {
     state.channels = {kChannel};
     state.last_sequences = {last};
     state.first_kept = {first_kept};
+    state.stream_started = {0};
     state.count = 1;
     return state;
   }
@@ -126,18 +128,36 @@ TEST_F(Tracker, GivesUpOnASenderThatFallsSilent) {
   EXPECT_EQ(tracker.stats().lost, 1u);
 }
 
-TEST_F(Tracker, AYoungStreamIsTakenFromItsFirstMessageAnOldOneFromHere) {
-  receive(3, 0);  // 1 and 2 lost at the start of the run
+TEST_F(Tracker, AStreamBegunAfterTheReceiverStartedIsTakenFromItsFirstMessage) {
+  StreamTracker::Options options;
+  options.listening_since_us = 1'000'000;
+  StreamTracker late_starter([](std::string_view) { return true; }, options);
+  tracker = std::move(late_starter);
+  receive(3, 0, kSender, 2'000'000);  // 1 and 2 lost, the stream began after this receiver started
   EXPECT_TRUE(handed.empty());
   ASSERT_EQ(tracker.due(0, deliver).at(0).sequences, (std::vector<int64_t>{1, 2}));
-  receive(1, 10);
-  receive(2, 20);
+  receive(1, 10, kSender, 2'000'000);
+  receive(2, 20, kSender, 2'000'000);
   EXPECT_EQ(handed, (std::vector<std::string>{"m1", "m2", "m3"}));
 
-  receive(5000, 30, kSender + 1);  // a receiver that came late to another sender
+  // A stream that began before: this receiver came late (a process restarted
+  // mid-run); what came before is not its business.
+  receive(5000, 30, kSender + 1, 500'000);
   EXPECT_EQ(handed.back(), "m5000");
   EXPECT_EQ(tracker.stats().joined_late, 1u);
   EXPECT_TRUE(tracker.due(40, deliver).empty());
+
+  // Likewise through a state: only a stream begun after the start is asked for.
+  beft::sender_state_t old_stream = state(9, 1);
+  old_stream.sender = static_cast<int64_t>(kSender + 2);
+  old_stream.stream_started = {500'000};
+  tracker.onState(old_stream, 50, deliver);
+  EXPECT_TRUE(tracker.due(50, deliver).empty());
+  beft::sender_state_t new_stream = old_stream;
+  new_stream.stream_started = {3'000'000};
+  new_stream.sender = static_cast<int64_t>(kSender + 3);
+  tracker.onState(new_stream, 60, deliver);
+  ASSERT_EQ(tracker.due(60, deliver).size(), 1u);
 }
 
 TEST_F(Tracker, StreamsAreKeptApartBySenderAndAChannelNotTrackedIsLeftAlone) {

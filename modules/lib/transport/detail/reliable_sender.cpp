@@ -136,6 +136,7 @@ struct ReliableSender::Loop {
       state.channels.push_back(channel.channel);
       state.last_sequences.push_back(static_cast<int64_t>(channel.last_sequence));
       state.first_kept.push_back(static_cast<int64_t>(channel.first_kept));
+      state.stream_started.push_back(channel.stream_start_us);
     }
     state.count = static_cast<int32_t>(state.channels.size());
     std::vector<uint8_t> encoded(static_cast<std::size_t>(state.getEncodedSize()));

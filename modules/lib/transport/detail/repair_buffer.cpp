@@ -4,8 +4,15 @@ namespace beft::transport::detail {
 
 uint64_t RepairBuffer::nextSequence(const std::string& channel) { return channels_[channel].last_sequence + 1; }
 
-void RepairBuffer::keep(const std::string& channel, uint64_t sequence, std::vector<uint8_t> bytes) {
+int64_t RepairBuffer::streamStart(const std::string& channel, int64_t now_us) const {
+  const auto found = channels_.find(channel);
+  return found == channels_.end() || found->second.stream_start_us == 0 ? now_us : found->second.stream_start_us;
+}
+
+void RepairBuffer::keep(const std::string& channel, uint64_t sequence, std::vector<uint8_t> bytes,
+                        int64_t stream_start_us) {
   Channel& kept = channels_[channel];
+  if (kept.stream_start_us == 0) kept.stream_start_us = stream_start_us;
   if (sequence > kept.last_sequence) kept.last_sequence = sequence;
   bytes_kept_ += bytes.size();
   kept.kept[sequence] = std::make_shared<const std::vector<uint8_t>>(std::move(bytes));
@@ -43,7 +50,7 @@ std::vector<RepairBuffer::ChannelState> RepairBuffer::state() const {
   states.reserve(channels_.size());
   for (const auto& [name, channel] : channels_) {
     const uint64_t first_kept = channel.kept.empty() ? channel.last_sequence + 1 : channel.kept.begin()->first;
-    states.push_back({name, channel.last_sequence, first_kept});
+    states.push_back({name, channel.last_sequence, first_kept, channel.stream_start_us});
   }
   return states;
 }

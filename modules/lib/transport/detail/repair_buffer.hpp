@@ -23,8 +23,10 @@ class RepairBuffer {
 
   // The next sequence number on `channel` (1 for its first message).
   uint64_t nextSequence(const std::string& channel);
-  // Keeps the bytes of message `sequence` on `channel`.
-  void keep(const std::string& channel, uint64_t sequence, std::vector<uint8_t> bytes);
+  // When the channel's first message was kept [us since the epoch]; `now_us` for a channel not yet used.
+  int64_t streamStart(const std::string& channel, int64_t now_us) const;
+  // Keeps the bytes of message `sequence` on `channel`, published at `stream_start_us`'s stream.
+  void keep(const std::string& channel, uint64_t sequence, std::vector<uint8_t> bytes, int64_t stream_start_us = 0);
   // The bytes of a kept message; null when it is no longer (or never was) kept.
   std::shared_ptr<const std::vector<uint8_t>> find(const std::string& channel, uint64_t sequence) const;
 
@@ -32,6 +34,7 @@ class RepairBuffer {
     std::string channel;
     uint64_t last_sequence = 0;  // last sent
     uint64_t first_kept = 0;     // oldest kept (last_sequence + 1 when none is)
+    int64_t stream_start_us = 0; // when its first message was published
   };
   std::vector<ChannelState> state() const;
   std::size_t bytesKept() const { return bytes_kept_; }
@@ -39,6 +42,7 @@ class RepairBuffer {
  private:
   struct Channel {
     uint64_t last_sequence = 0;
+    int64_t stream_start_us = 0;
     std::map<uint64_t, std::shared_ptr<const std::vector<uint8_t>>> kept;
   };
   void evictOverBudget();

@@ -28,6 +28,17 @@ int64_t nowUs() {
       .count();
 }
 
+int64_t wallUs() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+StreamTracker::Options listeningFromNow() {
+  StreamTracker::Options options;
+  options.listening_since_us = wallUs();
+  return options;
+}
+
 bool isTransportChannel(std::string_view base) {
   return base == channels::kRepairRequest.name || base == channels::kSenderState.name;
 }
@@ -50,7 +61,7 @@ StreamTracker::Tracks tracksOf(const Selection& selection) {
 class RepairingSource : public Receiver {
  public:
   RepairingSource(std::unique_ptr<Receiver> inner, lcm::LCM& lcm, const Selection& selection)
-      : inner_(std::move(inner)), lcm_(lcm), tracker_(tracksOf(selection)) {
+      : inner_(std::move(inner)), lcm_(lcm), tracker_(tracksOf(selection), listeningFromNow()) {
     timer_fd_ = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
     epoll_fd_ = epoll_create1(EPOLL_CLOEXEC);
     epoll_event event{};
@@ -100,6 +111,7 @@ class RepairingSource : public Receiver {
     repairs.requests = stats.requests;
     repairs.unauthenticated = unauthenticated_;
     repairs.waiting = tracker_.heldMessages();
+    repairs.outstanding = tracker_.missingMessages();
     return repairs;
   }
 
@@ -108,7 +120,7 @@ class RepairingSource : public Receiver {
     Message message = received;
     wire::Envelope envelope;
     const bool enveloped = wire::splitEnvelope(received.data, received.size, message.size, envelope);
-    if (const MessageKey* key = processKey()) {
+    if (const MessageKey* key = key_) {
       if (!enveloped || !tagValid(*key, received.channel, envelope, message.data, message.size)) {
         ++unauthenticated_;
         wire::processRejects().count(std::string(wire::splitRunChannel(received.channel).base),
@@ -131,9 +143,7 @@ class RepairingSource : public Receiver {
   void askForWhatIsMissing(const Handler& handler) {
     for (auto& request : tracker_.due(nowUs(), handler)) {
       const int64_t run = wire::splitRunChannel(request.channel).run_id;
-      request.utime = std::chrono::duration_cast<std::chrono::microseconds>(
-                          std::chrono::system_clock::now().time_since_epoch())
-                          .count();
+      request.utime = wallUs();
       request.requester = requester_;
       publish(lcm_, wire::runChannel(channels::kRepairRequest.name, run), request);
     }
@@ -156,6 +166,7 @@ class RepairingSource : public Receiver {
   StreamTracker tracker_;
   int timer_fd_ = -1, epoll_fd_ = -1;
   uint64_t unauthenticated_ = 0;
+  const MessageKey* key_ = processKey();
   std::string requester_ = std::to_string(getpid());
 };
 

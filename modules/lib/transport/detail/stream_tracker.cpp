@@ -24,16 +24,16 @@ void StreamTracker::hear(uint64_t sender, int64_t now_us) {
   heard.dead = false;
 }
 
-// A stream's first number heard: a young stream is taken from its first
-// message (the ones before were lost on the way); an older one from here on
-// (this receiver came late, and its early messages are not its business).
-void StreamTracker::start(Stream& stream, uint64_t first_heard, int64_t now_us) {
-  if (first_heard <= options_.young_stream) {
+// A stream's first number heard: one that began after this receiver
+// started is taken from its first message (those before were lost on the
+// way); an older one from here on.
+void StreamTracker::start(Stream& stream, uint64_t first_heard, int64_t stream_start_us, int64_t now_us) {
+  if (stream_start_us >= options_.listening_since_us) {
     stream.next = 1;
     if (first_heard > 1) markMissing(stream, 1, first_heard, now_us);
   } else {
     stream.next = first_heard;
-    ++stats_.joined_late;
+    if (first_heard > 1) ++stats_.joined_late;
   }
 }
 
@@ -63,7 +63,7 @@ void StreamTracker::accept(const Message& message, const wire::Envelope& envelop
   Stream& stream = streamOf(envelope.sender, message.channel);
   const uint64_t sequence = envelope.sequence;
   if (sequence == 0) return;
-  if (stream.next == 0) start(stream, sequence, now_us);
+  if (stream.next == 0) start(stream, sequence, envelope.stream_start_us, now_us);
   if (sequence < stream.next || stream.held.count(sequence)) {
     ++stats_.duplicates;
     return;
@@ -75,6 +75,7 @@ void StreamTracker::accept(const Message& message, const wire::Envelope& envelop
   filled(stream, sequence, now_us);
   if (sequence == stream.next) {
     deliver(message);
+    stream.handed_utime = std::max(stream.handed_utime, message.recv_utime);
     ++stream.next;
   } else {
     markMissing(stream, stream.next, sequence, now_us);
@@ -93,7 +94,10 @@ void StreamTracker::advance(Stream& stream, bool sender_dead, const Handler& del
       message.channel = stream.channel;
       message.data = held->second.bytes.data();
       message.size = held->second.bytes.size();
-      message.recv_utime = held->second.recv_utime;
+      // Handed on when the gap before it was filled: received, for whoever
+      // orders by receive time (the recorder), after what filled it.
+      message.recv_utime = std::max(held->second.recv_utime, stream.handed_utime);
+      stream.handed_utime = message.recv_utime;
       deliver(message);
       stream.held.erase(held);
       ++stream.next;
@@ -113,13 +117,15 @@ void StreamTracker::advance(Stream& stream, bool sender_dead, const Handler& del
 void StreamTracker::onState(const beft::sender_state_t& state, int64_t now_us, const Handler& deliver) {
   const auto sender = static_cast<uint64_t>(state.sender);
   hear(sender, now_us);
-  const std::size_t count = std::min({state.channels.size(), state.last_sequences.size(), state.first_kept.size()});
+  const std::size_t count = std::min({state.channels.size(), state.last_sequences.size(), state.first_kept.size(),
+                                      state.stream_started.size()});
   for (std::size_t i = 0; i < count; ++i) {
     if (!tracks_(state.channels[i]) || state.last_sequences[i] < 1) continue;
     const auto last = static_cast<uint64_t>(state.last_sequences[i]);
     Stream& stream = streamOf(sender, state.channels[i]);
     if (stream.next == 0) {
-      if (last > options_.young_stream) {
+      const int64_t started = state.stream_started[i];
+      if (started < options_.listening_since_us) {
         stream.next = last + 1;  // came late: nothing of it is this receiver's business
         ++stats_.joined_late;
         continue;
@@ -176,6 +182,12 @@ std::size_t StreamTracker::heldMessages() const {
   std::size_t held = 0;
   for (const auto& [key, stream] : streams_) held += stream.held.size();
   return held;
+}
+
+std::size_t StreamTracker::missingMessages() const {
+  std::size_t missing = 0;
+  for (const auto& [key, stream] : streams_) missing += stream.missing.size();
+  return missing;
 }
 
 }  // namespace beft::transport::detail

@@ -9,6 +9,10 @@
 // the message is no longer kept, or falls silent (dead): then what was held
 // goes on, and the loss is counted.
 //
+// A stream that began before the receiver started listening is taken from
+// where it is first heard: what came before is not this receiver's business
+// (a process restarted mid-run restores its state from the run's log).
+//
 // Pure logic with the time passed in, so the tests drive it message by message.
 #pragma once
 
@@ -35,7 +39,10 @@ class StreamTracker {
     int64_t dead_after_us = 3'000'000;    // a sender not heard for this long is given up
     int64_t first_retry_us = 2'000;       // shortest wait before asking again
     int64_t slowest_retry_us = 250'000;   // longest wait between asks
-    uint64_t young_stream = 64;           // a stream first heard at or below this number is asked for from 1
+    // When this receiver started listening [us since the epoch]: a stream
+    // that began after it is asked for from its first message; one that
+    // began before is taken from where it is first heard (a late joiner).
+    int64_t listening_since_us = 0;
     uint64_t widest_gap = 65'536;         // a jump further than this is not believed (a damaged envelope)
   };
   // Whether the receiver takes a channel (as sent, with its run suffix) as a stream.
@@ -71,6 +78,7 @@ class StreamTracker {
   const Stats& stats() const { return stats_; }
   int64_t roundTripUs() const { return round_trip_us_; }
   std::size_t heldMessages() const;
+  std::size_t missingMessages() const;
 
  private:
   struct Held {
@@ -86,6 +94,7 @@ class StreamTracker {
     std::string channel;
     uint64_t next = 0;       // next number to hand on; 0: nothing heard yet
     uint64_t gone_below = 0; // the sender no longer keeps numbers below this
+    int64_t handed_utime = 0; // receive time of the last message handed on
     std::map<uint64_t, Held> held;
     std::map<uint64_t, Ask> missing;
   };
@@ -96,7 +105,7 @@ class StreamTracker {
   using Key = std::pair<uint64_t, std::string>;
 
   Stream& streamOf(uint64_t sender, std::string_view channel);
-  void start(Stream& stream, uint64_t first_heard, int64_t now_us);
+  void start(Stream& stream, uint64_t first_heard, int64_t stream_start_us, int64_t now_us);
   void markMissing(Stream& stream, uint64_t from, uint64_t to, int64_t now_us);
   void filled(Stream& stream, uint64_t sequence, int64_t now_us);
   void advance(Stream& stream, bool sender_dead, const Handler& deliver);
