@@ -8,6 +8,7 @@
 
 #include "blackboard/snapshot.hpp"
 #include "lib/common/channels.hpp"
+#include "lib/transport/publisher.hpp"
 #include "lib/wire/run_identity.hpp"
 
 namespace beft::blackboard {
@@ -71,7 +72,7 @@ std::optional<beft::bb_snapshot_t> requestSnapshot(lcm::LCM& lcm, const std::str
     if (now >= deadline) break;
     if (now >= next_send) {
       query.utime = wallUtime();
-      lcm.publish(wire::runChannel(channels::kBlackboardQuery), &query);
+      transport::publish(lcm, wire::runChannel(channels::kBlackboardQuery), query);
       next_send = now + resend_period;
     }
     const auto wait = std::min(deadline, next_send) - now;

@@ -22,6 +22,7 @@
 #include <beft/dynamic_weights_t.hpp>
 #include <beft/felt_contacts_t.hpp>
 #include <beft/fire_t.hpp>
+#include <beft/frontier_t.hpp>
 #include <beft/geometry_percepts_t.hpp>
 #include <beft/heartbeat_t.hpp>
 #include <beft/hypotheses_t.hpp>
@@ -32,6 +33,7 @@
 #include <beft/obstacle_map_t.hpp>
 #include <beft/plan_request_t.hpp>
 #include <beft/plan_result_t.hpp>
+#include <beft/process_rejects_t.hpp>
 #include <beft/record_status_t.hpp>
 #include <beft/repair_request_t.hpp>
 #include <beft/robot_command_t.hpp>
@@ -125,10 +127,13 @@ enum class Plane {
   X(kMarking, "MARKING", marking_t, Control)                                                        \
   X(kRunStatus, "RUN_STATUS", run_status_t, Control)                                                \
   X(kStopRequest, "STOP_REQUEST", run_status_t, Control) /* end the run after this tick */          \
+  X(kFrontier, "FRONTIER", frontier_t, Control) /* what FIREs come after (lib/expert/frontier.hpp) */ \
   /* Blackboard service. */                                                                        \
   X(kBlackboardQuery, "BB_QUERY", bb_query_t, Service)                                              \
   /* The recorder's account of its log. */                                                        \
   X(kRecordStatus, "RECORD_STATUS", record_status_t, Report)                                        \
+  /* What each process refused (lib/wire/reject_report.hpp). */                                    \
+  X(kProcessRejects, "PROCESS_REJECTS", process_rejects_t, Report)                                  \
   /* Loss repair (lib/transport/reliable_sender.hpp). */                                            \
   X(kRepairRequest, "BEFT_REPAIR", repair_request_t, Transport)                                     \
   X(kSenderState, "BEFT_SENDERS", sender_state_t, Transport)                                        \

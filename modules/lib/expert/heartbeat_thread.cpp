@@ -6,6 +6,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "lib/common/channels.hpp"
+#include "lib/transport/publisher.hpp"
 #include "lib/wire/run_identity.hpp"
 
 namespace beft::expert {
@@ -79,8 +80,8 @@ void HeartbeatThread::send() {
   beat.pid = static_cast<int32_t>(getpid());
   beat.host = host_;
   beat.last_firing_id = last_firing_id_.load();
-  beat.state = firing_.load() ? "firing" : "idle";
-  lcm_.publish(wire::runChannel(channels::kHeartbeat), &beat);
+  beat.state = !firing_.load() ? "idle" : waiting_.load() ? "waiting" : "firing";
+  transport::publish(lcm_, wire::runChannel(channels::kHeartbeat), beat);
   ++sent_;
 }
 

@@ -28,6 +28,10 @@ class HeartbeatThread {
 
   // What the next heartbeats say: running a firing or idle, and the last firing run.
   void setState(bool firing, int64_t last_firing_id);
+  // A firing that waits for its inputs (lost on the way, being repaired):
+  // the heartbeat says "waiting", and the arbiter, which hears it, lets the
+  // firing's timeout wait too (alive and waiting is not dead).
+  void setWaiting(bool waiting) { waiting_ = waiting; }
   // One heartbeat now, besides the periodic ones.
   void sendNow();
   int64_t sent() const { return sent_.load(); }
@@ -41,6 +45,7 @@ class HeartbeatThread {
   const std::string host_;
   const std::chrono::microseconds period_;
   std::atomic<bool> firing_{false};
+  std::atomic<bool> waiting_{false};
   std::atomic<int64_t> last_firing_id_{-1};
   std::atomic<int64_t> sent_{0};
   std::mutex mutex_;

@@ -20,10 +20,13 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "lib/common/channels.hpp"
+#include "lib/expert/frontier.hpp"
 #include "lib/expert/heartbeat_thread.hpp"
 #include "lib/expert/log_replay.hpp"
 #include "lib/common/log.hpp"
 #include "lib/transport/control_messages.hpp"
+#include "lib/transport/publisher.hpp"
+#include "lib/wire/reject_report.hpp"
 #include "lib/wire/run_identity.hpp"
 #include "lib/transport/transport.hpp"
 
@@ -46,7 +49,7 @@ class LcmOutput : public Output {
  public:
   explicit LcmOutput(lcm::LCM& lcm) : lcm_(lcm) {}
   void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
-    if (lcm_.publish(run_names_.of(channel), bytes.data(), static_cast<unsigned>(bytes.size())) != 0)
+    if (transport::publishEncoded(lcm_, run_names_.of(channel), bytes.data(), bytes.size()) != 0)
       log::warn("could not publish on ", channel, " (", bytes.size(), " bytes)");
   }
 
@@ -120,6 +123,9 @@ class Runner {
     } else if (channel == channels::kRunStatus) {
       beft::run_status_t status{};
       if (decodeMessage(channel, message.data, size, status)) onRunStatus(status);
+    } else if (channel == channels::kFrontier) {
+      beft::frontier_t frontier{};
+      if (decodeMessage(channel, message.data, size, frontier)) frontier_.add(frontier);
     } else if (!snapshot_channel_.empty() && channel == snapshot_channel_) {
       beft::bb_snapshot_t snapshot{};
       if (decodeMessage(channel, message.data, size, snapshot)) onSnapshot(snapshot);
@@ -203,6 +209,7 @@ class Runner {
     if (pending_ && !pending_fired_)
       log::warn("FIRE ", pending_->firing_id, " superseded by ", fire->firing_id, " before it ran");
     pending_ = Firing{fire->expert, fire->transition, fire->tick, fire->utime, fire->firing_id};
+    pending_fire_ = *fire;
     if (heartbeat_) heartbeat_->setState(true, last_fired_id_);
     pending_fired_ = false;
     pending_since_ = Clock::now();
@@ -235,19 +242,29 @@ class Runner {
     if (!pending_ || pending_fired_) return;
     bool ready = false;
     try {
-      ready = expert_.inputsReady(*pending_);
+      // Both asked every time: each asks the transport for what it misses.
+      const bool after_frontier = frontier_.reached(pending_fire_, {inputs_.get(), control_.get()});
+      ready = expert_.inputsReady(*pending_) && after_frontier;
     } catch (const std::exception& e) {
       log::error("inputsReady raised: ", e.what());
       ready = true;
     }
     const double waited_s =
         std::chrono::duration<double>(Clock::now() - pending_since_).count();
+    if (heartbeat_) heartbeat_->setWaiting(!ready);
     if (!ready) {
-      // A datagram may have been lost: the blackboard keeps the latest of each channel.
-      if (waited_s >= options_.refill_after_s && refilled_firing_ != pending_->firing_id && !snapshot_channel_.empty()) {
+      // Loss repair brings what was lost within milliseconds while its
+      // sender lives; the blackboard, which keeps the latest of each
+      // channel, is asked too, again every refill_after_s, for what a dead
+      // sender took with it.
+      if (refilled_firing_ != pending_->firing_id) {
         refilled_firing_ = pending_->firing_id;
+        next_refill_s_ = options_.refill_after_s;
+      }
+      if (waited_s >= next_refill_s_ && !snapshot_channel_.empty()) {
+        next_refill_s_ = waited_s + options_.refill_after_s;
         log::warn("firing ", pending_->firing_id, " (tick ", pending_->tick, "): inputs incomplete after ",
-                  options_.refill_after_s, " s; asking the blackboard for them again");
+                  static_cast<int>(waited_s * 1000), " ms; asking the blackboard for them again");
         requestSnapshot(/*refill=*/true);
       }
       if (waited_s >= next_wait_report_s_) {
@@ -276,6 +293,7 @@ class Runner {
     pending_fired_ = true;
     last_fired_id_ = pending_->firing_id;
     if (heartbeat_) heartbeat_->setState(false, last_fired_id_);
+    listPublished(lcm_, last_done_);
     last_done_.utime = pending_->utime;
     last_done_.expert = options_.process_name;
     last_done_.tick = pending_->tick;
@@ -288,7 +306,7 @@ class Runner {
     resendDone();
   }
 
-  void resendDone() { lcm_.publish(done_channel_, &last_done_); }
+  void resendDone() { transport::publish(lcm_, done_channel_, last_done_); }
 
   // What wakes the expert: its own FIREs, the run's waiting and end, and its
   // snapshot answer. Its inputs go to a socket of their own that nothing
@@ -304,6 +322,8 @@ class Runner {
       }
       input_spec.rules.push_back(transport::channelRule(channel));
     }
+    // What a firing comes after (frontier.hpp), read with the inputs.
+    input_spec.rules.push_back(transport::channelRule(channels::kFrontier.name));
     control_spec.rules.push_back(control::firesFor(options_.process_name));
     // Only an arbiter waiting for heartbeats and the end of the run matter
     // here, not the status of every tick.
@@ -331,8 +351,9 @@ class Runner {
   // arrived live.
   void requestSnapshot(bool refill = false) {
     if (refill) refill_pending_ = true;
-    wire::askBlackboard(lcm_, snapshot_channel_, ++snapshot_queries_,
-                        std::vector<std::string>(read_channels_.begin(), read_channels_.end()));
+    transport::publish(lcm_, wire::runChannel(channels::kBlackboardQuery),
+                       wire::blackboardQuery(snapshot_channel_, ++snapshot_queries_,
+                                             std::vector<std::string>(read_channels_.begin(), read_channels_.end())));
   }
 
   void onSnapshot(const beft::bb_snapshot_t& snapshot) {
@@ -388,6 +409,9 @@ class Runner {
   bool refill_pending_ = false;
   int64_t snapshot_queries_ = 0;
   int64_t refilled_firing_ = -1;          // the firing whose inputs were last asked again
+  Frontier frontier_;                     // what the FIREs come after
+  beft::fire_t pending_fire_{};           // the FIRE of pending_, as received
+  double next_refill_s_ = 0.0;            // when to ask the blackboard again, from the firing's FIRE
   double next_wait_report_s_ = 5.0;
   std::map<std::string, uint64_t> last_live_bytes_;  // hash of the latest message heard per channel
   std::multiset<uint64_t> logged_recently_;  // inputs the resume replayed that may also arrive live
@@ -404,7 +428,18 @@ int runLive(Expert& expert, const LiveOptions& options) {
     log::error("cannot open LCM at ", options.lcm_url);
     return 1;
   }
+  std::unique_ptr<transport::PublisherScope> publishing;
+  try {
+    publishing = transport::attachPublisher(lcm, options.lcm_url, options.process_name);
+  } catch (const std::exception& e) {
+    log::error("cannot publish on ", options.lcm_url, ": ", e.what());
+    return 1;
+  }
   wire::logRunOf(options.lcm_url);
+  // What this process refuses, told to the run: the report counts it (a log keeps no tags).
+  wire::RejectReporter rejects(options.process_name, [&lcm](const beft::process_rejects_t& account) {
+    transport::publish(lcm, wire::runChannel(channels::kProcessRejects), account);
+  });
   Runner runner(expert, options, lcm);
   return runner.run();
 }

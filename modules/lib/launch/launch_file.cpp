@@ -175,13 +175,13 @@ LaunchSpec loadLaunchFile(const std::string& path, const std::map<std::string, s
   return spec;
 }
 
-int64_t runIdOf(const std::string& launch_file, const std::map<std::string, std::string>& args) {
+int64_t launchDescriptionOf(const std::string& launch_file, const std::map<std::string, std::string>& args) {
   std::string description = std::filesystem::path(launch_file).filename().string();
   for (const auto& [name, value] : args) {
     if (name == "lcm_url" || (name.size() >= 5 && name.compare(name.size() - 5, 5, "_host") == 0)) continue;
     description += "\n" + name + "=" + value;
   }
-  return wire::runIdFor(description);
+  return wire::runDescriptionHash(description);
 }
 
 }  // namespace beft::launch

@@ -63,10 +63,12 @@ std::map<std::string, std::string> parseSettings(const std::vector<std::string>&
 // Throws LaunchError("FILE:LINE: what is wrong").
 LaunchSpec loadLaunchFile(const std::string& path, const std::map<std::string, std::string>& overrides);
 
-// The run id of a launch (run_identity.hpp): from the launch file's name and
-// its arguments but the LCM URL and host labels, so the launches of one run
-// on several machines agree on it without being told. Never 0.
-int64_t runIdOf(const std::string& launch_file, const std::map<std::string, std::string>& args);
+// What a launch is (wire::runDescriptionHash): from the launch file's name
+// and its arguments but the LCM URL and host labels, so the launches of one
+// run on several machines describe it alike, and a launch that does not run
+// the arbiter knows the run to join by it (run_adoption.hpp). Not a run id:
+// every launch draws a fresh one. Never 0.
+int64_t launchDescriptionOf(const std::string& launch_file, const std::map<std::string, std::string>& args);
 
 // Splits an argument string on whitespace, honouring "double" and 'single' quotes.
 std::vector<std::string> splitArguments(const std::string& text);

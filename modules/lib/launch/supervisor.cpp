@@ -236,6 +236,10 @@ void stopAll(std::vector<Child>& children, Printer& printer, double grace_s) {
 
 std::string commandLineOf(const ProcessSpec& process, const SupervisorOptions& options) {
   std::string line = options.run_id != 0 ? "BEFT_RUN_ID=" + wire::runIdText(options.run_id) + " " : "";
+  if (!options.key_file.empty()) line += "BEFT_KEY_FILE='" + options.key_file + "' ";
+  // The arbiter's beacons name the launch, so that the other hosts can join the run.
+  if (const std::string origin = wire::runOriginAssignments(options.run_origin); process.is_arbiter && !origin.empty())
+    line += origin + " ";
   line += resolveCommand(process.command, options.bin_dir);
   for (const auto& arg : process.args) line += " " + arg;
   if (process.append_lcm_url) line += " --lcm-url '" + options.lcm_url + "'";
@@ -416,6 +420,10 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
   RunOutcome outcome;
   // Every process of the run stamps its messages with the run id and refuses another run's.
   if (options.run_id != 0) setenv("BEFT_RUN_ID", wire::runIdText(options.run_id).c_str(), 1);
+  // Every process of a keyed run tags what it publishes and refuses what lacks a valid tag.
+  if (!options.key_file.empty()) setenv("BEFT_KEY_FILE", options.key_file.c_str(), 1);
+  else unsetenv("BEFT_KEY_FILE");
+  wire::setRunOriginEnvironment(options.run_origin);
   std::vector<Child> children = childrenToStart(spec, options, printer);
   for (auto& child : children) {
     if (!start(child, printer)) {
@@ -432,6 +440,9 @@ RunOutcome supervise(const LaunchSpec& spec, const SupervisorOptions& options) {
   }
   printer.own("started " + std::to_string(children.size()) + " processes on " + options.lcm_url +
               (options.run_id != 0 ? " as " + wire::describeRun(options.run_id) : ""));
+  if (!options.key_file.empty())
+    printer.own("the run is keyed (" + options.key_file +
+                "): every process tags its messages and refuses those without a valid tag");
   watchChildren(children, options, printer, outcome);
   stopAll(children, printer, options.stop_grace_s);
   if (outcome.message.empty() && outcome.arbiter_exit_code >= 0)

@@ -9,6 +9,7 @@
 
 #include "lib/launch/fault_injection.hpp"
 #include "lib/launch/launch_file.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::launch {
 
@@ -25,6 +26,9 @@ struct SupervisorOptions {
   std::string output_file;            // also append every prefixed line here
   std::vector<PlannedKill> kills;     // fault injection: SIGKILL a process when the run reaches a tick
   int64_t run_id = 0;                 // given to every process as BEFT_RUN_ID (0: none)
+  std::string key_file;               // absolute path of the run's key (run_key.hpp), given to every process as
+                                      // BEFT_KEY_FILE; "": a run without a key (BEFT_KEY_FILE is then unset)
+  wire::RunOrigin run_origin;         // the launch and its time, for the arbiter's beacons (launch_identity.hpp)
 };
 
 struct RunOutcome {

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <tuple>
 
 
 #include <beft/acoustic_percepts_t.hpp>
@@ -12,10 +13,13 @@
 #include <beft/hypothesis_changes_t.hpp>
 #include <beft/obstacle_map_changes_t.hpp>
 #include <beft/obstacle_map_t.hpp>
+#include <beft/process_rejects_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/run_status_t.hpp>
 #include <beft/scene_objects_t.hpp>
 #include <beft/task_stack_t.hpp>
+
+#include <beft/record_status_t.hpp>
 
 #include "lib/common/channels.hpp"
 #include "lib/wire/guarded_decode.hpp"
@@ -88,11 +92,22 @@ class RecordBuilder {
     else if (channel == channels::kObstacleMapChanges) ok = addObstacleMapChanges(event);
     else if (channel == channels::kStopRequest) ok = addStatus(event, record_.stop_reason);
     else if (channel == channels::kRunStatus) ok = addStatus(event, record_.run_status);
+    else if (channel == channels::kProcessRejects) ok = addRejects(event);
+    else if (channel == channels::kRecordStatus) ok = addRecordStatus(event);
     if (!ok) ++record_.rejected[channel];
+  }
+
+  // The recorder's account of its log; the last one holds.
+  bool addRecordStatus(const wire::LogEvent& event) {
+    beft::record_status_t status;
+    if (!wire::guardedDecode(event.data.data(), event.data.size(), status).ok()) return false;
+    record_.record_status = status;
+    return true;
   }
 
   void finish() {
     finishObstacleMap();
+    finishRejects();
     // Ticks in order, the last message of a tick wins (a re-sent tick).
     std::stable_sort(record_.robot.begin(), record_.robot.end(),
                      [](const RobotSample& a, const RobotSample& b) { return a.tick < b.tick; });
@@ -263,7 +278,24 @@ class RecordBuilder {
     return true;
   }
 
+  // Each process instance's last account (a restarted process counts anew).
+  bool addRejects(const wire::LogEvent& event) {
+    process_rejects_t account{};
+    if (!decode(event, account)) return false;
+    last_rejects_[{account.host, account.pid, account.process}] = account;
+    return true;
+  }
+  void finishRejects() {
+    for (const auto& [instance, account] : last_rejects_) {
+      ProcessRejects& total = record_.process_rejects[account.process];
+      total.unauthenticated += account.unauthenticated;
+      total.other_run += account.other_run;
+      total.malformed += account.malformed;
+    }
+  }
+
   RunRecord& record_;
+  std::map<std::tuple<std::string, int32_t, std::string>, process_rejects_t> last_rejects_;  // by host, pid, name
   std::optional<hypotheses_t> keyframe_;  // the last HYPOTHESES
   std::map<int64_t, obstacle_map_t> map_keyframes_;  // the last OBSTACLE_MAPs by tick
   std::optional<obstacle_map_changes_t> last_map_changes_;

@@ -18,6 +18,14 @@ std::string joined(const std::vector<std::string>& items) {
   return text.empty() ? "none" : text;
 }
 
+// "tasks 120, vision 118": who refused how many messages without a valid tag.
+std::string refusedByProcess(const RunReport& report) {
+  std::vector<std::string> items;
+  for (const auto& [process, count] : report.unauthenticated_messages)
+    items.push_back(process + " " + std::to_string(count));
+  return joined(items);
+}
+
 }  // namespace
 
 nlohmann::json toJson(const RunReport& report) {
@@ -84,7 +92,14 @@ nlohmann::json toJson(const RunReport& report) {
   json["rejected_total"] = rejected_total;
   json["log_damage"] = report.log_damage;
   json["log_complete"] = report.log_complete;
+  json["log_messages_lost"] = report.log_messages_lost;
+  json["log_messages_repaired"] = report.log_messages_repaired;
   json["other_run_messages"] = report.other_run_messages;
+  // What the processes of a keyed run refused for want of a valid tag, as each told it.
+  json["unauthenticated_messages"] = nlohmann::json::object();
+  for (const auto& [process, count] : report.unauthenticated_messages)
+    json["unauthenticated_messages"][process] = count;
+  json["unauthenticated_total"] = unauthenticatedTotal(report);
   return json;
 }
 
@@ -120,6 +135,9 @@ void printSummary(const RunReport& report, std::ostream& out) {
   out << "  missed:      " << joined(report.missed) << "\n";
   if (!report.unsettled.empty()) out << "  unsettled:   " << joined(report.unsettled) << "\n";
   if (!report.end_reason.empty()) out << "  ended:       " << report.end_reason << "\n";
+  if (const int64_t refused = unauthenticatedTotal(report); refused > 0)
+    out << "  refused:     " << refused << " message(s) without a valid tag of the run's key ("
+        << refusedByProcess(report) << ")\n";
   out.flags(flags);
 }
 

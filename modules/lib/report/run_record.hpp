@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <beft/record_status_t.hpp>
+
 #include "lib/wire/obstacle_map_codec.hpp"
 
 namespace beft::report {
@@ -79,6 +81,14 @@ struct HeardPosition {
   double true_x = 0, true_y = 0;  // [m]
 };
 
+// What one process said it refused (PROCESS_REJECTS, lib/wire/reject_report.hpp):
+// its last account, the accounts of its restarts added.
+struct ProcessRejects {
+  int64_t unauthenticated = 0;  // in a keyed run: no valid tag of the run's key
+  int64_t other_run = 0;        // another run's, on the same URL
+  int64_t malformed = 0;        // refused by the guard or a payload's reader
+};
+
 struct RunRecord {
   std::string log_path;
   std::string scenario_name;          // from GT_OBJECTS
@@ -102,6 +112,8 @@ struct RunRecord {
   std::map<std::string, int64_t> rejected;  // channel -> messages the guard refused (malformed, foreign type)
   std::string log_damage;                   // the log reader's account of skipped bytes, "" if none
   int64_t other_run_messages = 0;           // valid messages of another run on the same URL, left out
+  std::map<std::string, ProcessRejects> process_rejects;  // by process name, as the processes told it
+  std::optional<beft::record_status_t> record_status;  // the recorder's last account of the log (RECORD_STATUS)
 
   double simTime() const { return robot.empty() ? 0.0 : robot.back().t; }
   double wallSpan() const { return (last_timestamp_us - first_timestamp_us) * 1e-6; }

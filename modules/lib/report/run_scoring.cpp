@@ -51,6 +51,12 @@ bool isSettled(const HypothesisState& hypothesis) {
   return hypothesis.verified || hypothesis.falsified || !hypothesis.heard;
 }
 
+int64_t unauthenticatedTotal(const RunReport& report) {
+  int64_t total = 0;
+  for (const auto& entry : report.unauthenticated_messages) total += entry.second;
+  return total;
+}
+
 std::vector<std::string> applyScenario(RunRecord& record, const scenario::Scenario& scenario) {
   std::vector<std::string> warnings;
   if (!record.scenario_name.empty() && record.scenario_name != scenario.name)
@@ -97,8 +103,20 @@ void scoreRunFigures(const RunRecord& record, const ScoringOptions& options, Run
   report.end_reason = !record.stop_reason.empty() ? record.stop_reason : record.run_status;
   report.rejected_messages = record.rejected;
   report.log_damage = record.log_damage;
+  // Complete: the recorder lived through the run, and its final account says
+  // it holds every message its senders announced (logs older than that
+  // account are taken as complete unless the runner said otherwise).
   report.log_complete = !options.log_incomplete;
   report.other_run_messages = record.other_run_messages;
+  if (record.record_status) {
+    const auto& status = *record.record_status;
+    report.log_complete = report.log_complete && status.final && status.complete;
+    report.log_messages_lost = status.lost;
+    report.log_messages_repaired = status.repaired;
+    report.other_run_messages = std::max(report.other_run_messages, status.other_run_messages);
+  }
+  for (const auto& [process, refused] : record.process_rejects)
+    if (refused.unauthenticated > 0) report.unauthenticated_messages[process] = refused.unauthenticated;
 }
 
 // The person a victim candidate stands for: the one of its id, else the

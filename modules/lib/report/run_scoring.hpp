@@ -87,8 +87,12 @@ struct RunReport {
   std::string end_reason;
   std::map<std::string, int64_t> rejected_messages;  // per channel: malformed or of another type
   std::string log_damage;                             // "" when the log was whole
-  bool log_complete = true;                           // false when the recorder died during the run
+  bool log_complete = true;                           // false when the recorder died during the run, or its
+                                                      // final RECORD_STATUS says a message is missing
+  int64_t log_messages_lost = 0;                      // messages the recorder knows were sent and never got
+  int64_t log_messages_repaired = 0;                  // messages it got only by asking again (loss repair)
   int64_t other_run_messages = 0;                     // another run's messages heard on the URL, left out
+  std::map<std::string, int64_t> unauthenticated_messages;  // per process: refused in a keyed run, no valid tag
   double person_confidence = 0;
 };
 
@@ -97,6 +101,10 @@ struct RunReport {
 std::vector<std::string> applyScenario(RunRecord& record, const scenario::Scenario& scenario);
 
 RunReport scoreRun(const RunRecord& record, const ScoringOptions& options);
+
+// What the processes of a keyed run refused for want of a valid tag, all
+// together (a message refused by three processes counts three times).
+int64_t unauthenticatedTotal(const RunReport& report);
 
 // A hypothesis counts as settled when vision verified or falsified it, or when
 // it was never heard (nothing to verify).

@@ -22,6 +22,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "lib/common/channels.hpp"
+#include "lib/transport/publisher.hpp"
 #include "lib/transport/transport.hpp"
 #include "lib/wire/decoding_handler.hpp"
 #include "lib/wire/run_identity.hpp"
@@ -256,7 +257,7 @@ class WritePort : public WritePortBase {
   WritePort(PortSet& owner, channels::Channel<Message> channel, std::string note = "", Reach reach = Reach::kRun)
       : WritePortBase(owner, channel.name, channel.typeName(), std::move(note), reach) {}
   // LCM's status: 0 when sent.
-  int publish(lcm::LCM& lcm, const Message& message) const { return lcm.publish(wireName(), &message); }
+  int publish(lcm::LCM& lcm, const Message& message) const { return transport::publish(lcm, wireName(), message); }
 };
 
 // Answers on a channel named after the requester (BB_SNAPSHOT_<requester>).
@@ -271,7 +272,7 @@ class AnswerWritePort : public WritePortBase {
   int publish(lcm::LCM& lcm, const std::string& channel, const Message& message) const {
     if (channel.compare(0, prefix_.size(), prefix_) != 0)
       throw std::logic_error("an answer on " + channel + ", not a " + prefix_ + "* channel");
-    return lcm.publish(wire::runChannel(channel), &message);
+    return transport::publish(lcm, wire::runChannel(channel), message);
   }
 
  private:

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
+#include <memory>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -13,6 +14,8 @@
 #include "lib/common/heap_retention.hpp"
 #include "lib/common/lcm_url.hpp"
 #include "lib/common/log.hpp"
+#include "lib/transport/publisher.hpp"
+#include "lib/wire/reject_report.hpp"
 #include "lib/wire/run_identity.hpp"
 
 namespace beft::service {
@@ -88,7 +91,18 @@ int runServiceMain(int argc, char** argv, Service& service) {
     log::error("cannot open LCM at ", lcm_url);
     return 1;
   }
+  std::unique_ptr<transport::PublisherScope> publishing;
+  try {
+    publishing = transport::attachPublisher(lcm, lcm_url, process_name);
+  } catch (const std::exception& e) {
+    log::error("cannot publish on ", lcm_url, ": ", e.what());
+    return 1;
+  }
   if (service.belongsToARun()) wire::logRunOf(lcm_url);
+  // What this process refuses, told to the run: the report counts it (a log keeps no tags).
+  wire::RejectReporter rejects(process_name, [&lcm](const beft::process_rejects_t& account) {
+    transport::publish(lcm, wire::runChannel(channels::kProcessRejects), account);
+  });
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onTerminate);
   Context context{lcm, lcm_url, process_name, g_stop, resume_log};

@@ -90,6 +90,8 @@ std::shared_ptr<Publisher> publisherOf(lcm::LCM& lcm) {
 
 class AttachedPublisher : public PublisherScope {
  public:
+  static constexpr int kLeaveQuietMs = 100, kLeaveLongestMs = 1000;
+
   AttachedPublisher(lcm::LCM& lcm, const std::string& url, const std::string& process)
       : lcm_(lcm), publisher_(publisherOf(lcm)) {
     detail::ReliableSender::Hooks hooks;
@@ -108,6 +110,8 @@ class AttachedPublisher : public PublisherScope {
     publisher_->setReliable(reliable_.get());
   }
   ~AttachedPublisher() override {
+    // Answer for the last messages a moment longer (reliable_sender.hpp).
+    if (reliable_) reliable_->leave(kLeaveQuietMs, kLeaveLongestMs);
     {
       std::lock_guard<std::mutex> lock(publisher_->mutex());
       publisher_->setReliable(nullptr);
@@ -147,5 +151,19 @@ int publishEncoded(lcm::LCM& lcm, const std::string& wire_channel, const void* d
 }
 
 uint64_t senderIdOf(lcm::LCM& lcm) { return publisherOf(lcm)->sender(); }
+
+std::vector<Published> publishedOn(lcm::LCM& lcm) {
+  const auto publisher = publisherOf(lcm);
+  std::lock_guard<std::mutex> lock(publisher->mutex());
+  std::vector<Published> published;
+  for (const auto& channel : publisher->kept().state()) published.push_back({channel.channel, channel.last_sequence});
+  return published;
+}
+
+uint64_t lastPublished(lcm::LCM& lcm, const std::string& wire_channel) {
+  const auto publisher = publisherOf(lcm);
+  std::lock_guard<std::mutex> lock(publisher->mutex());
+  return publisher->kept().nextSequence(wire_channel) - 1;
+}
 
 }  // namespace beft::transport

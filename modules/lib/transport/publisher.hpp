@@ -50,6 +50,16 @@ int publish(lcm::LCM& lcm, const std::string& wire_channel, const Message& messa
 // This process's sender id on `lcm` (as its envelopes carry it).
 uint64_t senderIdOf(lcm::LCM& lcm);
 
+// What this process has published on `lcm`: the last sequence number on each
+// channel (names as sent, with their run suffix).
+struct Published {
+  std::string channel;
+  uint64_t sequence = 0;
+};
+std::vector<Published> publishedOn(lcm::LCM& lcm);
+// The last sequence number published on `wire_channel` (0: nothing yet).
+uint64_t lastPublished(lcm::LCM& lcm, const std::string& wire_channel);
+
 class PublisherScope {
  public:
   virtual ~PublisherScope() = default;

@@ -100,6 +100,15 @@ class Receiver {
   // direct receiver of every channel).
   virtual uint64_t kernelDropped() const { return 0; }
   virtual RepairStats repairStats() const { return {}; }
+  // Whether message `sequence` of `sender` on `channel` (plain name) has been
+  // handed on, or never will be (not a channel taken whole here, or its
+  // sender is gone). When not, it is asked for shortly (it may still be on
+  // its way): drain on as usual and ask again. A FIRE lists what it comes
+  // after (lib/expert/frontier.hpp).
+  virtual bool holds(uint64_t sender, const std::string& channel, uint64_t sequence) {
+    (void)sender, (void)channel, (void)sequence;
+    return true;
+  }
 };
 
 // True when `url` gets the direct receiver; otherwise `why` says why not.

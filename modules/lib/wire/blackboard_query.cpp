@@ -5,10 +5,8 @@
 #include <chrono>
 
 #include <beft/bb_query_t.hpp>
-#include <lcm/lcm-cpp.hpp>
 
 #include "lib/common/channels.hpp"
-#include "lib/wire/run_identity.hpp"
 
 namespace beft::wire {
 
@@ -27,12 +25,6 @@ beft::bb_query_t blackboardQuery(const std::string& answer_channel, int64_t quer
   query.channels = channels;
   query.num_channels = static_cast<int32_t>(query.channels.size());
   return query;
-}
-
-void askBlackboard(lcm::LCM& lcm, const std::string& answer_channel, int64_t query_id,
-                   const std::vector<std::string>& channels) {
-  const beft::bb_query_t query = blackboardQuery(answer_channel, query_id, channels);
-  lcm.publish(runChannel(channels::kBlackboardQuery.name), &query);
 }
 
 }  // namespace beft::wire

@@ -2,10 +2,14 @@
 // log is read, so that logs recorded before a type changed stay readable
 // (log_reader.cpp calls it on every event).
 //
-// Types change by adding new ones, never by editing old ones, with one
-// exception so far: camera_frame_t gained `compression` (COMPRESSION_NONE =
-// the pixels as before) when frames began to travel compressed. An earlier
-// frame is the same bytes without that one, so it is rewritten losslessly.
+// Types change by adding new ones, never by editing old ones, with a few
+// exceptions so far: camera_frame_t gained `compression` (COMPRESSION_NONE =
+// the pixels as before) when frames began to travel compressed;
+// run_beacon_t gained `description` and `started_utime` (0: not known) when
+// the hosts of a distributed run began to agree on a fresh run id; fire_t and
+// done_t gained what a firing comes after and what an expert had published
+// (0 and nothing) when lost messages began to be repaired. An earlier message
+// is the same bytes without those, so it is rewritten losslessly.
 #pragma once
 
 #include <cstdint>

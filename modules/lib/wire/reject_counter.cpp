@@ -9,6 +9,7 @@ void RejectCounter::count(const std::string& channel, const Verdict& verdict, co
   std::lock_guard<std::mutex> lock(mutex_);
   ChannelCount& counts = channels_[channel];
   ++counts.total;
+  ++faults_[verdict.fault];
   ++counts.since_logged;
   if (counts.logged && now - counts.last_logged < std::chrono::seconds(1)) return;
   log::warn("rejected ", counts.since_logged, counts.since_logged == 1 ? " message" : " messages", " on ", channel,
@@ -32,6 +33,17 @@ uint64_t RejectCounter::total() const {
   uint64_t sum = 0;
   for (const auto& entry : channels_) sum += entry.second.total;
   return sum;
+}
+
+uint64_t RejectCounter::totalOf(Fault fault) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto found = faults_.find(fault);
+  return found == faults_.end() ? 0 : found->second;
+}
+
+std::map<Fault, uint64_t> RejectCounter::faultTotals() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return faults_;
 }
 
 uint64_t RejectCounter::linesLogged() const {

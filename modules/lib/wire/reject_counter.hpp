@@ -27,6 +27,8 @@ class RejectCounter {
 
   std::map<std::string, uint64_t> totals() const;  // per channel, since start
   uint64_t total() const;
+  uint64_t totalOf(Fault fault) const;  // refused for that reason, on any channel, since start
+  std::map<Fault, uint64_t> faultTotals() const;  // per reason, since start (one consistent look)
   uint64_t linesLogged() const;
 
  private:
@@ -38,6 +40,7 @@ class RejectCounter {
   };
   mutable std::mutex mutex_;
   std::map<std::string, ChannelCount> channels_;
+  std::map<Fault, uint64_t> faults_;
   uint64_t lines_logged_ = 0;
 };
 

@@ -1,12 +1,17 @@
 #include "lib/wire/run_identity.hpp"
 
+#include <sys/random.h>
+
 #include <atomic>
+#include <cerrno>
 #include <climits>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 
 #include "lib/common/log.hpp"
 
@@ -54,11 +59,56 @@ int64_t parseRunId(const std::string& text) {
   return value;
 }
 
-int64_t runIdFor(const std::string& description) {
+int64_t freshRunId() {
+  while (true) {
+    uint64_t bits = 0;
+    const ssize_t got = getrandom(&bits, sizeof bits, 0);
+    if (got < 0 && errno == EINTR) continue;
+    if (got != static_cast<ssize_t>(sizeof bits))
+      throw std::runtime_error(std::string("cannot draw a run id: getrandom: ") + std::strerror(errno));
+    const int64_t id = static_cast<int64_t>(bits >> 1);  // > 0 as parseRunId and the channel suffix take it
+    if (id != 0) return id;
+  }
+}
+
+int64_t runDescriptionHash(const std::string& description) {
   uint64_t hash = 1469598103934665603ull;  // FNV-1a
   for (unsigned char c : description) hash = (hash ^ c) * 1099511628211ull;
   const int64_t id = static_cast<int64_t>(hash >> 1);  // >= 0
   return id == 0 ? 1 : id;
+}
+
+namespace {
+
+constexpr const char* kDescriptionVariable = "BEFT_RUN_DESCRIPTION";
+constexpr const char* kStartedVariable = "BEFT_RUN_STARTED";
+
+int64_t numberIn(const char* name, int base) {
+  const char* text = std::getenv(name);
+  if (text == nullptr || *text == '\0') return 0;
+  char* end = nullptr;
+  errno = 0;
+  const long long value = std::strtoll(text, &end, base);
+  return errno == 0 && *end == '\0' && value > 0 ? value : 0;  // malformed: not given
+}
+
+}  // namespace
+
+RunOrigin runOrigin() { return {numberIn(kDescriptionVariable, 16), numberIn(kStartedVariable, 10)}; }
+
+void setRunOriginEnvironment(const RunOrigin& origin) {
+  if (origin.description != 0) setenv(kDescriptionVariable, runIdText(origin.description).c_str(), 1);
+  else unsetenv(kDescriptionVariable);
+  if (origin.started_utime != 0) setenv(kStartedVariable, std::to_string(origin.started_utime).c_str(), 1);
+  else unsetenv(kStartedVariable);
+}
+
+std::string runOriginAssignments(const RunOrigin& origin) {
+  std::string text;
+  if (origin.description != 0) text += std::string(kDescriptionVariable) + "=" + runIdText(origin.description);
+  if (origin.started_utime != 0)
+    text += (text.empty() ? "" : " ") + std::string(kStartedVariable) + "=" + std::to_string(origin.started_utime);
+  return text;
 }
 
 bool isUrlWideChannel(std::string_view channel) {

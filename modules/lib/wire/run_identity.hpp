@@ -4,10 +4,12 @@
 // transport adds the suffix to what a process publishes and takes and
 // removes it from what it hands on, so a process never hears another run's
 // messages, the kernel filter drops them unread, and the recorder, which
-// hears everything, keeps them apart. A user who shares an LCM URL by
-// mistake (isolation by port stays the default) gets two runs that ignore
-// each other, and their arbiters say so (BEFT_RUNS beacons). Run id 0 (a
-// process started by hand without one) uses the plain names, as before.
+// hears everything, keeps them apart. Every launch draws a fresh id (the
+// other hosts of a distributed run adopt it: lib/launch/run_adoption.hpp).
+// A user who shares an LCM URL by mistake (isolation by port stays the
+// default) gets two runs that ignore each other, and their arbiters say so
+// (BEFT_RUNS beacons). Run id 0 (a process started by hand without one) uses
+// the plain names, as before.
 // The message types stay as they were: old logs read and replay as ever.
 #pragma once
 
@@ -29,9 +31,30 @@ void setRunId(int64_t id);
 // the channels show it ("1f3a", "0x1f3a"). Throws std::invalid_argument.
 int64_t parseRunId(const std::string& text);
 
-// A run id derived from what defines the run (launch file and arguments):
-// the same description gives the same id on every machine. Never 0.
-int64_t runIdFor(const std::string& description);
+// A fresh run id for a launch: random (getrandom), so that no two launches,
+// today's and yesterday's of the same launch file included, share one, and a
+// replayed log's messages are never taken as the run's own. Never 0.
+// Throws std::runtime_error when the kernel gives no random bytes.
+int64_t freshRunId();
+
+// A hash of what defines a run (launch file and arguments): the same
+// description gives the same value on every machine, which is how the hosts
+// of a distributed run recognise each other's run (run_beacon_t.description).
+// Never 0.
+int64_t runDescriptionHash(const std::string& description);
+
+// What the launcher says of the run besides its id, for the arbiter's
+// beacons (run_beacon_t): which launch it is and when it began. Set in every
+// process's environment (BEFT_RUN_DESCRIPTION: runDescriptionHash in hex;
+// BEFT_RUN_STARTED: wall time in us); zeros where not given.
+struct RunOrigin {
+  int64_t description = 0;    // runDescriptionHash of the launch file and its arguments
+  int64_t started_utime = 0;  // wall time of the launch [us]
+};
+RunOrigin runOrigin();
+void setRunOriginEnvironment(const RunOrigin& origin);  // for the processes started after
+// "BEFT_RUN_DESCRIPTION=... BEFT_RUN_STARTED=..." as a command line sets them ("" for zeros).
+std::string runOriginAssignments(const RunOrigin& origin);
 
 // "VISION@1f3a..." in run `run_id`; the plain name for run 0 and for
 // URL-wide channels (BEFT_RUNS, LCM's own).

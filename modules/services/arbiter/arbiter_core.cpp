@@ -172,6 +172,9 @@ void ArbiterCore::onHeartbeat(const beft::heartbeat_t& heartbeat) {
     expert.reported_silent = false;
     log::info("expert ", expert.name, " sends heartbeats again");
   }
+  // Alive and waiting for its inputs (lost on the way and being repaired) is
+  // not hung: the firing's timeout counts from the last such heartbeat.
+  if (expert.running && heartbeat.state == "waiting") expert.running->last_waiting = expert.last_heartbeat;
   if (state_ == RunState::Waiting) {
     highest_reported_firing_id_ = std::max(highest_reported_firing_id_, heartbeat.last_firing_id);
     if (first && started_) {
@@ -194,6 +197,7 @@ void ArbiterCore::onDone(const beft::done_t& done) {
   }
   const int e = expertIndex(done.expert);
   if (e >= 0 && experts_[e].running && experts_[e].running->firing_id == done.firing_id) {
+    notePublished(done);
     completeFiring(e, done);
     step("done " + done.expert);
     return;
@@ -340,7 +344,11 @@ ArbiterCore::Deadlines ArbiterCore::deadlinesOf(int e) const {
                                          : std::max(expert.last_heartbeat, running.attempt_start);
   Deadlines due;
   due.resend = running.last_send + config_.resend_period_s;
-  due.timeout = running.attempt_start + transition.policy.timeout_s;
+  // An expert that said it waits for its inputs is given up by its
+  // heartbeat (dead), not by the timeout (hung), which counts from after
+  // that heartbeat's own deadline.
+  const double waiting_until = running.last_waiting > 0.0 ? running.last_waiting + heartbeatTimeout(transition) : 0.0;
+  due.timeout = std::max(running.attempt_start, waiting_until) + transition.policy.timeout_s;
   due.heartbeat = heartbeat_reference + heartbeatTimeout(transition);
   return due;
 }
@@ -416,10 +424,36 @@ bool ArbiterCore::endingAtTickEnd() const {
   return stop_requested_ || (config_.max_ticks > 0 && tick_ + 1 >= config_.max_ticks);
 }
 
+void ArbiterCore::notePublished(const beft::done_t& done) {
+  if (done.sender == 0) return;
+  const std::size_t count = std::min(done.published_channels.size(), done.published_sequences.size());
+  for (std::size_t i = 0; i < count; ++i)
+    frontier_changes_[{done.sender, done.published_channels[i]}] = done.published_sequences[i];
+}
+
+// Before a firing starts: what has been published since the last FRONTIER
+// message goes out, and the firing comes after it.
+void ArbiterCore::sendFrontierChanges() {
+  if (frontier_changes_.empty()) return;
+  beft::frontier_t frontier;
+  frontier.utime = 0;
+  for (const auto& [where, sequence] : frontier_changes_) {
+    frontier.senders.push_back(where.first);
+    frontier.channels.push_back(where.second);
+    frontier.sequences.push_back(sequence);
+  }
+  frontier.count = static_cast<int32_t>(frontier.senders.size());
+  frontier_changes_.clear();
+  const FrontierMark sent = output_.sendFrontier(frontier);
+  if (sent.sequence > 0) frontier_ = sent;
+}
+
 void ArbiterCore::startFiring(int transition, int attempt, int64_t tick, bool send_now) {
   const int e = transition_expert_[transition];
   if (attempt == 1) consumeInputs(net_.transitions[transition], marking_);
+  sendFrontierChanges();
   Running running;
+  running.after = frontier_;
   running.transition = transition;
   running.firing_id = next_firing_id_++;
   running.tick = tick;
@@ -433,8 +467,10 @@ void ArbiterCore::startFiring(int transition, int attempt, int64_t tick, bool se
 
 void ArbiterCore::sendFire(int e) {
   Running& running = *experts_[e].running;
-  const beft::fire_t fire = control::makeFire(experts_[e].name, net_.transitions[running.transition].id,
-                                              running.tick, utimeOfTick(running.tick), running.firing_id);
+  beft::fire_t fire = control::makeFire(experts_[e].name, net_.transitions[running.transition].id, running.tick,
+                                        utimeOfTick(running.tick), running.firing_id);
+  fire.after_sender = running.after.sender;
+  fire.after_frontier = running.after.sequence;
   running.last_send = clock_.now();
   output_.sendFire(fire);
 }

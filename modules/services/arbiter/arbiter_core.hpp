@@ -19,6 +19,7 @@
 
 #include <beft/done_t.hpp>
 #include <beft/fire_t.hpp>
+#include <beft/frontier_t.hpp>
 #include <beft/heartbeat_t.hpp>
 #include <beft/marking_t.hpp>
 #include <beft/run_status_t.hpp>
@@ -57,10 +58,22 @@ struct FiringRecord {
 };
 
 // Where the core's decisions go: live, LCM and the run's log; in tests, a recorder.
+// A FRONTIER message as sent: the arbiter's sender id and its number.
+struct FrontierMark {
+  int64_t sender = 0;
+  int64_t sequence = 0;  // 0: none sent
+};
+
 class ArbiterOutput {
  public:
   virtual ~ArbiterOutput() = default;
   virtual void sendFire(const beft::fire_t& fire) = 0;
+  // Publishes what the experts fired so far had published (the FIREs that
+  // follow come after it); returns its mark, {0, 0} where nothing tracks it.
+  virtual FrontierMark sendFrontier(const beft::frontier_t& frontier) {
+    (void)frontier;
+    return {};
+  }
   virtual void sendMarking(const beft::marking_t& marking) = 0;
   virtual void sendRunStatus(const beft::run_status_t& status) = 0;
   virtual void firingEnded(const FiringRecord& record) = 0;
@@ -156,6 +169,8 @@ class ArbiterCore {
     int attempt = 1;
     double attempt_start = 0.0;  // this attempt's first FIRE
     double last_send = 0.0;
+    double last_waiting = 0.0;   // last heartbeat saying it waits for its inputs
+    FrontierMark after;          // the FRONTIER message this firing comes after
   };
   struct ExpertState {
     std::string name;
@@ -216,6 +231,12 @@ class ArbiterCore {
   int64_t tick_ = 0;
   int64_t next_firing_id_ = 1;
   std::vector<int> unsent_fires_;  // experts started in this step, FIRE not sent yet
+  // What the experts' DONEs said they had published since the last FRONTIER
+  // message ((sender, channel) -> last sequence number), and that message.
+  std::map<std::pair<int64_t, std::string>, int64_t> frontier_changes_;
+  FrontierMark frontier_;
+  void notePublished(const beft::done_t& done);
+  void sendFrontierChanges();
   int64_t highest_reported_firing_id_ = 0;
   double run_start_ = 0.0;
   double startup_deadline_ = 0.0;

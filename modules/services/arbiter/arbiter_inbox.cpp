@@ -32,6 +32,10 @@ void ArbiterInbox::announce(lcm::LCM& lcm, int64_t tick) {
   beacon.host = gethostname(host, sizeof host - 1) == 0 ? host : "unknown";
   beacon.pid = static_cast<int32_t>(getpid());
   beacon.tick = tick;
+  // Which launch this run is: the other hosts of a distributed run join it by that.
+  const wire::RunOrigin origin = wire::runOrigin();
+  beacon.description = origin.description;
+  beacon.started_utime = origin.started_utime;
   beacons_out_.publish(lcm, beacon);
 }
 

@@ -8,6 +8,8 @@
 #include <sched.h>
 
 #include "lib/common/log.hpp"
+#include "lib/transport/publisher.hpp"
+#include "lib/wire/run_identity.hpp"
 
 namespace beft::arbiter {
 
@@ -21,6 +23,17 @@ double SteadyClock::now() const {
 }
 
 void LcmArbiterOutput::sendFire(const beft::fire_t& fire) { outlets_.fire.publish(lcm_, fire); }
+
+FrontierMark LcmArbiterOutput::sendFrontier(const beft::frontier_t& frontier) {
+  beft::frontier_t stamped = frontier;
+  stamped.utime = std::chrono::duration_cast<std::chrono::microseconds>(
+                      std::chrono::system_clock::now().time_since_epoch())
+                      .count();
+  outlets_.frontier.publish(lcm_, stamped);
+  const std::string sent_on = wire::runChannel(channels::kFrontier.name);
+  return {static_cast<int64_t>(transport::senderIdOf(lcm_)),
+          static_cast<int64_t>(transport::lastPublished(lcm_, sent_on))};
+}
 
 void LcmArbiterOutput::sendMarking(const beft::marking_t& marking) { outlets_.marking.publish(lcm_, marking); }
 

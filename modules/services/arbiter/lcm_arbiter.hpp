@@ -32,6 +32,8 @@ struct ArbiterOutlets : service::PortSet {
   service::WritePort<beft::marking_t> marking{*this, channels::kMarking, "after every step"};
   service::WritePort<beft::run_status_t> run_status{*this, channels::kRunStatus,
                                                     "at start, every tick, and at the end"};
+  service::WritePort<beft::frontier_t> frontier{*this, channels::kFrontier,
+                                                "before a firing, when DONEs told of new messages"};
 };
 
 // Publishes the core's messages on their ports and writes the firing log.
@@ -39,6 +41,7 @@ class LcmArbiterOutput : public ArbiterOutput {
  public:
   LcmArbiterOutput(lcm::LCM& lcm, const ArbiterOutlets& outlets, FiringLog* firing_log);
   void sendFire(const beft::fire_t& fire) override;
+  FrontierMark sendFrontier(const beft::frontier_t& frontier) override;
   void sendMarking(const beft::marking_t& marking) override;
   void sendRunStatus(const beft::run_status_t& status) override;
   void firingEnded(const FiringRecord& record) override;

@@ -87,7 +87,7 @@ int RecordProcess::serve(service::Context& context) {
     log::info("recording ", context.lcm_url, " into ", options_.path,
               options_.camera.keepsAll() ? "" : " (camera frames: " + options_.camera.text() + ")");
     recordUntilStopped(recorder, context.stop);
-    recorder.drain(100, 3000);
+    recorder.drain(100, 2000);  // within the launcher's 3 s grace to stop
     recorder.writeStatus(true);
     recorder.flush();
     reportEnd(recorder);

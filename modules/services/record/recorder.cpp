@@ -30,7 +30,16 @@ Recorder::Recorder(lcm::LCM& lcm, const std::string& url, RecordOptions options,
   // Listening before the file appears: whoever waits for the file to start
   // publishing (the launcher) loses nothing.
   source_ = transport::openReceiver(lcm, url, taken, 64, options_.queue_capacity);
-  take_ = [this](const transport::Message& message) {
+  // A launched run's recorder keeps its own run (and the URL-wide beacons)
+  // and counts the rest: a replayed log played at full speed on the URL
+  // neither fills the disk nor holds the recorder back.
+  const int64_t own_run = wire::runId();
+  take_ = [this, own_run](const transport::Message& message) {
+    if (own_run != 0 && wire::splitRunChannel(message.channel).run_id != own_run &&
+        !wire::isUrlWideChannel(message.channel)) {
+      ++other_run_messages_;
+      return;
+    }
     if (has_exclude_ && std::regex_match(message.channel.begin(), message.channel.end(), exclude_)) return;
     if (!options_.camera.keeps(message.channel, message.data, message.size)) {
       ++camera_frames_left_out_;
@@ -102,6 +111,7 @@ void Recorder::writeStatus(bool final) {
   status.lost = static_cast<int64_t>(repairs.lost + (final ? repairs.outstanding : 0));
   status.joined_late = static_cast<int64_t>(repairs.joined_late);
   status.kernel_dropped = static_cast<int64_t>(source_->kernelDropped());
+  status.other_run_messages = other_run_messages_;
   status.complete = status.lost == 0 && repairs.outstanding == 0 && repairs.waiting == 0 && status.joined_late == 0;
   status.final = final;
   std::vector<uint8_t> bytes(static_cast<std::size_t>(status.getEncodedSize()));

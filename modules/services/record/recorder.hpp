@@ -1,6 +1,7 @@
 // Writes what one LCM instance hears into an LCM log file (lcm-logger's
 // format: lcm-logplayer plays it), in arrival order, with the receive time as
-// the event timestamp.
+// the event timestamp: in a launched run, its own run's messages and the
+// URL-wide beacons; another run's are counted (RECORD_STATUS), not written.
 //
 // Written for lockstep runs, which hand a burst of large messages to every
 // process each tick: lcm-logger 1.3 keeps LCM's default 30 queued messages per
@@ -85,6 +86,7 @@ class Recorder {
   std::regex exclude_;
   bool has_exclude_ = false;
   int64_t events_ = 0, bytes_ = 0;
+  int64_t other_run_messages_ = 0;  // another run's, left out
   int64_t camera_frames_left_out_ = 0;
 };
 

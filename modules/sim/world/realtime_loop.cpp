@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <memory>
 #include <thread>
 
 #include <lcm/lcm-cpp.hpp>
 
 #include "lib/common/channels.hpp"
 #include "lib/common/log.hpp"
+#include "lib/transport/publisher.hpp"
 #include "lib/wire/run_identity.hpp"
 
 namespace beft::world {
@@ -23,7 +25,7 @@ class LcmPublisher : public beft::expert::Output {
  public:
   explicit LcmPublisher(lcm::LCM& lcm) : lcm_(lcm) {}
   void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
-    if (lcm_.publish(wire::runChannel(channel), bytes.data(), static_cast<unsigned>(bytes.size())) != 0) {
+    if (transport::publishEncoded(lcm_, wire::runChannel(channel), bytes.data(), bytes.size()) != 0) {
       log::warn("could not publish on ", channel, " (", bytes.size(), " bytes)");
     }
   }
@@ -65,6 +67,13 @@ int runRealtime(WorldExpert& world, const RealtimeOptions& options) {
   lcm::LCM lcm(options.lcm_url);
   if (!lcm.good()) {
     log::error("cannot open LCM at ", options.lcm_url);
+    return 1;
+  }
+  std::unique_ptr<transport::PublisherScope> publishing;
+  try {
+    publishing = transport::attachPublisher(lcm, options.lcm_url, world.name());
+  } catch (const std::exception& e) {
+    log::error("cannot publish on ", options.lcm_url, ": ", e.what());
     return 1;
   }
   CommandListener listener(world);

@@ -20,6 +20,7 @@
 #include "lib/common/lcm_url.hpp"
 #include "lib/common/log.hpp"
 #include "lib/petri/pnml_reader.hpp"
+#include "lib/transport/publisher.hpp"
 #include "lib/wire/guarded_decode.hpp"
 #include "lib/wire/run_identity.hpp"
 
@@ -84,9 +85,8 @@ void benchCore(const Net& net, int64_t ticks) {
               runStateName(core.state()));
 }
 
-// Stands in for every expert of the net on its own LCM instance.
-void respond(const std::string& url, const std::vector<std::string>& experts, std::atomic<bool>& stop) {
-  lcm::LCM lcm(url);
+// Stands in for every expert of the net on an LCM instance of its own.
+void respond(lcm::LCM& lcm, const std::vector<std::string>& experts, std::atomic<bool>& stop) {
   struct Handler {
     lcm::LCM* lcm;
     bool ended = false;
@@ -95,7 +95,7 @@ void respond(const std::string& url, const std::vector<std::string>& experts, st
       beft::fire_t fire{};
       if (!beft::wire::decodeFrom(channel, buffer->data, buffer->data_size, fire)) return;
       const beft::done_t done = doneFor(fire);
-      self->lcm->publish(beft::wire::runChannel(beft::channels::kDone), &done);
+      beft::transport::publish(*self->lcm, beft::wire::runChannel(beft::channels::kDone), done);
     }
     static void onStatus(const lcm::ReceiveBuffer* buffer, const std::string& channel, Handler* self) {
       beft::run_status_t status{};
@@ -112,7 +112,7 @@ void respond(const std::string& url, const std::vector<std::string>& experts, st
     if (std::chrono::steady_clock::now() >= next_heartbeat) {
       for (const auto& name : experts) {
         const beft::heartbeat_t beat = heartbeatFor(name);
-        lcm.publish(beft::wire::runChannel(beft::channels::kHeartbeat), &beat);
+        beft::transport::publish(lcm, beft::wire::runChannel(beft::channels::kHeartbeat), beat);
       }
       next_heartbeat += std::chrono::milliseconds(200);
     }
@@ -126,8 +126,11 @@ void benchLcm(const Net& net, int64_t ticks, const std::string& url) {
     std::printf("over LCM:    cannot open %s\n", url.c_str());
     return;
   }
+  const auto publishing = beft::transport::attachPublisher(lcm, url, "bench-arbiter");
+  lcm::LCM experts_lcm(url);
+  const auto experts_publishing = beft::transport::attachPublisher(experts_lcm, url, "bench-arbiter-experts");
   std::atomic<bool> stop{false};
-  std::thread responder(respond, url, net.experts(), std::ref(stop));
+  std::thread responder(respond, std::ref(experts_lcm), net.experts(), std::ref(stop));
   SteadyClock clock;
   ArbiterOutlets outlets;
   LcmArbiterOutput output(lcm, outlets, nullptr);
@@ -186,7 +189,12 @@ int bench(const Options& o) {
   std::printf("net %s: %zu experts, %zu transitions\n", o.net_path.c_str(), net.experts().size(),
               net.transitions.size());
   benchCore(net, o.core_ticks);
-  benchLcm(net, o.lcm_ticks, o.lcm_url);
+  try {
+    benchLcm(net, o.lcm_ticks, o.lcm_url);
+  } catch (const std::exception& e) {
+    std::printf("over LCM:    %s\n", e.what());
+    return 1;
+  }
   return 0;
 }
 

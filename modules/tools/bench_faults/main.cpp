@@ -1,126 +1,54 @@
-// beft-bench-faults: yard.xml clean, then with malformed traffic at 3000
-// messages/s on its own channels, with another run's messages on its URL,
-// and with every expert killed once at a random tick; each compared with
-// the clean run message by message.
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
+// beft-bench-faults: yard.xml clean, then under faults, each run compared
+// with the clean run message by message: malformed traffic at 3000
+// messages/s on its own channels, another run's messages on its URL, every
+// expert killed once at a random tick, the clean run's log played on the URL
+// at full speed, a keyed run with an unkeyed sender beside it, and the
+// experts on a second host (a network namespace) over a link that loses 0,
+// 1, 5 and 10 % of the datagrams each way.
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <functional>
 #include <optional>
 #include <random>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "lib/common/command_line.hpp"
 #include "tools/bench_faults/data_messages.hpp"
-#include "lib/common/own_bin_dir.hpp"
-#include "lib/wire/run_identity.hpp"
+#include "tools/bench_faults/lossy_link_rows.hpp"
+#include "tools/bench_faults/one_host_rows.hpp"
+#include "tools/bench_faults/outcome.hpp"
+#include "tools/bench_faults/yard_run.hpp"
 
 namespace {
 
-struct Outcome {
-  std::string name;
-  bool completed = false;
-  std::string identical;
-  long long rejected = 0, other_run = 0, restarts = 0;
-  double ticks_per_s = 0;
-  int64_t run_id = 0;  // as beft run printed it: other runs share the log
-};
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
-}
-
-std::string lineAfter(const std::string& text, const std::string& prefix) {
-  const auto at = text.find(prefix);
-  return at == std::string::npos ? "" : text.substr(at + prefix.size(), text.find('\n', at) - at - prefix.size());
-}
-
-// One yard run in `dir`; `during` runs beside it once its URL and run id are printed.
-Outcome runYard(const std::string& name, const std::string& dir, const std::string& args, int ticks,
-                const std::function<pid_t(const std::string& url, const std::string& run_id)>& during) {
-  const std::string bin = beft::ownBinDir();
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  const pid_t runner = fork();
-  if (runner == 0) {
-    const std::string command = bin + "/beft-run " + BEFT_SOURCE_DIR + "/scenarios/yard.xml --max-ticks " +
-                                std::to_string(ticks) + " --out " + dir + " " + args + " > " + dir + "/out.txt 2>&1";
-    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  pid_t helper = -1;
-  if (during) {
-    std::string url, run_id;
-    for (int i = 0; i < 500 && (url.empty() || run_id.empty()); ++i) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-      const std::string out = readFile(dir + "/out.txt");
-      url = lineAfter(out, "[run] LCM ");
-      url = url.substr(0, url.find(';'));
-      const std::string started = lineAfter(out, "[launch] started ");
-      if (const auto at = started.find(" as run "); at != std::string::npos) run_id = started.substr(at + 8);
-    }
-    helper = during(url, run_id);
-  }
-  int status = 0;
-  waitpid(runner, &status, 0);
-  if (helper > 0) {
-    kill(helper, SIGTERM);
-    waitpid(helper, nullptr, 0);
-  }
-  Outcome outcome;
-  outcome.name = name;
-  const std::string started = lineAfter(readFile(dir + "/out.txt"), "[launch] started ");
-  if (const auto at = started.find(" as run "); at != std::string::npos)
-    outcome.run_id = beft::wire::parseRunId(started.substr(at + 8));
-  try {
-    const auto report = nlohmann::json::parse(readFile(dir + "/report.json"));
-    outcome.completed = report.value("completed", false);
-    outcome.rejected = report.value("rejected_total", 0LL);
-    outcome.other_run = report.value("other_run_messages", 0LL);
-    outcome.ticks_per_s = report.value("ticks_per_s", 0.0);
-  } catch (const std::exception&) {
-  }
-  const std::string processes = readFile(dir + "/processes.log");
-  for (auto at = processes.find(": restarting ("); at != std::string::npos; at = processes.find(": restarting (", at + 1))
-    ++outcome.restarts;
-  return outcome;
-}
-
-pid_t startInjector(const std::string& args) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const std::string command = "exec " + beft::ownBinDir() + "/beft-inject " + args + " > /dev/null 2>&1";
-    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  return pid;
-}
+using beft::bench::Outcome;
 
 struct Options {
   int ticks = 560;
   uint64_t seed = 1;
   std::string work = "/tmp/beft_bench_faults";
+  std::vector<double> losses = {0, 0.01, 0.05, 0.10};
 };
 
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app("Runs yard.xml clean and under faults and compares every data message with the clean run: "
                "malformed traffic at 3000 messages/s on the run's channels, another run's messages on its URL, "
-               "every expert SIGKILLed once at a random tick (restarted, resuming from the log).",
+               "every expert SIGKILLed once at a random tick (restarted, resuming from the log), the clean run's "
+               "log played on the URL at full speed (lcm-logplayer), a keyed run (--key) with an unkeyed sender "
+               "of its own messages, and the experts on a second host (a network namespace; needs root and "
+               "iptables) over a link that drops each --loss of the datagrams each way. For each: completed, "
+               "data messages as the clean run, messages refused, the recorder's loss repair (missed at first, "
+               "repaired, lost; whether its log is complete) and ticks/s; then the ticks/s at 5 % loss over "
+               "those at 0 % loss on the same two hosts.",
                "beft-bench-faults");
   app.add_option("--ticks", o.ticks, "ticks per run")->capture_default_str();
   app.add_option("--seed", o.seed, "seed of the kill ticks")->capture_default_str();
   app.add_option("--work", o.work, "folder for the runs")->capture_default_str();
+  app.add_option("--loss", o.losses, "shares of the datagrams the two hosts' link drops each way, one run each")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   return beft::parseCommandLine(app, argc, argv);
 }
 
@@ -134,40 +62,24 @@ std::string killEveryExpert(uint64_t seed, int ticks) {
   return kills;
 }
 
-// The clean run, then each fault run compared with it message by message.
-std::vector<Outcome> runCleanAndFaulty(const Options& o, const std::string& kills) {
-  std::vector<Outcome> outcomes;
-  const std::string& work = o.work;
-  const std::string clean_dir = work + "/clean";
-  outcomes.push_back(runYard("clean", clean_dir, "", o.ticks, nullptr));
-  const auto clean = beft::bench::dataMessages(clean_dir + "/run.lcmlog", outcomes.back().run_id);
-  auto compare = [&](Outcome outcome, const std::string& dir) {
-    outcome.identical = beft::bench::compareRuns(clean, dir + "/run.lcmlog", outcome.run_id);
-    outcomes.push_back(outcome);
-  };
-  outcomes.back().identical = "(reference)";
-  compare(runYard("malformed 3000/s", work + "/malformed", "", o.ticks,
-                  [&](const std::string& url, const std::string& run) {
-                    return startInjector(clean_dir + "/run.lcmlog --lcm-url '" + url +
-                                         "' --rate 3000 --damage malformed --into-run " + run);
-                  }),
-          work + "/malformed");
-  compare(runYard("another run", work + "/other", "", o.ticks,
-                  [&](const std::string& url, const std::string&) {
-                    return startInjector(clean_dir + "/run.lcmlog --lcm-url '" + url +
-                                         "' --rate 3000 --as-is --into-run 1234");
-                  }),
-          work + "/other");
-  compare(runYard("every expert killed", work + "/killed", kills, o.ticks, nullptr), work + "/killed");
-  return outcomes;
+// The seed beft-run said it ran with ("[run] scenario ...: ..., seed N, ...").
+uint64_t seedOfRun(const std::string& output) {
+  const std::string line = beft::bench::lineAfter(output, "[run] scenario ");
+  const auto at = line.find(", seed ");
+  return at == std::string::npos ? 0 : std::strtoull(line.c_str() + at + 7, nullptr, 10);
 }
 
-void printOutcomes(const std::vector<Outcome>& outcomes, const std::string& kills, const std::string& work) {
-  std::printf("%-22s %-9s %-40s %9s %9s %8s %9s\n", "yard.xml", "completed", "data messages as the clean run",
-              "rejected", "other run", "restarts", "ticks/s");
+void printAll(const std::vector<Outcome>& outcomes, const std::string& kills, const std::string& work) {
+  beft::bench::printOutcomes(outcomes);
+  std::printf("missed, repaired, lost: the recorder's loss repair (messages it missed at first and asked for, "
+              "got again, never got); log full: its final account of the log\n");
   for (const auto& o : outcomes)
-    std::printf("%-22s %-9s %-40s %9lld %9lld %8lld %9.0f\n", o.name.c_str(), o.completed ? "yes" : "no",
-                o.identical.c_str(), o.rejected, o.other_run, o.restarts, o.ticks_per_s);
+    if (o.loss >= 0 && o.skipped.empty())
+      std::printf("%s: %llu datagrams dropped by the link\n", o.name.c_str(),
+                  static_cast<unsigned long long>(o.dropped_datagrams));
+  const std::string ratio = beft::bench::speedRatioLine(outcomes, 0.05, 0.0);
+  std::printf("%s\n", ratio.empty() ? "ticks/s at 5 % loss / at 0 % loss: not measured (a row is missing)"
+                                     : ratio.c_str());
   std::printf("kills:%s\nruns in %s\n", kills.c_str(), work.c_str());
 }
 
@@ -177,7 +89,14 @@ int main(int argc, char** argv) {
   Options o;
   if (const auto code = parseOptions(argc, argv, o)) return *code;
   const std::string kills = killEveryExpert(o.seed, o.ticks);
-  const std::vector<Outcome> outcomes = runCleanAndFaulty(o, kills);
-  printOutcomes(outcomes, kills, o.work);
+  const std::string clean_dir = o.work + "/clean";
+  std::vector<Outcome> outcomes = {beft::bench::runYard("clean", clean_dir, "", o.ticks, nullptr)};
+  outcomes.back().identical = "(reference)";
+  const auto clean = beft::bench::dataMessages(clean_dir + "/run.lcmlog", outcomes.back().run_id);
+  for (auto& row : beft::bench::runOnOneHost({o.work, clean_dir + "/run.lcmlog", o.ticks, kills}, clean))
+    outcomes.push_back(row);
+  const uint64_t seed = seedOfRun(beft::bench::readFile(clean_dir + "/out.txt"));
+  for (auto& row : beft::bench::runOverLossyLink({o.losses, o.work, seed, o.ticks}, clean)) outcomes.push_back(row);
+  printAll(outcomes, kills, o.work);
   return 0;
 }

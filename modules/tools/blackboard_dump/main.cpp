@@ -15,6 +15,7 @@
 #include "blackboard/snapshot_client.hpp"
 #include "lib/common/command_line.hpp"
 #include "lib/common/lcm_url.hpp"
+#include "lib/transport/publisher.hpp"
 
 namespace {
 
@@ -33,6 +34,7 @@ int dump(const std::string& lcm_url, const std::vector<std::string>& channels, d
     std::fprintf(stderr, "beft blackboard dump: cannot open LCM at %s\n", lcm_url.c_str());
     return 1;
   }
+  const auto publishing = beft::transport::attachPublisher(lcm, lcm_url, "beft-blackboard-dump");
   const std::string requester = "dump_" + std::to_string(getpid());
   const auto start = std::chrono::steady_clock::now();
   const auto snapshot = beft::blackboard::requestSnapshot(lcm, requester, channels, timeout_s);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <random>
 #include <thread>
@@ -12,6 +13,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "lib/common/command_line.hpp"
+#include "lib/transport/publisher.hpp"
 #include "lib/wire/log_reader.hpp"
 #include "tools/inject/message_damage.hpp"
 #include "lib/wire/run_identity.hpp"
@@ -83,12 +85,12 @@ uint64_t publishUntilStopped(lcm::LCM& lcm, const std::vector<beft::inject::Dama
     const auto& original = events[next];
     next = (next + 1) % events.size();
     if (o.as_is) {
-      lcm.publish(original.channel, original.data.data(), static_cast<unsigned>(original.data.size()));
+      beft::transport::publishEncoded(lcm, original.channel, original.data.data(), original.data.size());
     } else {
       const auto kind = kinds[random() % kinds.size()];
       const auto& other = events[random() % events.size()];
       const auto damaged = beft::inject::damage(original.channel, original.data, kind, other, random);
-      lcm.publish(damaged.channel, damaged.data.data(), static_cast<unsigned>(damaged.data.size()));
+      beft::transport::publishEncoded(lcm, damaged.channel, damaged.data.data(), damaged.data.size());
     }
     ++sent;
     std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(period * static_cast<double>(sent)));
@@ -117,6 +119,13 @@ int main(int argc, char** argv) {
   lcm::LCM lcm(o.lcm_url);
   if (!lcm.good()) {
     std::fprintf(stderr, "beft-inject: error: cannot open LCM at %s\n", o.lcm_url.c_str());
+    return 1;
+  }
+  std::unique_ptr<beft::transport::PublisherScope> publishing;
+  try {
+    publishing = beft::transport::attachPublisher(lcm, o.lcm_url, "beft-inject");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "beft-inject: error: cannot publish on %s: %s\n", o.lcm_url.c_str(), e.what());
     return 1;
   }
   std::signal(SIGINT, onSignal);

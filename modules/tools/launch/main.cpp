@@ -11,18 +11,20 @@
 #include "lib/common/command_line.hpp"
 #include "lib/launch/free_port.hpp"
 #include "lib/launch/launch_file.hpp"
+#include "lib/launch/launch_identity.hpp"
+#include "lib/launch/run_key.hpp"
 #include "lib/common/lcm_url.hpp"
 #include "lib/common/own_bin_dir.hpp"
-#include "lib/wire/run_identity.hpp"
 #include "lib/launch/supervisor.hpp"
 
 namespace {
 
 struct Options {
-  std::string file, lcm_url, record, run_id;
+  std::string file, lcm_url, record, run_id, key_file;
   std::string record_camera = "all";
   std::vector<std::string> sets, except;
   std::string host = "local";
+  double join_timeout_s = 30;
   bool new_port = false;
 };
 
@@ -47,8 +49,18 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       ->needs(record)
       ->check(beft::record::CameraSampling::problemWith);
   app.add_option("--run-id", o.run_id,
-                 "the run's id, stamped on every message; default: derived from the launch file and its "
-                 "arguments (not --host), so the launches of one run on several machines agree");
+                 "the run's id (hex), stamped on every message; 0: none, the plain channel names. Default: a fresh "
+                 "random id where the arbiter runs; on another --host, the id the arbiter announces on the URL for "
+                 "the same launch file and arguments (not --host)");
+  app.add_option("--key", o.key_file,
+                 "the run's key (./beft key new FILE; default: BEFT_KEY_FILE): every process tags its messages with "
+                 "it and refuses those without a valid tag (another program's, a replayed log's); every host "
+                 "of the run needs the same key file")
+      ->check(CLI::ExistingFile);
+  app.add_option("--join-timeout", o.join_timeout_s,
+                 "on a host without the arbiter: seconds to wait for the arbiter's run to announce itself")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   return std::nullopt;
 }
@@ -59,6 +71,20 @@ std::string lcmUrlOf(const Options& o) {
   if (!o.new_port) return beft::defaultLcmUrl();
   const int port = beft::launch::findFreeUdpPort();
   return port < 0 ? "" : beft::lcmUrlForPort(port);
+}
+
+beft::launch::LaunchIdentityRequest identityRequest(const Options& o, const std::string& lcm_url) {
+  beft::launch::LaunchIdentityRequest request;
+  request.launch_file = o.file;
+  request.given_run_id = o.run_id;
+  request.host = o.host;
+  request.lcm_url = lcm_url;
+  request.join_timeout_s = o.join_timeout_s;
+  request.say = [](const std::string& line) {
+    std::printf("[launch] %s\n", line.c_str());
+    std::fflush(stdout);
+  };
+  return request;
 }
 
 int launch(const Options& o) {
@@ -76,14 +102,17 @@ int launch(const Options& o) {
   try {
     auto overrides = beft::launch::parseSettings(o.sets);
     overrides["lcm_url"] = options.lcm_url;
+    options.key_file = beft::launch::runKeyFile(o.key_file);
     const auto spec = beft::launch::loadLaunchFile(o.file, overrides);
-    options.run_id = o.run_id.empty() ? beft::launch::runIdOf(o.file, spec.args) : beft::wire::parseRunId(o.run_id);
+    const auto identity = beft::launch::identifyLaunch(spec, identityRequest(o, options.lcm_url));
+    options.run_id = identity.run_id;
+    options.run_origin = identity.origin;
     const auto outcome = beft::launch::supervise(spec, options);
     std::printf("[launch] %s\n", outcome.message.c_str());
     if (outcome.interrupted) return 130;
     if (outcome.arbiter_ran) return outcome.arbiter_exit_code == 0 ? 0 : 1;
     return 0;
-  } catch (const std::exception& e) {  // LaunchError, a bad --run-id
+  } catch (const std::exception& e) {  // LaunchError: a bad file, --run-id or key, no run to join
     std::fprintf(stderr, "[launch] error: %s\n", e.what());
     return 2;
   }

@@ -70,6 +70,10 @@ beft::report::RunRecord readRecord(const Options& o) {
   if (record.other_run_messages > 0)
     std::cerr << "beft-report: warning: " << record.other_run_messages
               << " message(s) of another run on the same LCM URL were left out\n";
+  for (const auto& [process, refused] : record.process_rejects)
+    if (refused.unauthenticated > 0)
+      std::cerr << "beft-report: warning: " << process << " refused " << refused.unauthenticated
+                << " message(s) without a valid tag of the run's key\n";
   if (!record.log_damage.empty())
     std::cerr << "beft-report: warning: " << o.log_path << ": " << record.log_damage << "\n";
   if (record.robot.empty()) std::cerr << "beft-report: warning: " << o.log_path << " has no ROBOT_STATE\n";

@@ -18,10 +18,11 @@
 #include "lib/common/command_line.hpp"
 #include "lib/launch/free_port.hpp"
 #include "lib/launch/launch_file.hpp"
+#include "lib/launch/launch_identity.hpp"
 #include "lib/common/lcm_url.hpp"
 #include "lib/scenario/load_scenario.hpp"
 #include "lib/common/own_bin_dir.hpp"
-#include "lib/wire/run_identity.hpp"
+#include "lib/launch/run_key.hpp"
 #include "lib/launch/run_parameters.hpp"
 #include "lib/launch/supervisor.hpp"
 
@@ -64,7 +65,7 @@ struct Options {
   std::string acoustics = "ground_truth";
   std::string planner = "pf-geodesic";
   std::vector<std::string> except, sets, kills;
-  std::string run_id;
+  std::string run_id, key_file;
   std::string record_camera = "all";
   long long seed = -1, max_ticks = -1;  // -1: the scenario's seed, duration / dt
   bool verbose = false, report = true, ssr = false;
@@ -97,8 +98,14 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--except", o.except, "do not start this process; start it by hand (repeatable)");
   app.add_option("--set", o.sets, "NAME=VALUE for another <arg> of the launch file");
   app.add_option("--run-id", o.run_id,
-                 "the run's id, stamped on every message (default: derived from the launch file and its "
-                 "arguments, so a rerun writes the same messages); another run on the same LCM URL is refused");
+                 "the run's id (hex), stamped on every message (default: a fresh random one, so that no other "
+                 "run's messages, a replayed log's included, are taken for this run's; beft diff and the "
+                 "digests leave the id out); another run on the same LCM URL is refused");
+  app.add_option("--key", o.key_file,
+                 "the run's key (./beft key new FILE; default: BEFT_KEY_FILE): every process tags its messages with "
+                 "it and refuses those without a valid tag (another program's, a replayed log's); report.json "
+                 "counts what each process refused")
+      ->check(CLI::ExistingFile);
   app.add_option("--kill", o.kills,
                  "NAME@TICK: SIGKILL this process once the run reaches the tick, to see it restarted and resume "
                  "from the run's log (fault injection; repeatable)");
@@ -136,6 +143,20 @@ std::map<std::string, std::string> launchArguments(const Options& o, const beft:
   if (o.ssr) args["ssr"] = "1";
   for (const auto& [name, value] : beft::launch::parseSettings(o.sets)) args[name] = value;
   return args;
+}
+
+// The run's id: --run-id, else a fresh one (this host runs the arbiter
+// unless a --set places it elsewhere; then the id it announces on the URL).
+beft::launch::LaunchIdentityRequest identityRequest(const Options& o, const std::string& lcm_url) {
+  beft::launch::LaunchIdentityRequest request;
+  request.launch_file = o.launch_file;
+  request.given_run_id = o.run_id;
+  request.lcm_url = lcm_url;
+  request.say = [](const std::string& line) {
+    std::printf("[run] %s\n", line.c_str());
+    std::fflush(stdout);
+  };
+  return request;
 }
 
 // report.json and the pictures, by beft-report; its exit code.
@@ -181,12 +202,15 @@ int runMission(Options& o) {
   options.record_camera = o.record_camera;
   options.quiet_children = !o.verbose;
   options.output_file = o.out_dir + "/processes.log";
-  std::map<std::string, std::string> args;
+  beft::launch::LaunchSpec spec;
   try {
     for (const auto& kill : o.kills) options.kills.push_back(beft::launch::parsePlannedKill(kill));
-    args = launchArguments(o, scenario, options.lcm_url);
-    options.run_id = o.run_id.empty() ? beft::launch::runIdOf(o.launch_file, args) : beft::wire::parseRunId(o.run_id);
-  } catch (const std::exception& e) {  // LaunchError, a bad --run-id
+    options.key_file = beft::launch::runKeyFile(o.key_file);
+    spec = beft::launch::loadLaunchFile(o.launch_file, launchArguments(o, scenario, options.lcm_url));
+    const auto identity = beft::launch::identifyLaunch(spec, identityRequest(o, options.lcm_url));
+    options.run_id = identity.run_id;
+    options.run_origin = identity.origin;
+  } catch (const std::exception& e) {  // LaunchError: a bad launch file, --run-id or key
     std::fprintf(stderr, "[run] error: %s\n", e.what());
     return 2;
   }
@@ -199,7 +223,6 @@ int runMission(Options& o) {
   beft::launch::RunOutcome outcome;
   const auto start = std::chrono::steady_clock::now();
   try {
-    const beft::launch::LaunchSpec spec = beft::launch::loadLaunchFile(o.launch_file, args);
     if (!beft::launch::writeRunParameters(spec, o.out_dir + "/" + beft::launch::kRunParametersFile))
       std::fprintf(stderr, "[run] warning: cannot write %s/%s: a replay will need --param\n", o.out_dir.c_str(),
                    beft::launch::kRunParametersFile);

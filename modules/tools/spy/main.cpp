@@ -7,6 +7,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -17,10 +18,12 @@
 
 #include "lib/common/command_line.hpp"
 #include "blackboard/channel_filter.hpp"
+#include "lib/wire/envelope.hpp"
 #include "lib/wire/message_decoder.hpp"
 #include "lib/wire/message_check.hpp"
 #include "blackboard/store.hpp"
 #include "lib/common/lcm_url.hpp"
+#include "lib/transport/publisher.hpp"
 #include "tools/spy/traffic_table.hpp"
 
 namespace {
@@ -48,15 +51,16 @@ class Spy {
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
     if (beft::blackboard::isLcmInternalChannel(channel)) return;
     try {
-      const int size = static_cast<int>(buffer->data_size);
+      // The message as its sender encoded it: the transport's envelope left out.
+      const std::size_t payload = beft::wire::payloadSize(static_cast<const uint8_t*>(buffer->data), buffer->data_size);
+      const int size = static_cast<int>(payload);
       std::string type = beft::blackboard::typeNameOf(buffer->data, size);
       if (type.empty()) type = "unknown type";
       // What a process of the run would refuse is shown as such, never decoded.
       const beft::wire::Verdict verdict =
-          beft::wire::MessageRules::beftTypes().checkForChannel(channel, buffer->data, buffer->data_size);
+          beft::wire::MessageRules::beftTypes().checkForChannel(channel, buffer->data, payload);
       if (!verdict.ok()) type = "refused (" + verdict.text() + ")";
-      table_.record(channel, type, buffer->data_size, secondsSince(start_),
-                    beft::blackboard::encodedUtime(buffer->data, size));
+      table_.record(channel, type, payload, secondsSince(start_), beft::blackboard::encodedUtime(buffer->data, size));
       if (!decoded_.count(channel)) return;
       std::string text = channel + "  " + type + "  " + beft::spy::formatBytes(size);
       if (const auto utime = beft::blackboard::encodedUtime(buffer->data, size))
@@ -170,6 +174,13 @@ int spyOn(const Options& o) {
   lcm::LCM lcm(o.lcm_url);
   if (!lcm.good()) {
     std::fprintf(stderr, "beft spy: cannot open LCM at %s\n", o.lcm_url.c_str());
+    return 1;
+  }
+  std::unique_ptr<beft::transport::PublisherScope> publishing;  // beside every LCM instance, though the spy only listens
+  try {
+    publishing = beft::transport::attachPublisher(lcm, o.lcm_url, "beft-spy");
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "beft spy: cannot publish on %s: %s\n", o.lcm_url.c_str(), error.what());
     return 1;
   }
   const auto start = Clock::now();

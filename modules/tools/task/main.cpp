@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <optional>
 
 #include <beft/task_command_t.hpp>
@@ -17,6 +18,7 @@
 #include "lib/common/channels.hpp"
 #include "lib/wire/guarded_decode.hpp"
 #include "lib/common/lcm_url.hpp"
+#include "lib/transport/publisher.hpp"
 #include "lib/wire/run_discovery.hpp"
 #include "lib/wire/run_identity.hpp"
 #include "tools/task/task_cli.hpp"
@@ -80,7 +82,7 @@ int sendCommand(lcm::LCM& lcm, beft::task_command_t command, bool wait, double t
     };
     stack_subscription = lcm.subscribeFunction(beft::wire::runChannel(beft::channels::kTaskStack), &Handler<beft::task_stack_t>::handle, &stack_handler);
   }
-  if (lcm.publish(beft::wire::runChannel(beft::channels::kTaskCommand), &command) != 0) {
+  if (beft::transport::publish(lcm, beft::wire::runChannel(beft::channels::kTaskCommand), command) != 0) {
     std::fprintf(stderr, "beft-task: error: could not publish on %s\n", beft::channels::kTaskCommand.name);
     return 1;
   }
@@ -264,11 +266,16 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "beft-task: error: cannot open LCM at %s\n", o.lcm_url.c_str());
     return 1;
   }
+  std::unique_ptr<beft::transport::PublisherScope> publishing;
   try {
+    publishing = beft::transport::attachPublisher(lcm, o.lcm_url, "beft-task");
     if (!o.run_id.empty()) beft::wire::setRunId(beft::wire::parseRunId(o.run_id));
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "beft-task: error: %s\n", e.what());
     return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "beft-task: error: cannot publish on %s: %s\n", o.lcm_url.c_str(), e.what());
+    return 1;
   }
   const std::string why = o.run_id.empty() ? beft::wire::adoptTheRunHeard(lcm, std::min(o.timeout_s, 2.0)) : "";
   if (!why.empty()) {

@@ -8,9 +8,11 @@
 
 #include <beft/camera_frame_t.hpp>
 #include <beft/fire_t.hpp>
+#include <beft/run_beacon_t.hpp>
 
 #include "lib/wire/earlier_layouts.hpp"
 #include "lib/wire/guarded_decode.hpp"
+#include "lib/wire/lcm_schema.hpp"
 #include "lib/wire/log_reader.hpp"
 
 using namespace beft::wire;
@@ -88,4 +90,44 @@ TEST(EarlierLayouts, ShortOrForeignBytesAreLeftAlone) {
   const std::vector<uint8_t> original = bytes;
   EXPECT_FALSE(upgradeEarlierLayout(bytes));
   EXPECT_EQ(bytes, original);
+}
+
+// A beacon from before `description` and `started_utime` (an arbiter of an
+// older build, in its log): the same bytes without them, read as today's with
+// both 0, "not known", so a launcher never takes it for a run of its launch.
+TEST(EarlierLayouts, AnOldRunBeaconGainsAnUnknownDescriptionAndStart) {
+  LcmTypeSet earlier;
+  earlier.addSchema("run_beacon_t.lcm (earlier)", R"(package beft;
+struct run_beacon_t
+{
+    int64_t utime;
+    int64_t run_id;
+    string  host;
+    int32_t pid;
+    int64_t tick;
+}
+)");
+  earlier.finalize();
+  beft::run_beacon_t today{};
+  today.utime = 1'700'000'000'000'000;
+  today.run_id = 0x1f3a;
+  today.host = "sim";
+  today.pid = 42;
+  today.tick = 17;
+  std::vector<uint8_t> expected(today.getEncodedSize());
+  today.encode(expected.data(), 0, static_cast<int>(expected.size()));
+  std::vector<uint8_t> old(expected.begin(), expected.end() - 16);  // without the two new members
+  const uint64_t old_fingerprint = earlier.fingerprint("beft.run_beacon_t");
+  ASSERT_NE(old_fingerprint, fingerprintOf(expected));
+  for (int i = 0; i < 8; ++i) old[i] = static_cast<uint8_t>(old_fingerprint >> (56 - 8 * i));
+
+  ASSERT_TRUE(upgradeEarlierLayout(old));
+  EXPECT_EQ(old, expected);
+  beft::run_beacon_t read{};
+  ASSERT_TRUE(guardedDecode(old.data(), old.size(), read).ok());
+  EXPECT_EQ(read.run_id, 0x1f3a);
+  EXPECT_EQ(read.tick, 17);
+  EXPECT_EQ(read.description, 0);
+  EXPECT_EQ(read.started_utime, 0);
+  EXPECT_FALSE(upgradeEarlierLayout(old));  // today's layout is left as it is
 }

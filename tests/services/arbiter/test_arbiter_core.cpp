@@ -37,6 +37,7 @@ struct Script {
   double starts_at = 0.0;          // first heartbeat
   double dies_at = kNever;         // silent from then on
   int64_t reported_firing_id = -1; // last_firing_id in its heartbeats before it runs anything
+  bool waits_for_inputs = false;   // its heartbeats say "waiting" while it runs a firing
 };
 
 // One entry of the protocol as seen by the arbiter: a new firing id sent, or a firing ended.
@@ -168,7 +169,7 @@ class Simulation : public ArbiterOutput {
       beat.host = "sim";
       const MockExpert& mock = mocks_[name];
       beat.last_firing_id = mock.last_finished >= 0 ? mock.last_finished : scripts_[name].reported_firing_id;
-      beat.state = mock.running >= 0 ? "firing" : "idle";
+      beat.state = mock.running < 0 ? "idle" : scripts_[name].waits_for_inputs ? "waiting" : "firing";
       schedule(clock_.t + kLatency, [this, beat] { core_.onHeartbeat(beat); });
       scheduleHeartbeat(name, clock_.t + kHeartbeatPeriod);
     });
@@ -592,6 +593,40 @@ TEST(ArbiterCore, ADeadExpertIsFoundByItsHeartbeat) {
   EXPECT_EQ(vision[0].action, "retry");
   EXPECT_EQ(vision[1].action, "fail");
   EXPECT_LT(vision[0].start_s + vision[0].duration_s, death + 1.0);
+}
+
+TEST(ArbiterCore, AnExpertAliveAndWaitingForItsInputsIsNotTimedOut) {
+  // Vision waits 4 s for inputs lost on the way (timeout 1 s), saying so in
+  // its heartbeats: the firing goes on and ends with its DONE, not a retry.
+  Simulation sim(chainNet({{"world", ""},
+                           {"vision", "<timeout>1</timeout><on_timeout>retry</on_timeout><retries>1</retries>"}}),
+                 testConfig(3));
+  sim.expert("vision").duration = [](const beft::fire_t& f) { return f.tick == 1 ? 4.0 : 0.001; };
+  sim.expert("vision").waits_for_inputs = true;
+  sim.run();
+  ASSERT_EQ(sim.core().state(), RunState::Finished) << sim.core().message();
+  EXPECT_EQ(sim.core().stats().retries, 0);
+  EXPECT_EQ(sim.runs("vision", 1), 1);
+
+  // The same wait without saying so is a hung expert: timed out and retried.
+  Simulation silent(chainNet({{"world", ""},
+                              {"vision", "<timeout>1</timeout><on_timeout>retry</on_timeout><retries>1</retries>"}}),
+                    testConfig(3));
+  silent.expert("vision").duration = [](const beft::fire_t& f) { return f.tick == 1 && f.firing_id == 4 ? 4.0 : 0.001; };
+  silent.run();
+  EXPECT_EQ(silent.core().stats().retries, 1);
+}
+
+TEST(ArbiterCore, AnExpertThatWaitsAndDiesIsFoundByItsHeartbeat) {
+  Simulation sim(chainNet({{"world", ""},
+                           {"vision", "<timeout>1</timeout><on_timeout>fail</on_timeout>"}}),
+                 testConfig(3));
+  sim.expert("vision").duration = [](const beft::fire_t& f) { return f.tick == 1 ? 60.0 : 0.001; };
+  sim.expert("vision").waits_for_inputs = true;
+  sim.expert("vision").dies_at = 5.0;
+  sim.run();
+  ASSERT_EQ(sim.core().state(), RunState::Failed);
+  EXPECT_TRUE(contains(sim.core().message(), "no heartbeat")) << sim.core().message();
 }
 
 TEST(ArbiterCore, ReportsADeadlockAtOnce) {

@@ -12,6 +12,7 @@
 #include <beft/fire_t.hpp>
 #include <beft/heartbeat_t.hpp>
 #include <beft/marking_t.hpp>
+#include <beft/run_beacon_t.hpp>
 #include <beft/run_status_t.hpp>
 
 #include <algorithm>
@@ -386,6 +387,32 @@ TEST(ArbiterProcess, TwoArbitersOnOneUrlBothSaySoWithinASecond) {
   EXPECT_TRUE(contains(first.err(), "another run (run b2")) << first.err();
   EXPECT_TRUE(contains(second.err(), "another run (run a1")) << second.err();
   EXPECT_TRUE(contains(first.err(), "shares this LCM URL with this run (run a1)")) << first.err();
+}
+
+// The beacon names the launch the run is of, as the launcher set it, so that
+// a host of a distributed run without the arbiter can join the run.
+TEST(ArbiterProcess, ItsBeaconNamesTheLaunchAndWhenItStarted) {
+  const std::string url = uniqueUrl(8);
+  lcm::LCM lcm(url);
+  ASSERT_TRUE(lcm.good());
+  struct Heard {
+    std::vector<beft::run_beacon_t> beacons;
+    void on(const lcm::ReceiveBuffer*, const std::string&, const beft::run_beacon_t* beacon) {
+      beacons.push_back(*beacon);
+    }
+  } heard;
+  lcm.subscribe(std::string(beft::channels::kRunBeacons.name), &Heard::on, &heard);
+  std::vector<std::string> args = {"/usr/bin/env", "BEFT_RUN_ID=c3", "BEFT_RUN_DESCRIPTION=5eed",
+                                   "BEFT_RUN_STARTED=1700000000000000"};
+  for (const auto& arg : arbiterArgs(url, kNets + "experts_only.pnml", {})) args.push_back(arg);
+  args.back() = "1.5";  // --startup-timeout: it waits for experts that never come
+  Child arbiter(args);
+  for (int i = 0; i < 400 && heard.beacons.empty(); ++i) lcm.handleTimeout(50);  // twice a second; at most 20 s
+  ASSERT_TRUE(arbiter.waitFor(20.0));
+  ASSERT_FALSE(heard.beacons.empty()) << arbiter.err();
+  EXPECT_EQ(heard.beacons[0].run_id, 0xc3);
+  EXPECT_EQ(heard.beacons[0].description, 0x5eed);
+  EXPECT_EQ(heard.beacons[0].started_utime, 1'700'000'000'000'000);
 }
 
 TEST(ArbiterProcess, StopRequestEndsTheRunAfterTheTick) {

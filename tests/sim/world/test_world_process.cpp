@@ -35,6 +35,7 @@
 #include "lib/camera/frame_decoding.hpp"
 #include "lib/common/lcm_url.hpp"
 #include "lib/scenario/load_scenario.hpp"
+#include "lib/wire/envelope.hpp"
 #include "sim/world/world_simulation.hpp"
 
 extern char** environ;
@@ -115,7 +116,8 @@ class WorldProcess {
   std::string output_file_;
 };
 
-// Everything heard on the world's channels, DONE and HEARTBEAT, as raw bytes.
+// Everything heard on the world's channels, DONE and HEARTBEAT, as the world
+// encoded it (the transport's envelope left out).
 class Listener {
  public:
   explicit Listener(lcm::LCM& lcm) {
@@ -128,7 +130,7 @@ class Listener {
   }
   void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
     const auto* bytes = static_cast<const uint8_t*>(buffer->data);
-    messages[channel].emplace_back(bytes, bytes + buffer->data_size);
+    messages[channel].emplace_back(bytes, bytes + beft::wire::payloadSize(bytes, buffer->data_size));
   }
   template <typename Message>
   std::vector<Message> decoded(const std::string& channel) const {

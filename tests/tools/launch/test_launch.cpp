@@ -13,6 +13,7 @@
 
 #include "lib/launch/free_port.hpp"
 #include "lib/launch/launch_file.hpp"
+#include "lib/launch/run_key.hpp"
 #include "lib/launch/run_parameters.hpp"
 #include "lib/launch/supervisor.hpp"
 
@@ -345,6 +346,60 @@ TEST(Supervisor, SaysWhenTheRecorderCannotStart) {
   EXPECT_EQ(outcome.message, "the recorder did not start");
   EXPECT_NE(access(marker.c_str(), F_OK), 0) << "a process started without a recorder";
   EXPECT_NE(readAll(options.output_file).find("cannot be written"), std::string::npos) << readAll(options.output_file);
+}
+
+// A keyed run: every process gets the key file's absolute path as
+// BEFT_KEY_FILE, the launcher says the run is keyed and never prints the key.
+TEST(Supervisor, GivesEveryProcessTheRunsKeyFileAndSaysTheRunIsKeyed) {
+  TempDir dir;
+  const std::string key_text = "00112233445566778899aabbccddeeff00112233445566778899aabbccddeeff\n";
+  const std::string key = dir.write("run.key", key_text);
+  const auto file = dir.write("run.xml", R"(<launch>
+  <process name="worker" command="sh" args="-c 'echo worker has $BEFT_KEY_FILE'" lcm_url="0"/>
+  <process name="arbiter" command="sh" args="-c 'sleep 0.3; echo arbiter has $BEFT_KEY_FILE'" role="arbiter" lcm_url="0"/>
+</launch>)");
+  SupervisorOptions options;
+  options.quiet_children = true;
+  options.output_file = dir.path + "/out.log";
+  options.key_file = runKeyFile(key);
+  EXPECT_EQ(options.key_file, key);
+  supervise(loadLaunchFile(file, {}), options);
+  const std::string log = readAll(options.output_file);
+  EXPECT_NE(log.find("[worker] worker has " + key), std::string::npos) << log;
+  EXPECT_NE(log.find("[arbiter] arbiter has " + key), std::string::npos) << log;
+  EXPECT_NE(log.find("the run is keyed (" + key + ")"), std::string::npos) << log;
+  EXPECT_EQ(log.find(key_text.substr(0, 16)), std::string::npos) << "the key itself was printed";
+  EXPECT_NE(commandLineOf(loadLaunchFile(file, {}).processes[0], options).find("BEFT_KEY_FILE='" + key + "'"),
+            std::string::npos);
+
+  // Without a key, no process inherits one from the launcher's environment.
+  options.key_file.clear();
+  supervise(loadLaunchFile(file, {}), options);
+  const std::string unkeyed = readAll(options.output_file).substr(log.size());
+  EXPECT_NE(unkeyed.find("[worker] worker has\n"), std::string::npos) << unkeyed;
+  EXPECT_EQ(unkeyed.find("the run is keyed"), std::string::npos) << unkeyed;
+}
+
+TEST(RunKey, IsTheOptionElseTheEnvironmentMadeAbsoluteAndChecked) {
+  TempDir dir;
+  const std::string key = dir.write("run.key", std::string(32, 'k'));
+  const std::string short_key = dir.write("short.key", "0011");
+  unsetenv("BEFT_KEY_FILE");
+  EXPECT_EQ(runKeyFile(""), "");
+  ASSERT_EQ(chdir(dir.path.c_str()), 0);
+  EXPECT_EQ(runKeyFile("run.key"), key);  // relative to where the launcher runs
+  EXPECT_EQ(std::string(getenv("BEFT_KEY_FILE")), key);  // the launcher's own LCM instances use it too
+  setenv("BEFT_KEY_FILE", key.c_str(), 1);
+  EXPECT_EQ(runKeyFile(""), key);
+  EXPECT_THROW(runKeyFile(short_key), LaunchError);
+  EXPECT_THROW(runKeyFile(dir.path + "/no_such.key"), LaunchError);
+  try {
+    runKeyFile(dir.path + "/no_such.key");
+  } catch (const LaunchError& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such.key"), std::string::npos) << e.what();
+  }
+  unsetenv("BEFT_KEY_FILE");
+  ASSERT_EQ(chdir("/"), 0);
 }
 
 TEST(FreePort, ReturnsAPortInRange) {

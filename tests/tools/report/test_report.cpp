@@ -17,6 +17,7 @@
 #include <beft/fire_t.hpp>
 #include <beft/hypotheses_t.hpp>
 #include <beft/hypothesis_changes_t.hpp>
+#include <beft/process_rejects_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/run_status_t.hpp>
 #include <beft/scene_objects_t.hpp>
@@ -407,6 +408,58 @@ TEST_F(ReportFromLog, SummaryNamesTheVictimAndTheMiss) {
   EXPECT_NE(text.str().find("victim1"), std::string::npos);
   EXPECT_NE(text.str().find("missed:      victim2"), std::string::npos);
   EXPECT_NE(text.str().find("ticks/s"), std::string::npos);
+}
+
+process_rejects_t rejects(const std::string& process, int32_t pid, int64_t unauthenticated, int64_t malformed) {
+  process_rejects_t account{};
+  account.process = process;
+  account.pid = pid;
+  account.host = "here";
+  account.unauthenticated = unauthenticated;
+  account.malformed = malformed;
+  return account;
+}
+
+// The processes' own accounts of what they refused (a log keeps no tags):
+// the last of each process instance, a restart's added, in report.json and
+// the summary.
+TEST_F(ReportFromLog, CountsWhatEachProcessRefusedWithoutAValidTag) {
+  {
+    lcm::LogFile log(log_path, "a");
+    ASSERT_TRUE(log.good());
+    const int64_t at = 1'700'000'000'000'000 + kTicks * 10'000 + 10;
+    write(log, channels::kProcessRejects, rejects("tasks", 100, 5, 0), at);
+    write(log, channels::kProcessRejects, rejects("tasks", 100, 40, 1), at + 1);  // the same process, later
+    write(log, channels::kProcessRejects, rejects("tasks", 200, 2, 0), at + 2);   // restarted
+    write(log, channels::kProcessRejects, rejects("vision", 300, 7, 0), at + 3);
+    write(log, channels::kProcessRejects, rejects("world", 400, 0, 9), at + 4);  // malformed only
+  }
+  const RunRecord record = readRunLog(log_path);
+  ASSERT_EQ(record.process_rejects.count("tasks"), 1u);
+  EXPECT_EQ(record.process_rejects.at("tasks").unauthenticated, 42);
+  EXPECT_EQ(record.process_rejects.at("tasks").malformed, 1);
+  EXPECT_EQ(record.process_rejects.at("world").malformed, 9);
+  const RunReport report = scoreRun(record, ScoringOptions{});
+  const nlohmann::json json = toJson(report);
+  EXPECT_EQ(json["unauthenticated_total"], 49);
+  EXPECT_EQ(json["unauthenticated_messages"]["tasks"], 42);
+  EXPECT_EQ(json["unauthenticated_messages"]["vision"], 7);
+  EXPECT_FALSE(json["unauthenticated_messages"].contains("world"));
+  std::ostringstream text;
+  printSummary(report, text);
+  EXPECT_NE(text.str().find("refused:     49 message(s) without a valid tag of the run's key (tasks 42, vision 7)"),
+            std::string::npos)
+      << text.str();
+}
+
+TEST_F(ReportFromLog, AnUnkeyedRunRefusedNothingForWantOfATag) {
+  const RunReport report = scoreRun(readRunLog(log_path), ScoringOptions{});
+  const nlohmann::json json = toJson(report);
+  EXPECT_EQ(json["unauthenticated_total"], 0);
+  EXPECT_TRUE(json["unauthenticated_messages"].empty());
+  std::ostringstream text;
+  printSummary(report, text);
+  EXPECT_EQ(text.str().find("refused:"), std::string::npos);
 }
 
 TEST(ReportErrors, ANonLogFileIsRefusedWithItsName) {

@@ -1,5 +1,6 @@
 // beft-spy as a real process on its own UDP port: the table lists the
-// channel with its type and count, and --channel prints messages decoded.
+// channel with its type and count, and --channel prints messages decoded,
+// with the size their sender encoded (a BEFT process's envelope left out).
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
@@ -22,6 +23,7 @@
 #include <beft/robot_state_t.hpp>
 
 #include "lib/common/lcm_url.hpp"
+#include "lib/transport/publisher.hpp"
 
 extern char** environ;
 
@@ -54,7 +56,9 @@ TEST(SpyProcess, TableAndDecodedMessagesOfAChannel) {
   ASSERT_EQ(posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ), 0);
   posix_spawn_file_actions_destroy(&actions);
 
-  // Publish until the spy stops by itself (it was told --duration 1.5).
+  // Publish until the spy stops by itself (it was told --duration 1.5):
+  // ROBOT_STATE as a BEFT process does, with an envelope; OTHER_CHANNEL as a
+  // program outside the project does.
   lcm::LCM publisher(url);
   ASSERT_TRUE(publisher.good());
   beft::robot_state_t state{};
@@ -65,7 +69,7 @@ TEST(SpyProcess, TableAndDecodedMessagesOfAChannel) {
   pid_t finished = 0;
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
   while ((finished = waitpid(pid, &status, WNOHANG)) == 0 && std::chrono::steady_clock::now() < give_up) {
-    publisher.publish("ROBOT_STATE", &state);
+    beft::transport::publish(publisher, "ROBOT_STATE", state);
     publisher.publish("OTHER_CHANNEL", &state);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }

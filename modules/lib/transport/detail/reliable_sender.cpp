@@ -73,7 +73,24 @@ ReliableSender::~ReliableSender() {
   close(wake_fd_);
 }
 
+void ReliableSender::leave(int quiet_ms, int longest_ms) {
+  if (!ever_published_) return;  // nothing anybody could ask for
+  const int64_t start = nowUs();
+  last_request_us_ = start;
+  leaving_ = true;
+  const uint64_t one = 1;
+  if (write(wake_fd_, &one, sizeof one) < 0) {
+    // The thread sees leaving_ within its longest wait.
+  }
+  for (;;) {
+    const int64_t now = nowUs();
+    if (now - last_request_us_.load() >= int64_t{quiet_ms} * 1000 || now - start >= int64_t{longest_ms} * 1000) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
 void ReliableSender::published() {
+  ever_published_.store(true, std::memory_order_relaxed);
   last_publish_us_.store(nowUs(), std::memory_order_relaxed);
   if (!dirty_.exchange(true)) {
     const uint64_t one = 1;
@@ -113,6 +130,7 @@ struct ReliableSender::Loop {
       return;
     if (static_cast<uint64_t>(request.sender) != owner.hooks_.sender) return;
     ++owner.requests_;
+    owner.last_request_us_ = nowUs();
     bool all_kept = true;
     for (int64_t sequence : request.sequences) {
       if (sequence < 1) continue;
@@ -139,6 +157,7 @@ struct ReliableSender::Loop {
       state.stream_started.push_back(channel.stream_start_us);
     }
     state.count = static_cast<int32_t>(state.channels.size());
+    state.leaving = owner.leaving_.load();
     std::vector<uint8_t> encoded(static_cast<std::size_t>(state.getEncodedSize()));
     state.encode(encoded.data(), 0, static_cast<int>(encoded.size()));
     owner.hooks_.publish(wire::runChannel(channels::kSenderState.name, run_id), encoded);
@@ -172,6 +191,7 @@ struct ReliableSender::Loop {
 
 void ReliableSender::run() {
   Loop loop{*this};
+  bool told_leaving = false;
   while (!stop_) {
     try {
       loop.followRun();
@@ -189,6 +209,10 @@ void ReliableSender::run() {
     }
     if (stop_) break;
     loop.requests->drain([&](const Message& message) { loop.serve(message); });
+    if (leaving_ && !told_leaving) {
+      loop.sendState();  // at once: receivers ask for what they miss now
+      told_leaving = true;
+    }
     loop.sendDueState(nowUs());
   }
 }

@@ -48,6 +48,10 @@ class ReliableSender {
 
   // Called after every publish: cheap (a write to an eventfd at the start of a burst only).
   void published();
+  // Before the process ends: says so (a state with `leaving`), then serves
+  // repair requests until none came for `quiet_ms`, `longest_ms` at most, so
+  // that a receiver that missed the last messages still gets them.
+  void leave(int quiet_ms, int longest_ms);
 
   struct Stats {
     uint64_t requests = 0;      // repair requests heard
@@ -67,6 +71,9 @@ class ReliableSender {
   int wake_fd_ = -1;
   std::atomic<bool> stop_{false};
   std::atomic<bool> dirty_{false};
+  std::atomic<bool> leaving_{false};
+  std::atomic<bool> ever_published_{false};
+  std::atomic<int64_t> last_request_us_{0};
   std::atomic<int64_t> last_publish_us_{0};
   std::atomic<uint64_t> requests_{0}, resent_{0}, not_kept_{0}, states_{0};
   std::thread thread_;

@@ -46,14 +46,21 @@ bool isTransportChannel(std::string_view base) {
 // Which channels a selection takes whole (a rule without a field): those
 // are streams. A rule that picks messages by their bytes (own firings)
 // sees only some numbers of its channel, so gaps there are not losses.
+//
+// Not streams: the transport's own channels, the URL-wide beacons and the
+// heartbeats (periodic, and only their latest counts), and, on a receiver of
+// every run (the recorder), any run but this process's.
 StreamTracker::Tracks tracksOf(const Selection& selection) {
   std::set<std::string> whole, picked;
   for (const auto& rule : selection.rules) (rule.field.empty() ? whole : picked).insert(rule.channel);
   const bool everything = selection.mode == Selection::Mode::RejectListed;
-  return [whole, picked, everything](std::string_view channel) {
-    if (isTransportChannel(wire::splitRunChannel(channel).base)) return false;
+  const int64_t own_run = wire::runId();
+  return [whole, picked, everything, own_run](std::string_view channel) {
+    const wire::RunChannel split = wire::splitRunChannel(channel);
+    if (isTransportChannel(split.base) || wire::isUrlWideChannel(channel) || split.base == channels::kHeartbeat.name)
+      return false;
     const std::string name(channel);
-    if (everything) return whole.count(name) == 0 && picked.count(name) == 0;
+    if (everything) return split.run_id == own_run && whole.count(name) == 0 && picked.count(name) == 0;
     return whole.count(name) > 0;
   };
 }
@@ -100,6 +107,11 @@ class RepairingSource : public Receiver {
   std::string description() const override { return inner_->description() + ", losses repaired"; }
   int receiveBufferBytes() const override { return inner_->receiveBufferBytes(); }
   uint64_t kernelDropped() const override { return inner_->kernelDropped(); }
+  bool holds(uint64_t sender, const std::string& channel, uint64_t sequence) override {
+    if (tracker_.holds(sender, channel, sequence, nowUs())) return true;
+    armTimer(tracker_.nextDueUs());
+    return false;
+  }
   RepairStats repairStats() const override {
     const auto& stats = tracker_.stats();
     RepairStats repairs;

@@ -45,9 +45,32 @@ void StreamTracker::markMissing(Stream& stream, uint64_t from, uint64_t to, int6
   }
 }
 
+bool StreamTracker::holds(uint64_t sender, std::string_view channel, uint64_t sequence, int64_t now_us) {
+  if (sequence == 0 || !tracks_(channel)) return true;
+  const auto heard = senders_.find(sender);
+  if (heard != senders_.end() && heard->second.dead) return true;
+  if (heard == senders_.end()) hear(sender, now_us);  // its silence counts from now
+  Stream& stream = streamOf(sender, channel);
+  if (stream.next == 0) stream.next = sequence;  // known only from here: this one is wanted
+  if (stream.next > sequence) return true;
+  if (sequence - stream.next > options_.widest_gap) return true;  // not believed
+  for (uint64_t awaited = stream.next; awaited <= sequence; ++awaited) {
+    if (stream.held.count(awaited) || stream.missing.count(awaited)) continue;
+    Ask ask{now_us + std::max(options_.first_retry_us, 2 * round_trip_us_), std::max(options_.first_retry_us, 2 * round_trip_us_), 0};
+    ask.awaited = true;
+    stream.missing[awaited] = ask;
+  }
+  return false;
+}
+
 void StreamTracker::filled(Stream& stream, uint64_t sequence, int64_t now_us) {
   const auto asked = stream.missing.find(sequence);
   if (asked == stream.missing.end()) return;
+  // Awaited and come without being asked for: it was on its way, not lost.
+  if (asked->second.awaited && asked->second.first_us == 0) {
+    stream.missing.erase(asked);
+    return;
+  }
   ++stats_.repaired;
   if (asked->second.first_us > 0) {
     // The round trip, smoothed as TCP smooths its RTT (RFC 6298, alpha 1/8).
@@ -117,6 +140,7 @@ void StreamTracker::advance(Stream& stream, bool sender_dead, const Handler& del
 void StreamTracker::onState(const beft::sender_state_t& state, int64_t now_us, const Handler& deliver) {
   const auto sender = static_cast<uint64_t>(state.sender);
   hear(sender, now_us);
+  senders_[sender].leaving = state.leaving;
   const std::size_t count = std::min({state.channels.size(), state.last_sequences.size(), state.first_kept.size(),
                                       state.stream_started.size()});
   for (std::size_t i = 0; i < count; ++i) {
@@ -143,7 +167,7 @@ std::vector<beft::repair_request_t> StreamTracker::due(int64_t now_us, const Han
   for (auto& [key, stream] : streams_) {
     if (stream.missing.empty()) continue;
     Sender& sender = senders_[key.first];
-    if (now_us - sender.last_heard_us > options_.dead_after_us) {
+    if (now_us - sender.last_heard_us > silenceAllowed(sender)) {
       sender.dead = true;
       advance(stream, true, deliver);
       continue;
@@ -155,7 +179,10 @@ std::vector<beft::repair_request_t> StreamTracker::due(int64_t now_us, const Han
       if (ask.next_us > now_us) continue;
       if (request.sequences.size() >= kMostAskedAtOnce) break;
       request.sequences.push_back(static_cast<int64_t>(sequence));
-      if (ask.first_us == 0) ask.first_us = now_us;
+      if (ask.first_us == 0) {
+        ask.first_us = now_us;
+        if (ask.awaited) ++stats_.gaps;  // awaited, and still not here: lost
+      }
       ask.next_us = now_us + ask.wait_us;
       ask.wait_us = std::min(ask.wait_us * 2, options_.slowest_retry_us);
     }
@@ -173,7 +200,8 @@ int64_t StreamTracker::nextDueUs() const {
     if (stream.missing.empty()) continue;
     for (const auto& [sequence, ask] : stream.missing) next = std::min(next, ask.next_us);
     const auto sender = senders_.find(key.first);
-    if (sender != senders_.end()) next = std::min(next, sender->second.last_heard_us + options_.dead_after_us + 1);
+    if (sender != senders_.end())
+      next = std::min(next, sender->second.last_heard_us + silenceAllowed(sender->second) + 1);
   }
   return next;
 }

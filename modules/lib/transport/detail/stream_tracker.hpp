@@ -37,6 +37,7 @@ class StreamTracker {
  public:
   struct Options {
     int64_t dead_after_us = 3'000'000;    // a sender not heard for this long is given up
+    int64_t left_after_us = 500'000;      // one that said it is leaving, this long after it last spoke
     int64_t first_retry_us = 2'000;       // shortest wait before asking again
     int64_t slowest_retry_us = 250'000;   // longest wait between asks
     // When this receiver started listening [us since the epoch]: a stream
@@ -57,6 +58,11 @@ class StreamTracker {
   // envelope): handed to `deliver` now, with any it completes, or held, or
   // dropped as a copy already had.
   void accept(const Message& message, const wire::Envelope& envelope, int64_t now_us, const Handler& deliver);
+  // Whether message `sequence` of `sender` on `channel` has been handed on
+  // (or never will be: a channel not tracked, a sender given up). When not,
+  // it and what comes before it are awaited, and asked for after a short
+  // wait (it is most likely on its way).
+  bool holds(uint64_t sender, std::string_view channel, uint64_t sequence, int64_t now_us);
   // A sender's state: a last message not heard is a loss; a gap no longer
   // kept is given up.
   void onState(const beft::sender_state_t& state, int64_t now_us, const Handler& deliver);
@@ -89,6 +95,7 @@ class StreamTracker {
     int64_t next_us = 0;     // when to ask (again)
     int64_t wait_us = 0;     // the wait after the next ask
     int64_t first_us = 0;    // when first asked, for the round trip
+    bool awaited = false;    // waited for (holds()), not yet known to be lost
   };
   struct Stream {
     std::string channel;
@@ -101,7 +108,11 @@ class StreamTracker {
   struct Sender {
     int64_t last_heard_us = 0;
     bool dead = false;
+    bool leaving = false;  // said it is ending
   };
+  int64_t silenceAllowed(const Sender& sender) const {
+    return sender.leaving ? options_.left_after_us : options_.dead_after_us;
+  }
   using Key = std::pair<uint64_t, std::string>;
 
   Stream& streamOf(uint64_t sender, std::string_view channel);
