@@ -89,7 +89,10 @@ struct ArbiterConfig {
   // depends on how fast the machine started it, not on the seed.
   std::vector<std::string> also_wait_for;
   double startup_report_period_s = 3.0;  // how often to say whom it still waits for
-  double resend_period_s = 0.02;      // FIRE is re-sent this often until DONE
+  // FIRE is re-sent this often until DONE: a lost FIRE (the one control
+  // message not repaired by the transport: each expert takes only its own
+  // from the channel) costs this much.
+  double resend_period_s = 0.005;
   double heartbeat_timeout_s = 3.0;   // default for transitions that give none
   int final_status_repeats = 5;       // the final RUN_STATUS, sent this many times
   double final_status_period_s = 0.05;

@@ -316,6 +316,7 @@ ArbiterConfig testConfig(int64_t ticks) {
   ArbiterConfig config;
   config.max_ticks = ticks;
   config.dt_s = 0.1;
+  config.resend_period_s = 0.02;  // the simulated latencies below are sized to it
   config.heartbeat_timeout_s = 1.0;
   return config;
 }

@@ -35,7 +35,7 @@ class ReliableSender {
   };
 
   // Quiet time after a publish before the state goes out [ms].
-  static constexpr int kQuietMs = 2;
+  static constexpr int kQuietMs = 1;
   // Heartbeat states: from kQuietMs doubling up to this [ms].
   static constexpr int kSlowestStateMs = 500;
 

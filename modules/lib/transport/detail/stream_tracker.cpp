@@ -56,7 +56,8 @@ bool StreamTracker::holds(uint64_t sender, std::string_view channel, uint64_t se
   if (sequence - stream.next > options_.widest_gap) return true;  // not believed
   for (uint64_t awaited = stream.next; awaited <= sequence; ++awaited) {
     if (stream.held.count(awaited) || stream.missing.count(awaited)) continue;
-    Ask ask{now_us + std::max(options_.first_retry_us, 2 * round_trip_us_), std::max(options_.first_retry_us, 2 * round_trip_us_), 0};
+    Ask ask{now_us + std::max(options_.in_flight_us, 2 * round_trip_us_),
+            std::max(options_.first_retry_us, 2 * round_trip_us_), 0};
     ask.awaited = true;
     stream.missing[awaited] = ask;
   }

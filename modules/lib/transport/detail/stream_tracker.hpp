@@ -38,7 +38,8 @@ class StreamTracker {
   struct Options {
     int64_t dead_after_us = 3'000'000;    // a sender not heard for this long is given up
     int64_t left_after_us = 500'000;      // one that said it is leaving, this long after it last spoke
-    int64_t first_retry_us = 2'000;       // shortest wait before asking again
+    int64_t first_retry_us = 1'000;       // shortest wait before asking again
+    int64_t in_flight_us = 500;           // shortest wait for an awaited message before asking for it
     int64_t slowest_retry_us = 250'000;   // longest wait between asks
     // When this receiver started listening [us since the epoch]: a stream
     // that began after it is asked for from its first message; one that
