@@ -483,8 +483,8 @@ TEST(LiveRunner, AnInputArrivingAfterItsFireIsWaitedFor) {
     EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 1; }));
     const auto fire7 = fireToken("scaler", 7, 2);
     lcm.publish(channels::kFire, &fire7);
-    // A beat saying "firing" after firing 1 finished: FIRE 7 has arrived.
-    EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.lastBeatIs("firing", 1); }));
+    // A beat saying "waiting" (for its inputs) after firing 1 finished: FIRE 7 has arrived.
+    EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.lastBeatIs("waiting", 1); }));
     const auto late = stateAt(7, 4.0);  // after its FIRE
     lcm.publish(channels::kRobotState, &late);
     EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.doneCount() >= 2; }));
@@ -716,8 +716,8 @@ TEST(LiveRunner, WithoutAnOverrideAFiringLackingItsTickInputDoesNotFire) {
   lcm.publish(channels::kRobotState, &previous);
   const auto fire = fireToken("declared", 6, 1);
   lcm.publish(channels::kFire, &fire);
-  // A beat saying "firing" with no firing done yet: FIRE 6 has arrived and waits.
-  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.lastBeatIs("firing", -1); }));
+  // A beat saying "waiting" with no firing done yet: FIRE 6 has arrived and waits for its input.
+  EXPECT_TRUE(pumpUntil(lcm, [&] { return collector.lastBeatIs("waiting", -1); }));
   EXPECT_EQ(expert.fires.load(), 0) << "fired without the ROBOT_STATE of its tick";
   EXPECT_EQ(collector.doneCount(), 0u);
   const auto own = stateAt(6, 2.0);

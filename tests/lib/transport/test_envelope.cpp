@@ -43,7 +43,7 @@ TEST(Envelope, BytesWithoutOneAreTheirOwnPayload) {
 }
 
 TEST(Envelope, AGeneratedDecoderAndTheGuardReadAMessageWithAnEnvelope) {
-  beft::fire_t fire;
+  beft::fire_t fire{};
   fire.expert = "vision";
   fire.transition = "t_vision";
   fire.tick = 7;
