@@ -2,10 +2,13 @@
 // (each loading the machine for the other) writes the same data messages,
 // and a robot that drives into what its camera cannot map (a curb below the
 // obstacle height) feels it once at each place and goes around.
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <iostream>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -79,6 +82,36 @@ TEST(LargeScene, TwoRunsSideBySideWriteTheSameDataMessages) {
   int plan_requests = 0;
   for (const auto& message : a) plan_requests += message.channel == "PLAN_REQUEST";
   EXPECT_GT(plan_requests, 5);
+}
+
+// A loaded machine: two busy loops beside a district run, the recorder at
+// its usual lower priority. Datagrams it had no room for are asked for again,
+// so its log holds every message the processes sent (its final account says
+// complete, nothing lost).
+TEST(LoadedMachine, TheRecordedLogHoldsEveryMessageSent) {
+  std::vector<pid_t> busy;
+  for (int i = 0; i < 2; ++i) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+      execl("/bin/sh", "sh", "-c", "while :; do :; done", static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    busy.push_back(pid);
+  }
+  const std::string dir = makeTempDir("loaded");
+  const ProgramResult run = runCommand(binDir() + "/beft-run " + sourceDir() +
+                                           "/scenarios/district_small.xml --max-ticks 600 --out " + dir,
+                                       900);
+  for (pid_t pid : busy) {
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+  }
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto report = readJson(dir + "/report.json");
+  EXPECT_TRUE(report.value("log_complete", false)) << report.dump(2);
+  EXPECT_EQ(report.value("log_messages_lost", -1), 0) << report.dump(2);
+  std::cout << "[loaded machine] the recorder repaired " << report.value("log_messages_repaired", -1)
+            << " message(s)\n";
 }
 
 // The curb (writeCurbScenario) lies across the way to a calling person, with
