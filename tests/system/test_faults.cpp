@@ -313,6 +313,35 @@ TEST(AnotherRun, OnTheSameUrlChangesNoDataMessageAndIsCounted) {
   EXPECT_GT(background.run.report["other_run_messages"].get<int64_t>(), 1000) << background.run.report.dump();
 }
 
+// Yesterday's log of the same scenario played on today's URL: lcm-logplayer at
+// full speed, over and over, and damaged copies of it at 3000 per second. Its
+// run id is yesterday's (every launch draws a fresh one), so all of it is
+// another run's: dropped, counted, and nothing of the report is its.
+TEST(ReplayedLog, OfAnEarlierRunChangesNoDataMessageAndTheReportIsTheRunsOwn) {
+  const FaultRun& clean = cleanRun();
+  BackgroundRun background = startYard("replayed_log");
+  ASSERT_FALSE(background.url.empty());
+  const pid_t player = fork();
+  if (player == 0) {
+    setpgid(0, 0);  // the loop and its players stop together
+    const std::string loop = "while :; do lcm-logplayer --speed=1000000 --lcm-url='" + background.url + "' " +
+                             clean.dir + "/run.lcmlog > /dev/null 2>&1; done";
+    execl("/bin/sh", "sh", "-c", loop.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const pid_t damaged = inject(clean.dir + "/run.lcmlog --lcm-url '" + background.url +
+                               "' --rate 3000 --damage all --seed 11 --as-is");
+  finish(background);
+  kill(-player, SIGTERM);
+  waitpid(player, nullptr, 0);
+  stop(damaged);
+  ASSERT_EQ(background.run.result.exit_code, 0) << background.run.result.output;
+  expectSameDataMessages(background.run);
+  EXPECT_EQ(background.run.report["ticks"], clean.report["ticks"]) << background.run.report.dump();
+  EXPECT_GT(background.run.report["other_run_messages"].get<int64_t>(), 1000) << background.run.report.dump();
+  EXPECT_TRUE(background.run.report.value("log_complete", false)) << background.run.report.dump();
+}
+
 TEST(DamagedLog, IsReadToItsEndAndTheDamageReported) {
   const FaultRun& clean = cleanRun();
   ASSERT_EQ(clean.result.exit_code, 0);
