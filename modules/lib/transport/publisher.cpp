@@ -6,6 +6,7 @@
 #include <map>
 #include <mutex>
 
+#include "lib/transport/detail/clocks.hpp"
 #include "lib/transport/detail/reliable_sender.hpp"
 #include "lib/transport/detail/repair_buffer.hpp"
 #include "lib/common/channels.hpp"
@@ -38,17 +39,16 @@ class Publisher {
     wire::Envelope envelope;
     envelope.sender = sender_;
     envelope.sequence = own ? ++own_sequence_ : kept_.nextSequence(channel);
-    const int64_t now_us = std::chrono::duration_cast<std::chrono::microseconds>(
-                               std::chrono::system_clock::now().time_since_epoch())
-                               .count();
+    const int64_t now_us = detail::wallMicros();
     envelope.stream_start_us = own ? now_us : kept_.streamStart(channel, now_us);
     const auto* payload = static_cast<const uint8_t*>(data);
     if (const MessageKey* key = processKey()) {
       envelope.tagged = true;
       envelope.tag = tagOf(*key, channel, envelope.sender, envelope.sequence, payload, size);
     }
-    std::vector<uint8_t> bytes(payload, payload + size);
+    std::vector<uint8_t> bytes;
     bytes.reserve(size + wire::envelopeBytes(envelope.tagged));
+    bytes.insert(bytes.end(), payload, payload + size);
     wire::appendEnvelope(bytes, envelope);
     const int status = lcm.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
     if (own) return status;

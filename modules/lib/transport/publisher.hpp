@@ -10,7 +10,7 @@
 //   transport::publish(lcm, wire::runChannel("VISION"), percepts);
 //
 // Without attachPublisher (unit tests on memq://), publish() still adds the
-// envelope; nothing is kept and nothing runs beside.
+// envelope and keeps copies; nothing runs beside to serve them.
 #pragma once
 
 #include <cstddef>

@@ -12,6 +12,7 @@
 #include <beft/sender_state_t.hpp>
 
 #include "lib/common/channels.hpp"
+#include "lib/transport/detail/clocks.hpp"
 #include "lib/common/log.hpp"
 #include "lib/transport/detail/udpm_receiver.hpp"
 #include "lib/transport/message_key.hpp"
@@ -22,16 +23,6 @@
 namespace beft::transport::detail {
 
 namespace {
-
-int64_t nowUs() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
-
-int64_t wallUs() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
-}
 
 // The 8 bytes of a sender id as repair_request_t encodes it (after utime).
 std::string encodedSender(uint64_t sender) {
@@ -75,7 +66,7 @@ ReliableSender::~ReliableSender() {
 
 void ReliableSender::leave(int quiet_ms, int longest_ms) {
   if (!ever_published_) return;  // nothing anybody could ask for
-  const int64_t start = nowUs();
+  const int64_t start = steadyMicros();
   last_request_us_ = start;
   leaving_ = true;
   const uint64_t one = 1;
@@ -83,7 +74,7 @@ void ReliableSender::leave(int quiet_ms, int longest_ms) {
     // The thread sees leaving_ within its longest wait.
   }
   for (;;) {
-    const int64_t now = nowUs();
+    const int64_t now = steadyMicros();
     if (now - last_request_us_.load() >= int64_t{quiet_ms} * 1000 || now - start >= int64_t{longest_ms} * 1000) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
@@ -91,7 +82,7 @@ void ReliableSender::leave(int quiet_ms, int longest_ms) {
 
 void ReliableSender::published() {
   ever_published_.store(true, std::memory_order_relaxed);
-  last_publish_us_.store(nowUs(), std::memory_order_relaxed);
+  last_publish_us_.store(steadyMicros(), std::memory_order_relaxed);
   if (!dirty_.exchange(true)) {
     const uint64_t one = 1;
     if (write(wake_fd_, &one, sizeof one) < 0) {
@@ -130,7 +121,7 @@ struct ReliableSender::Loop {
       return;
     if (static_cast<uint64_t>(request.sender) != owner.hooks_.sender) return;
     ++owner.requests_;
-    owner.last_request_us_ = nowUs();
+    owner.last_request_us_ = steadyMicros();
     bool all_kept = true;
     for (int64_t sequence : request.sequences) {
       if (sequence < 1) continue;
@@ -147,7 +138,7 @@ struct ReliableSender::Loop {
 
   void sendState() {
     beft::sender_state_t state;
-    state.utime = wallUs();
+    state.utime = wallMicros();
     state.sender = static_cast<int64_t>(owner.hooks_.sender);
     state.process = owner.hooks_.process;
     for (const auto& channel : owner.hooks_.state()) {
@@ -200,7 +191,7 @@ void ReliableSender::run() {
       std::this_thread::sleep_for(std::chrono::milliseconds(200));
       continue;
     }
-    const int wait_ms = loop.waitMs(nowUs());
+    const int wait_ms = loop.waitMs(steadyMicros());
     pollfd polled[2] = {{loop.requests->fd(), POLLIN, 0}, {wake_fd_, POLLIN, 0}};
     poll(polled, 2, wait_ms < 0 ? kSlowestStateMs : wait_ms);
     uint64_t wakes = 0;
@@ -213,7 +204,7 @@ void ReliableSender::run() {
       loop.sendState();  // at once: receivers ask for what they miss now
       told_leaving = true;
     }
-    loop.sendDueState(nowUs());
+    loop.sendDueState(steadyMicros());
   }
 }
 

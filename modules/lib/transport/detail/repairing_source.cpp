@@ -11,6 +11,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "lib/common/channels.hpp"
+#include "lib/transport/detail/clocks.hpp"
 #include "lib/transport/detail/stream_tracker.hpp"
 #include "lib/transport/message_key.hpp"
 #include "lib/transport/publisher.hpp"
@@ -23,19 +24,9 @@ namespace beft::transport::detail {
 
 namespace {
 
-int64_t nowUs() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
-
-int64_t wallUs() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
-}
-
 StreamTracker::Options listeningFromNow() {
   StreamTracker::Options options;
-  options.listening_since_us = wallUs();
+  options.listening_since_us = wallMicros();
   return options;
 }
 
@@ -108,7 +99,7 @@ class RepairingSource : public Receiver {
   int receiveBufferBytes() const override { return inner_->receiveBufferBytes(); }
   uint64_t kernelDropped() const override { return inner_->kernelDropped(); }
   bool holds(uint64_t sender, const std::string& channel, uint64_t sequence) override {
-    if (tracker_.holds(sender, channel, sequence, nowUs())) return true;
+    if (tracker_.holds(sender, channel, sequence, steadyMicros())) return true;
     armTimer(tracker_.nextDueUs());
     return false;
   }
@@ -144,18 +135,18 @@ class RepairingSource : public Receiver {
     if (base == channels::kSenderState.name) {
       beft::sender_state_t state;
       if (wire::decodeFrom(std::string(base), message.data, message.size, state))
-        tracker_.onState(state, nowUs(), handler);
+        tracker_.onState(state, steadyMicros(), handler);
       return;
     }
     if (isTransportChannel(base)) return;
-    if (enveloped && tracker_.tracks(message.channel)) tracker_.accept(message, envelope, nowUs(), handler);
+    if (enveloped && tracker_.tracks(message.channel)) tracker_.accept(message, envelope, steadyMicros(), handler);
     else handler(message);
   }
 
   void askForWhatIsMissing(const Handler& handler) {
-    for (auto& request : tracker_.due(nowUs(), handler)) {
+    for (auto& request : tracker_.due(steadyMicros(), handler)) {
       const int64_t run = wire::splitRunChannel(request.channel).run_id;
-      request.utime = wallUs();
+      request.utime = wallMicros();
       request.requester = requester_;
       publish(lcm_, wire::runChannel(channels::kRepairRequest.name, run), request);
     }
@@ -166,7 +157,7 @@ class RepairingSource : public Receiver {
     if (timer_fd_ < 0) return;
     itimerspec when{};
     if (due_us != std::numeric_limits<int64_t>::max()) {
-      const int64_t at = std::max<int64_t>(due_us, nowUs() + 1);
+      const int64_t at = std::max<int64_t>(due_us, steadyMicros() + 1);
       when.it_value.tv_sec = at / 1000000;
       when.it_value.tv_nsec = (at % 1000000) * 1000;
     }
