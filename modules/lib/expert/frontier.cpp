@@ -11,11 +11,11 @@ namespace beft::expert {
 namespace {
 
 bool allHold(std::initializer_list<transport::Receiver*> receivers, uint64_t sender, const std::string& channel,
-             uint64_t sequence) {
+             uint64_t sequence, bool restarted) {
   bool held = true;
   // Every receiver is asked (each asks for what it misses), not just the first that lacks it.
   for (transport::Receiver* receiver : receivers)
-    if (receiver != nullptr && !receiver->holds(sender, channel, sequence)) held = false;
+    if (receiver != nullptr && !receiver->holds(sender, channel, sequence, !restarted)) held = false;
   return held;
 }
 
@@ -30,15 +30,16 @@ void Frontier::add(const beft::frontier_t& frontier) {
   }
 }
 
-bool Frontier::reached(const beft::fire_t& fire, std::initializer_list<transport::Receiver*> receivers) const {
+bool Frontier::reached(const beft::fire_t& fire, std::initializer_list<transport::Receiver*> receivers,
+                       bool restarted) const {
   if (fire.after_frontier <= 0) return true;
   if (!allHold(receivers, static_cast<uint64_t>(fire.after_sender), channels::kFrontier.name,
-               static_cast<uint64_t>(fire.after_frontier)))
+               static_cast<uint64_t>(fire.after_frontier), restarted))
     return false;
   bool held = true;
   for (const auto& [where, sequence] : latest_)
     if (sequence > 0 && !allHold(receivers, static_cast<uint64_t>(where.first), where.second,
-                                 static_cast<uint64_t>(sequence)))
+                                 static_cast<uint64_t>(sequence), restarted))
       held = false;
   return held;
 }

@@ -38,7 +38,10 @@ class Frontier {
   // Whether `receivers` (null ones left out) hold the FRONTIER message
   // `fire` comes after and every message listed so far. When not, the
   // transport asks for what is missing; call again after draining.
-  bool reached(const beft::fire_t& fire, std::initializer_list<transport::Receiver*> receivers) const;
+  // `restarted`: this process was restarted mid-run and rebuilt its state
+  // from the run's log, so what it has not heard since is not awaited.
+  bool reached(const beft::fire_t& fire, std::initializer_list<transport::Receiver*> receivers,
+               bool restarted = false) const;
 
   std::size_t entries() const { return latest_.size(); }
 

@@ -243,7 +243,8 @@ class Runner {
     bool ready = false;
     try {
       // Both asked every time: each asks the transport for what it misses.
-      const bool after_frontier = frontier_.reached(pending_fire_, {inputs_.get(), control_.get()});
+      const bool after_frontier =
+          frontier_.reached(pending_fire_, {inputs_.get(), control_.get()}, !options_.resume_log.empty());
       ready = expert_.inputsReady(*pending_) && after_frontier;
     } catch (const std::exception& e) {
       log::error("inputsReady raised: ", e.what());

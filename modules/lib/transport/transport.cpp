@@ -129,8 +129,8 @@ class RunFilter : public Receiver {
   int receiveBufferBytes() const override { return inner_->receiveBufferBytes(); }
   uint64_t kernelDropped() const override { return inner_->kernelDropped(); }
   RepairStats repairStats() const override { return inner_->repairStats(); }
-  bool holds(uint64_t sender, const std::string& channel, uint64_t sequence) override {
-    return inner_->holds(sender, wire::runChannel(channel, own_), sequence);
+  bool holds(uint64_t sender, const std::string& channel, uint64_t sequence, bool owed_unheard) override {
+    return inner_->holds(sender, wire::runChannel(channel, own_), sequence, owed_unheard);
   }
 
  private:

@@ -98,8 +98,8 @@ class RepairingSource : public Receiver {
   std::string description() const override { return inner_->description() + ", losses repaired"; }
   int receiveBufferBytes() const override { return inner_->receiveBufferBytes(); }
   uint64_t kernelDropped() const override { return inner_->kernelDropped(); }
-  bool holds(uint64_t sender, const std::string& channel, uint64_t sequence) override {
-    if (tracker_.holds(sender, channel, sequence, steadyMicros())) return true;
+  bool holds(uint64_t sender, const std::string& channel, uint64_t sequence, bool owed_unheard) override {
+    if (tracker_.holds(sender, channel, sequence, steadyMicros(), owed_unheard)) return true;
     armTimer(tracker_.nextDueUs());
     return false;
   }

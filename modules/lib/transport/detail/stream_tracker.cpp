@@ -45,8 +45,13 @@ void StreamTracker::markMissing(Stream& stream, uint64_t from, uint64_t to, int6
   }
 }
 
-bool StreamTracker::holds(uint64_t sender, std::string_view channel, uint64_t sequence, int64_t now_us) {
+bool StreamTracker::holds(uint64_t sender, std::string_view channel, uint64_t sequence, int64_t now_us,
+                          bool owed_unheard) {
   if (sequence == 0 || !tracks_(channel)) return true;
+  if (!owed_unheard) {
+    const auto known = streams_.find(Key{sender, std::string(channel)});
+    if (known == streams_.end() || known->second.next == 0) return true;
+  }
   const auto heard = senders_.find(sender);
   if (heard != senders_.end() && heard->second.dead) return true;
   if (heard == senders_.end()) hear(sender, now_us);  // its silence counts from now

@@ -63,7 +63,9 @@ class StreamTracker {
   // (or never will be: a channel not tracked, a sender given up). When not,
   // it and what comes before it are awaited, and asked for after a short
   // wait (it is most likely on its way).
-  bool holds(uint64_t sender, std::string_view channel, uint64_t sequence, int64_t now_us);
+  // `owed_unheard` false: a stream never heard is not awaited (a receiver
+  // of a process restarted mid-run).
+  bool holds(uint64_t sender, std::string_view channel, uint64_t sequence, int64_t now_us, bool owed_unheard = true);
   // A sender's state: a last message not heard is a loss; a gap no longer
   // kept is given up.
   void onState(const beft::sender_state_t& state, int64_t now_us, const Handler& deliver);
