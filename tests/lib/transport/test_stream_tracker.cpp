@@ -171,6 +171,23 @@ TEST_F(Tracker, StreamsAreKeptApartBySenderAndAChannelNotTrackedIsLeftAlone) {
   EXPECT_TRUE(tracker.due(0, deliver).empty());
 }
 
+TEST_F(Tracker, ARecorderHandsOnWhatFollowsAGapAtOnceAndTheRepairOnce) {
+  StreamTracker::Options options;
+  options.hand_on_at_once = true;
+  tracker = StreamTracker([](std::string_view) { return true; }, options);
+  receive(1, 0);
+  receive(3, 0);
+  EXPECT_EQ(handed, (std::vector<std::string>{"m1", "m3"}));
+  EXPECT_EQ(tracker.heldMessages(), 0u);
+  ASSERT_EQ(tracker.due(0, deliver).at(0).sequences, (std::vector<int64_t>{2}));
+  receive(3, 10);  // a copy
+  receive(2, 20);
+  receive(4, 30);
+  EXPECT_EQ(handed, (std::vector<std::string>{"m1", "m3", "m2", "m4"}));
+  EXPECT_EQ(tracker.stats().duplicates, 1u);
+  EXPECT_EQ(tracker.missingMessages(), 0u);
+}
+
 TEST_F(Tracker, ADamagedEnvelopeCannotOpenAHugeGap) {
   receive(1, 0);
   receive(uint64_t{1} << 40, 0);

@@ -24,9 +24,10 @@ namespace beft::transport::detail {
 
 namespace {
 
-StreamTracker::Options listeningFromNow() {
+StreamTracker::Options listeningFromNow(const Selection& selection) {
   StreamTracker::Options options;
   options.listening_since_us = wallMicros();
+  options.hand_on_at_once = selection.every_run;  // a recorder
   return options;
 }
 
@@ -59,7 +60,7 @@ StreamTracker::Tracks tracksOf(const Selection& selection) {
 class RepairingSource : public Receiver {
  public:
   RepairingSource(std::unique_ptr<Receiver> inner, lcm::LCM& lcm, const Selection& selection)
-      : inner_(std::move(inner)), lcm_(lcm), tracker_(tracksOf(selection), listeningFromNow()) {
+      : inner_(std::move(inner)), lcm_(lcm), tracker_(tracksOf(selection), listeningFromNow(selection)) {
     timer_fd_ = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
     epoll_fd_ = epoll_create1(EPOLL_CLOEXEC);
     epoll_event event{};

@@ -108,7 +108,12 @@ void StreamTracker::accept(const Message& message, const wire::Envelope& envelop
     ++stream.next;
   } else {
     markMissing(stream, stream.next, sequence, now_us);
-    stream.held[sequence] = Held{std::vector<uint8_t>(message.data, message.data + message.size), message.recv_utime};
+    if (options_.hand_on_at_once) {
+      deliver(message);
+      stream.held[sequence] = Held{{}, message.recv_utime, true};
+    } else {
+      stream.held[sequence] = Held{std::vector<uint8_t>(message.data, message.data + message.size), message.recv_utime};
+    }
   }
   advance(stream, false, deliver);
 }
@@ -117,6 +122,11 @@ void StreamTracker::accept(const Message& message, const wire::Envelope& envelop
 // or, when the sender is dead, anything before what is held).
 void StreamTracker::advance(Stream& stream, bool sender_dead, const Handler& deliver) {
   for (;;) {
+    if (!stream.held.empty() && stream.held.begin()->first == stream.next && stream.held.begin()->second.handed) {
+      stream.held.erase(stream.held.begin());
+      ++stream.next;
+      continue;
+    }
     if (!stream.held.empty() && stream.held.begin()->first == stream.next) {
       auto held = stream.held.begin();
       Message message;
@@ -214,7 +224,8 @@ int64_t StreamTracker::nextDueUs() const {
 
 std::size_t StreamTracker::heldMessages() const {
   std::size_t held = 0;
-  for (const auto& [key, stream] : streams_) held += stream.held.size();
+  for (const auto& [key, stream] : streams_)
+    for (const auto& [sequence, message] : stream.held) held += message.handed ? 0 : 1;
   return held;
 }
 

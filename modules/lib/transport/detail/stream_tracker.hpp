@@ -45,6 +45,11 @@ class StreamTracker {
     // that began after it is asked for from its first message; one that
     // began before is taken from where it is first heard (a late joiner).
     int64_t listening_since_us = 0;
+    // Hand on what comes after a gap at once rather than hold it (a
+    // recorder: its log is ordered by time, and a message held behind the
+    // gap of a killed sender would be written only when that sender is
+    // given up, after its restarted process looked for it in the log).
+    bool hand_on_at_once = false;
     uint64_t widest_gap = 65'536;         // a jump further than this is not believed (a damaged envelope)
   };
   // Whether the receiver takes a channel (as sent, with its run suffix) as a stream.
@@ -93,6 +98,7 @@ class StreamTracker {
   struct Held {
     std::vector<uint8_t> bytes;
     int64_t recv_utime = 0;
+    bool handed = false;  // already handed on (hand_on_at_once): only its number is kept
   };
   struct Ask {
     int64_t next_us = 0;     // when to ask (again)
