@@ -30,6 +30,7 @@
 #include <beft/task_stack_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
+#include "lib/launch/free_port.hpp"
 #include "lib/common/channels.hpp"
 #include "lib/common/lcm_url.hpp"
 
@@ -103,8 +104,9 @@ class Child {
 class TasksProcess : public ::testing::Test {
  protected:
   void SetUp() override {
-    const int index = static_cast<int>(::testing::UnitTest::GetInstance()->current_test_info()->line() % 97);
-    port_ = 21000 + static_cast<int>((getpid() * 131 + index) % 20000);
+    // A port no other test holds now (a hash of the pid once collided).
+    port_ = beft::launch::findFreeUdpPort(21000, 40999);
+    ASSERT_GT(port_, 0);
     url_ = lcmUrlForPort(port_);
     lcm_ = std::make_unique<lcm::LCM>(url_);
     ASSERT_TRUE(lcm_->good()) << url_;
