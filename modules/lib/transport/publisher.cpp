@@ -6,7 +6,7 @@
 #include <map>
 #include <mutex>
 
-#include "lib/transport/detail/clocks.hpp"
+#include "lib/common/clocks.hpp"
 #include "lib/transport/detail/reliable_sender.hpp"
 #include "lib/transport/detail/repair_buffer.hpp"
 #include "lib/common/channels.hpp"
@@ -39,7 +39,7 @@ class Publisher {
     wire::Envelope envelope;
     envelope.sender = sender_;
     envelope.sequence = own ? ++own_sequence_ : kept_.nextSequence(channel);
-    const int64_t now_us = detail::wallMicros();
+    const int64_t now_us = wallMicros();
     envelope.stream_start_us = own ? now_us : kept_.streamStart(channel, now_us);
     const auto* payload = static_cast<const uint8_t*>(data);
     if (const MessageKey* key = processKey()) {

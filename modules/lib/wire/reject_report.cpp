@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include "lib/common/clocks.hpp"
+
 namespace beft::wire {
 
 namespace {
@@ -11,12 +13,6 @@ std::string hostName() {
   if (gethostname(name, sizeof name - 1) != 0) return "unknown";
   return name;
 }
-
-int64_t wallMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
-}
-
 
 }  // namespace
 

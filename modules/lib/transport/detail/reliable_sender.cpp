@@ -12,7 +12,7 @@
 #include <beft/sender_state_t.hpp>
 
 #include "lib/common/channels.hpp"
-#include "lib/transport/detail/clocks.hpp"
+#include "lib/common/clocks.hpp"
 #include "lib/common/log.hpp"
 #include "lib/transport/detail/udpm_receiver.hpp"
 #include "lib/transport/message_key.hpp"

@@ -11,7 +11,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "lib/common/channels.hpp"
-#include "lib/transport/detail/clocks.hpp"
+#include "lib/common/clocks.hpp"
 #include "lib/transport/detail/stream_tracker.hpp"
 #include "lib/transport/message_key.hpp"
 #include "lib/transport/publisher.hpp"

@@ -1,12 +1,12 @@
-// The two clocks of loss repair, in microseconds: the steady one for waits
-// and back-offs, the wall clock for what travels (utime fields, when a
-// stream began), which other hosts compare with theirs.
+// The two clocks, in microseconds: the steady one for waits and back-offs,
+// the wall clock for what travels (utime fields, when a stream began), which
+// other hosts compare with theirs.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 
-namespace beft::transport::detail {
+namespace beft {
 
 inline int64_t steadyMicros() {
   return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch())
@@ -18,4 +18,4 @@ inline int64_t wallMicros() {
       .count();
 }
 
-}  // namespace beft::transport::detail
+}  // namespace beft
