@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <limits>
+#include <functional>
 #include <set>
 
 #include <lcm/lcm-cpp.hpp>
@@ -43,7 +44,7 @@ bool isTransportChannel(std::string_view base) {
 // heartbeats (periodic, and only their latest counts), and, on a receiver of
 // every run (the recorder), any run but this process's.
 StreamTracker::Tracks tracksOf(const Selection& selection) {
-  std::set<std::string> whole, picked;
+  std::set<std::string, std::less<>> whole, picked;  // looked up by string_view: no copy per message
   for (const auto& rule : selection.rules) (rule.field.empty() ? whole : picked).insert(rule.channel);
   const bool everything = selection.mode == Selection::Mode::RejectListed;
   const int64_t own_run = wire::runId();
@@ -51,9 +52,8 @@ StreamTracker::Tracks tracksOf(const Selection& selection) {
     const wire::RunChannel split = wire::splitRunChannel(channel);
     if (isTransportChannel(split.base) || wire::isUrlWideChannel(channel) || split.base == channels::kHeartbeat.name)
       return false;
-    const std::string name(channel);
-    if (everything) return split.run_id == own_run && whole.count(name) == 0 && picked.count(name) == 0;
-    return whole.count(name) > 0;
+    if (everything) return split.run_id == own_run && whole.count(channel) == 0 && picked.count(channel) == 0;
+    return whole.count(channel) > 0;
   };
 }
 
