@@ -1,5 +1,6 @@
 #include "experts/tasks/tasks_expert.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <beft/task_events_t.hpp>
@@ -21,7 +22,7 @@ std::string TasksExpert::description() const {
          "other kind (approach, verify, explore, ...) is owned by the expert that pushed it: it "
          "pushes sub-tasks (parent_id) and ends it with a TASK_COMMAND pop naming its task_id. "
          "Commands come on TASK_COMMAND (from experts or beft-task) and apply at the next firing, "
-         "in arrival order. Publishes ROBOT_CMD and TASK_STACK every firing, TASK_EVENTS when a "
+         "ordered by their task's origin (the sender's name), then by arrival. Publishes ROBOT_CMD and TASK_STACK every firing, TASK_EVENTS when a "
          "task changes (assigned ids, ends and their reasons).";
 }
 
@@ -170,6 +171,11 @@ expert::Outcome TasksExpert::fire(const expert::Firing& firing, expert::Output& 
     log::warn("dropped ", dropped_commands_, " TASK_COMMANDs beyond ", kMaxQueuedCommands, " queued in one tick");
     dropped_commands_ = 0;
   }
+  // Two experts' commands of one tick arrive in the network's order (a lost
+  // and repaired one comes last); their origin gives the run its own order.
+  std::stable_sort(commands.begin(), commands.end(), [](const task_command_t& a, const task_command_t& b) {
+    return a.task.origin < b.task.origin;
+  });
   for (const auto& command : commands) applyCommand(command);
   std::vector<TaskEvent> events = stack_->takeEvents();
   logEvents(events);

@@ -1,5 +1,6 @@
 // The task stack as a process (high level, fired once per tick, last): applies
-// the TASK_COMMANDs received since the last firing in arrival order, lets the
+// the TASK_COMMANDs received since the last firing (ordered by their task's
+// origin, then by arrival), lets the
 // executor run the top task, and publishes ROBOT_CMD, TASK_STACK, TASK_EVENTS
 // and PLAN_REQUEST. A plan request waits for its PLAN_RESULT until the next
 // firing (inputsReady, bounded by the process's --ready-timeout).

@@ -2,9 +2,10 @@
 // every message of either run, per channel, in order, both ways. A message
 // only one run has is a difference; so is one the message guard refuses
 // (wire::MessageRules), never left out. Within a channel, messages are in
-// the order of their utime, then of the log (a message too short to carry
-// a utime stays after the one logged before it), and a message is matched
-// with the other run's message of the same utime and rank within that utime.
+// the order of their utime, then of their bytes (a message too short to
+// carry a utime takes the utime of the one logged before it), and a message
+// is matched with the other run's message of the same utime and rank within
+// that utime (lib/compare/data_order.hpp).
 #pragma once
 
 #include <cstddef>

@@ -1,6 +1,8 @@
 // The order in which a run's data messages are compared and digested: per
-// channel, by utime, then by log order within that utime (a message too
+// channel, by utime, then by their bytes within that utime (a message too
 // short to carry a utime takes that of the channel's message before it).
+// Within a utime the log's order is the network's (two experts' messages of
+// one tick), not the run's, so it is not compared.
 // Two runs' messages of a channel are matched by their place.
 #pragma once
 

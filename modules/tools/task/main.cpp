@@ -153,7 +153,7 @@ struct Options {
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
       "Change or show the task stack of a running BEFT system (beft-tasks). Commands go out on "
-      "TASK_COMMAND and apply at the stack's next firing, in arrival order; push and pop wait for "
+      "TASK_COMMAND and apply at the stack's next firing, ordered by origin, then arrival; push and pop wait for "
       "the stack's confirmation on TASK_EVENTS (--no-wait to skip). list prints the next "
       "TASK_STACK message.",
       "beft-task");

@@ -1,5 +1,5 @@
 // The task-stack expert class without LCM: commands apply at the next firing
-// in arrival order, a plan request holds the next firing until its answer
+// by origin, then in arrival order, a plan request holds the next firing until its answer
 // (inputsReady), and what it publishes every firing.
 #include <gtest/gtest.h>
 
@@ -40,7 +40,7 @@ class TasksExpertTest : public ::testing::Test {
     ASSERT_TRUE(deliver(expert_, channels::kRobotState, s));
   }
   void push(int64_t command_id, const std::string& kind, double x, double y, int priority,
-            const std::string& object = "") {
+            const std::string& object = "", const std::string& origin = "test") {
     Task t;
     t.kind = kind;
     t.x = x;
@@ -48,7 +48,7 @@ class TasksExpertTest : public ::testing::Test {
     t.yaw = NAN;
     t.priority = priority;
     t.object_id = object;
-    t.origin = "test";
+    t.origin = origin;
     task_command_t c{};
     c.utime = 0;
     c.command_id = command_id;
@@ -92,6 +92,23 @@ TEST_F(TasksExpertTest, AppliesCommandsAtTheNextFiringInArrivalOrder) {
   EXPECT_EQ(out_.on<task_stack_t>(channels::kTaskStack).size(), 1u);
   EXPECT_EQ(out_.on<robot_command_t>(channels::kRobotCommand).size(), 1u);
   EXPECT_TRUE(out_.on<task_events_t>(channels::kTaskEvents).empty());
+}
+
+// Two experts' commands of one tick reach the stack in the network's order;
+// the stack orders them by origin, so a repaired (late) one changes nothing.
+TEST_F(TasksExpertTest, CommandsOfDifferentOriginsApplyInOriginOrderWhateverTheirArrival) {
+  push(5, "wait", 7, 0, 10, "", "dw");
+  push(9, "wait", 5, 0, 10, "", "audio");
+  push(6, "wait", 8, 0, 10, "", "dw");
+  robotAt(0, 1, 1);
+  fire(0);
+  const auto stacks = out_.on<task_stack_t>(channels::kTaskStack);
+  ASSERT_EQ(stacks.size(), 1u);
+  ASSERT_EQ(stacks[0].num_tasks, 3);
+  EXPECT_DOUBLE_EQ(stacks[0].tasks[0].x, 5) << "audio's push first, though it arrived second";
+  EXPECT_EQ(stacks[0].tasks[0].origin, "audio");
+  EXPECT_DOUBLE_EQ(stacks[0].tasks[1].x, 7) << "then dw's, in their arrival order";
+  EXPECT_DOUBLE_EQ(stacks[0].tasks[2].x, 8);
 }
 
 TEST_F(TasksExpertTest, APlanRequestHoldsTheNextFiringUntilItsAnswer) {

@@ -106,6 +106,29 @@ TEST(Diff, AMissingMessageIsNamed) {
   EXPECT_NE(result.output.find("missing from " + missing), std::string::npos) << result.output;
 }
 
+// Two processes' messages of one tick reach the recorder in the network's
+// order; the comparison ranks them by their bytes, so that order is not a
+// difference, while a changed or missing one still is.
+TEST(Diff, MessagesOfOneUtimeMatchWhateverTheirLogOrder) {
+  const auto twin = [](beft::wire::LogEvent event) {
+    event.data[event.data.size() - 1] ^= 0x01;
+    return event;
+  };
+  const std::string in_order = writeCopy("one_utime_a", [&](beft::wire::LogEvent event, int index) {
+    if (event.channel == "VISION" && index == 3) return std::vector<beft::wire::LogEvent>{event, twin(event)};
+    return std::vector<beft::wire::LogEvent>{event};
+  });
+  const std::string swapped = writeCopy("one_utime_b", [&](beft::wire::LogEvent event, int index) {
+    if (event.channel == "VISION" && index == 3) return std::vector<beft::wire::LogEvent>{twin(event), event};
+    return std::vector<beft::wire::LogEvent>{event};
+  });
+  const auto same = diff(in_order + " " + swapped);
+  EXPECT_EQ(same.exit_code, 0) << same.output;
+  const auto against_run = diff(kRun + " " + swapped);
+  EXPECT_EQ(against_run.exit_code, 1) << against_run.output;
+  EXPECT_NE(against_run.output.find("VISION message #"), std::string::npos) << against_run.output;
+}
+
 TEST(Diff, RunIdsInChannelNamesAreLeftOut) {
   const std::string with_run = writeCopy("run_id", [](beft::wire::LogEvent event, int) {
     event.channel += "@1f3a";
