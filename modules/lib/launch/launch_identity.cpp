@@ -7,6 +7,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "lib/launch/run_adoption.hpp"
+#include "lib/transport/message_key.hpp"
 
 namespace beft::launch {
 
@@ -34,6 +35,7 @@ LaunchIdentity adopted(const LaunchSpec& spec, const LaunchIdentityRequest& requ
   AdoptionOptions options;
   options.timeout_s = request.join_timeout_s;
   options.say = request.say;
+  options.key = transport::processKey();  // set from --key or BEFT_KEY_FILE (run_key.hpp)
   const AnnouncedRun run = adoptAnnouncedRun(lcm, description, options);
   if (request.say)
     request.say("joining " + describeAnnouncedRun(run, wallClock_us()) +

@@ -10,6 +10,8 @@
 
 #include "lib/common/channels.hpp"
 #include "lib/launch/launch_file.hpp"
+#include "lib/transport/message_key.hpp"
+#include "lib/wire/envelope.hpp"
 #include "lib/wire/guarded_decode.hpp"
 #include "lib/wire/run_identity.hpp"
 
@@ -52,10 +54,27 @@ struct Listening {
   AnnouncedRuns runs;
   std::function<int64_t()> clock;
   std::function<void(const std::string&)> say;
+  const transport::MessageKey* key;
 };
 
-// Every beacon is checked by the guard; a stale run is said once.
+// True when the run has no key, or the beacon carries a valid tag of it.
+bool authentic(const lcm::ReceiveBuffer* buffer, const std::string& channel, const transport::MessageKey* key) {
+  if (key == nullptr) return true;
+  const auto* data = static_cast<const uint8_t*>(buffer->data);
+  std::size_t payload_size = 0;
+  wire::Envelope envelope;
+  return wire::splitEnvelope(data, buffer->data_size, payload_size, envelope) && envelope.tagged &&
+         transport::tagValid(*key, channel, envelope, data, payload_size);
+}
+
+// Every beacon is checked by the key and the guard; a stale run is said once.
 void onBeacon(const lcm::ReceiveBuffer* buffer, const std::string& channel, Listening* listening) {
+  if (!authentic(buffer, channel, listening->key)) {
+    listening->runs.unauthenticated();
+    if (listening->runs.unauthenticatedBeacons() == 1 && listening->say)
+      listening->say("refused a beacon without a valid tag of this run's key (a host without the key)");
+    return;
+  }
   beft::run_beacon_t beacon{};
   if (!wire::decodeFrom(channel, buffer->data, buffer->data_size, beacon)) return;
   const int64_t now = listening->clock();
@@ -79,6 +98,10 @@ std::string noRunHeard(const AnnouncedRuns& runs, double timeout_s) {
     text += "; " + std::to_string(runs.otherLaunchBeacons()) +
             " beacon(s) of other launches were heard (another launch file, or other --set values than the "
             "arbiter's launch was given)";
+  if (runs.unauthenticatedBeacons() > 0)
+    text += "; " + std::to_string(runs.unauthenticatedBeacons()) +
+            " beacon(s) without a valid tag of this run's key were refused (is the arbiter's launch given the "
+            "same --key?)";
   return text;
 }
 
@@ -101,7 +124,7 @@ std::string describeAnnouncedRun(const AnnouncedRun& run, int64_t now_utime) {
 
 AnnouncedRun adoptAnnouncedRun(lcm::LCM& lcm, int64_t description, const AdoptionOptions& options) {
   Listening listening{AnnouncedRuns(description), options.wall_clock_us ? options.wall_clock_us : systemClock_us,
-                      options.say};
+                      options.say, options.key};
   auto* subscription = lcm.subscribeFunction(std::string(channels::kRunBeacons.name), &onBeacon, &listening);
   const auto give_up = Steady::now() + std::chrono::duration_cast<Steady::duration>(
                                            std::chrono::duration<double>(options.timeout_s));

@@ -9,6 +9,9 @@
 // leaves the bytes as they were), so yesterday's run, played on the URL,
 // is refused rather than joined; so is an arbiter on a host whose clock is
 // far off (the hosts of a distributed run keep their clocks in sync, NTP).
+// In a keyed run a beacon counts only with a valid tag of the run's key, so a
+// host without the key can neither lure this launch into its run nor make
+// it refuse the real one as one of two.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +24,9 @@
 
 namespace lcm {
 class LCM;
+}
+namespace beft::transport {
+class MessageKey;
 }
 
 namespace beft::launch {
@@ -49,6 +55,9 @@ class AnnouncedRuns {
   uint64_t staleBeacons() const { return stale_beacons_; }
   const std::set<int64_t>& staleRuns() const { return stale_runs_; }
   uint64_t otherLaunchBeacons() const { return other_launch_beacons_; }
+  // A beacon without a valid tag of the run's key (heard() is not called for it).
+  void unauthenticated() { ++unauthenticated_beacons_; }
+  uint64_t unauthenticatedBeacons() const { return unauthenticated_beacons_; }
 
  private:
   int64_t description_;
@@ -57,6 +66,7 @@ class AnnouncedRuns {
   std::set<int64_t> stale_runs_;
   uint64_t stale_beacons_ = 0;
   uint64_t other_launch_beacons_ = 0;
+  uint64_t unauthenticated_beacons_ = 0;
 };
 
 struct AdoptionOptions {
@@ -64,6 +74,7 @@ struct AdoptionOptions {
   double settle_s = 1.5;  // after the first: three beacons' time to hear a second run of the same launch
   std::function<int64_t()> wall_clock_us;           // default: the system clock
   std::function<void(const std::string&)> say;      // progress and refusals, one line each
+  const transport::MessageKey* key = nullptr;       // a keyed run's: only beacons tagged with it count
 };
 
 // Listens on `lcm` for the run of launch `description` (launchDescriptionOf)

@@ -25,6 +25,7 @@
 #include "lib/launch/launch_file.hpp"
 #include "lib/launch/launch_identity.hpp"
 #include "lib/launch/run_adoption.hpp"
+#include "lib/transport/message_key.hpp"
 #include "lib/transport/publisher.hpp"
 #include "lib/wire/run_identity.hpp"
 
@@ -74,17 +75,18 @@ struct MemqAdoption {
   void publish(const beft::run_beacon_t& b) {
     ASSERT_EQ(beft::transport::publish(lcm, std::string(beft::channels::kRunBeacons.name), b), 0);
   }
-  AnnouncedRun adopt(double timeout_s = 0.2) {
+  AnnouncedRun adopt(double timeout_s = 0.2, const beft::transport::MessageKey* key = nullptr) {
     AdoptionOptions options;
+    options.key = key;
     options.timeout_s = timeout_s;
     options.settle_s = 0.05;
     options.wall_clock_us = [] { return kNow; };
     options.say = [this](const std::string& line) { said.push_back(line); };
     return adoptAnnouncedRun(lcm, kDescription, options);
   }
-  std::string errorOfAdopting() {
+  std::string errorOfAdopting(const beft::transport::MessageKey* key = nullptr) {
     try {
-      adopt();
+      adopt(0.2, key);
     } catch (const LaunchError& e) {
       return e.what();
     }
@@ -173,6 +175,29 @@ TEST(RunAdoption, AMalformedBeaconIsRefusedByTheGuard) {
   beft::transport::publishEncoded(memq.lcm, std::string(beft::channels::kRunBeacons.name), junk.data(), junk.size());
   memq.publish(beacon(0x11, kNow));
   EXPECT_EQ(memq.adopt().run_id, 0x11);
+}
+
+// In a keyed run a beacon counts only with the key's tag: one sent without
+// a key, or with another key, neither is joined nor makes two runs.
+TEST(RunAdoption, AKeyedLaunchJoinsOnlyABeaconTaggedWithItsKey) {
+  const beft::transport::MessageKey key = beft::transport::MessageKey::random();
+  MemqAdoption memq;
+  beft::transport::setProcessKey(std::nullopt);
+  memq.publish(beacon(0x66, kNow));  // a host without the key
+  beft::transport::setProcessKey(beft::transport::MessageKey::random());
+  memq.publish(beacon(0x67, kNow));  // a host with another key
+  beft::transport::setProcessKey(key);
+  memq.publish(beacon(0x11, kNow));
+  beft::transport::setProcessKey(std::nullopt);
+  EXPECT_EQ(memq.adopt(0.2, &key).run_id, 0x11);
+  ASSERT_FALSE(memq.said.empty());
+  EXPECT_TRUE(contains(memq.said[0], "without a valid tag of this run's key")) << memq.said[0];
+
+  memq.publish(beacon(0x66, kNow));
+  const std::string error = memq.errorOfAdopting(&key);
+  EXPECT_TRUE(contains(error, "1 beacon(s) without a valid tag of this run's key were refused")) << error;
+  memq.publish(beacon(0x66, kNow));
+  EXPECT_EQ(memq.adopt(0.2, nullptr).run_id, 0x66) << "without a key an untagged beacon is joined";
 }
 
 TEST(RunId, AFreshOneIsNeverZeroAndTakenAsChannelsShowIt) {
