@@ -39,6 +39,7 @@
 #include <beft/robot_command_t.hpp>
 #include <beft/robot_state_t.hpp>
 #include <beft/run_beacon_t.hpp>
+#include <beft/run_control_t.hpp>
 #include <beft/run_status_t.hpp>
 #include <beft/scene_objects_t.hpp>
 #include <beft/sender_state_t.hpp>
@@ -128,6 +129,8 @@ enum class Plane {
   X(kRunStatus, "RUN_STATUS", run_status_t, Control)                                                \
   X(kStopRequest, "STOP_REQUEST", run_status_t, Control) /* end the run after this tick */          \
   X(kFrontier, "FRONTIER", frontier_t, Control) /* what FIREs come after (lib/expert/frontier.hpp) */ \
+  X(kRunControl, "RUN_CONTROL", run_control_t, Control) /* pause, step, run: from viewers */          \
+  X(kRunControlState, "RUN_CONTROL_STATE", run_control_t, Control) /* the arbiter's answer */        \
   /* Blackboard service. */                                                                        \
   X(kBlackboardQuery, "BB_QUERY", bb_query_t, Service)                                              \
   /* The recorder's account of its log. */                                                        \
