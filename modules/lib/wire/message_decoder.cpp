@@ -9,80 +9,13 @@
 
 #include "lib/common/channels.hpp"
 #include "lib/wire/embedded_schemas.hpp"
+#include "lib/wire/lcm_walk.hpp"
 
 namespace beft::blackboard {
 
 using namespace beft::wire;
 
 namespace {
-
-class DecodeError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// Big-endian reads with bounds checks.
-class Reader {
- public:
-  Reader(const uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-
-  std::size_t position() const { return position_; }
-  std::size_t remaining() const { return size_ - position_; }
-
-  uint64_t readUnsigned(int bytes, const std::string& field) {
-    need(static_cast<std::size_t>(bytes), field);
-    uint64_t value = 0;
-    for (int i = 0; i < bytes; ++i) value = (value << 8) | data_[position_++];
-    return value;
-  }
-
-  int64_t readSigned(int bytes, const std::string& field) {
-    const uint64_t raw = readUnsigned(bytes, field);
-    const int shift = 64 - 8 * bytes;  // sign-extend
-    return static_cast<int64_t>(raw << shift) >> shift;
-  }
-
-  double readDouble(const std::string& field) {
-    const uint64_t raw = readUnsigned(8, field);
-    double value;
-    std::memcpy(&value, &raw, sizeof value);
-    return value;
-  }
-
-  float readFloat(const std::string& field) {
-    const uint32_t raw = static_cast<uint32_t>(readUnsigned(4, field));
-    float value;
-    std::memcpy(&value, &raw, sizeof value);
-    return value;
-  }
-
-  std::string readString(const std::string& field) {
-    const int64_t length = readSigned(4, field);  // includes the final '\0'
-    if (length < 1) throw DecodeError(field + ": string length " + std::to_string(length) + " is invalid");
-    need(static_cast<std::size_t>(length), field);
-    const char* start = reinterpret_cast<const char*>(data_ + position_);
-    position_ += static_cast<std::size_t>(length);
-    if (start[length - 1] != '\0') throw DecodeError(field + ": string is not terminated");
-    return std::string(start, static_cast<std::size_t>(length - 1));
-  }
-
-  void skip(std::size_t bytes, const std::string& field) {
-    need(bytes, field);
-    position_ += bytes;
-  }
-
- private:
-  void need(std::size_t bytes, const std::string& field) const {
-    if (bytes > remaining())
-      throw DecodeError("message ends at byte " + std::to_string(size_) + " while reading " + field +
-                        " (" + std::to_string(bytes) + " bytes wanted at byte " +
-                        std::to_string(position_) + ")");
-  }
-
-  const uint8_t* data_;
-  std::size_t size_;
-  std::size_t position_ = 0;
-};
 
 // Collects lines up to a limit and counts the rest.
 class Lines {
@@ -149,134 +82,136 @@ std::string upper(std::string text) {
   return text;
 }
 
-class StructPrinter {
+// The readable text of a walk: one line per field, nested structs indented,
+// arrays of structs cut after max_struct_items (still read, not printed).
+class StructPrinter : public LcmVisitor {
  public:
-  StructPrinter(const LcmTypeSet& types, const DescribeOptions& options, Lines& lines)
-      : types_(types), options_(options), lines_(lines) {}
+  StructPrinter(const LcmStruct& root, const DescribeOptions& options, Lines& lines)
+      : options_(options), lines_(lines) {
+    levels_.push_back(level(&root, "", true));
+  }
 
-  // Reads one struct (no fingerprint); prints it when print is true.
-  void readStruct(const LcmStruct& lcm_struct, Reader& reader, const std::string& indent, bool print) {
-    std::map<std::string, int64_t> integers;  // sizes of the variable arrays
-    for (const LcmMember& member : lcm_struct.members) {
-      std::vector<int64_t> sizes;
-      for (const LcmDimension& dimension : member.dimensions) {
-        int64_t size = 0;
-        if (dimension.variable) {
-          auto it = integers.find(dimension.size);
-          if (it == integers.end()) throw DecodeError(member.name + ": size member " + dimension.size + " missing");
-          size = it->second;
-        } else {
-          size = std::stoll(dimension.size);
-        }
-        if (size < 0)
-          throw DecodeError(member.name + ": length " + dimension.size + " = " + std::to_string(size) +
-                            " is negative");
-        sizes.push_back(size);
-      }
-      if (sizes.empty()) {
-        if (isLcmPrimitive(member.type)) {
-          const std::string value = readScalar(member.type, member.name, reader, &integers);
-          if (print) lines_.add(indent, member.name + ": " + value + annotation(lcm_struct, member, value));
-        } else {
-          if (print) lines_.add(indent, member.name + ":");
-          readStruct(structOf(member.type), reader, indent + "  ", print);
-        }
-      } else {
-        readArray(member, sizes, 0, member.name, reader, indent, print);
-      }
+  void scalar(const LcmMember& member, const std::string& label, const LcmValue& value) override {
+    Level& level = levels_.back();
+    const std::string text = format(value, label);
+    if (level.array_of_scalars) {
+      if (level.seen < options_.max_inline_items) level.text += (level.seen > 0 ? ", " : "") + text;
+      ++level.seen;
+      return;
     }
+    if (level.print)
+      lines_.add(level.indent, member.name + ": " + text + annotation(*level.type, member, value));
+  }
+
+  void bytes(const LcmMember&, const std::string& label, const uint8_t*, std::size_t count) override {
+    if (printing()) lines_.add(levels_.back().indent, label + ": <" + std::to_string(count) + " bytes>");
+  }
+
+  void beginStruct(const LcmMember&, const std::string& label, const LcmStruct& type) override {
+    const bool print = printing();
+    const std::string indent = levels_.back().indent;
+    if (print) lines_.add(indent, label + ":");
+    levels_.push_back(level(&type, indent + "  ", print));
+  }
+
+  void endStruct() override { levels_.pop_back(); }
+
+  void beginArray(const LcmMember&, const std::string& label, int64_t count, bool of_scalars) override {
+    Level level = StructPrinter::level(levels_.back().type, levels_.back().indent, printing());
+    level.label = label;
+    level.count = count;
+    level.array = true;
+    level.array_of_scalars = of_scalars;
+    level.text = "[";
+    levels_.push_back(level);
+  }
+
+  void element(int64_t index) override {
+    Level& level = levels_.back();
+    level.element_print = level.print && index < options_.max_struct_items;
+  }
+
+  void endArray() override {
+    const Level level = levels_.back();
+    levels_.pop_back();
+    if (!level.print) return;
+    if (level.array_of_scalars) {
+      std::string text = level.text;
+      if (level.count > options_.max_inline_items)
+        text += ", ... +" + std::to_string(level.count - options_.max_inline_items) + " more";
+      lines_.add(level.indent, level.label + ": " + text + "]");
+      return;
+    }
+    if (level.count > options_.max_struct_items)
+      lines_.add(level.indent, level.label + ": ... +" + std::to_string(level.count - options_.max_struct_items) +
+                                   " more of " + std::to_string(level.count));
+    if (level.count == 0) lines_.add(level.indent, level.label + ": []");
   }
 
  private:
-  const LcmStruct& structOf(const std::string& type) const {
-    const LcmStruct* found = types_.find(type);
-    if (!found) throw DecodeError("unknown member type " + type);
-    return *found;
+  struct Level {
+    const LcmStruct* type = nullptr;  // the struct whose members are being read
+    std::string indent;
+    bool print = true;
+    bool array = false;
+    bool array_of_scalars = false;
+    bool element_print = false;  // of the current element of an array
+    std::string label;
+    int64_t count = 0;
+    int64_t seen = 0;
+    std::string text;  // the elements of a number/string array so far
+  };
+
+  static Level level(const LcmStruct* type, const std::string& indent, bool print) {
+    Level level;
+    level.type = type;
+    level.indent = indent;
+    level.print = print;
+    return level;
   }
 
-  void readArray(const LcmMember& member, const std::vector<int64_t>& sizes, std::size_t level,
-                 const std::string& label, Reader& reader, const std::string& indent, bool print) {
-    const int64_t count = sizes[level];
-    const bool innermost = level + 1 == sizes.size();
-    // Every element takes at least one byte: a length beyond the bytes left
-    // is a corrupt message, not a reason to loop for billions of elements.
-    const int64_t bytes_left = static_cast<int64_t>(reader.remaining());
-    int64_t elements = 1;
-    for (std::size_t l = level; l < sizes.size() && elements > 0 && elements <= bytes_left; ++l)
-      elements = sizes[l] > bytes_left ? bytes_left + 1 : elements * sizes[l];  // both factors < 2^32
-    if (elements > bytes_left)
-      throw DecodeError(label + ": " + std::to_string(count) + " elements cannot fit in the " +
-                        std::to_string(reader.remaining()) + " bytes left");
-    if (innermost && member.type == "byte") {
-      reader.skip(static_cast<std::size_t>(count), label);
-      if (print) lines_.add(indent, label + ": <" + std::to_string(count) + " bytes>");
-      return;
-    }
-    if (innermost && isLcmPrimitive(member.type)) {
-      std::string text = "[";
-      for (int64_t i = 0; i < count; ++i) {
-        const std::string value = readScalar(member.type, label, reader, nullptr);
-        if (i < options_.max_inline_items) text += (i > 0 ? ", " : "") + value;
-      }
-      if (count > options_.max_inline_items)
-        text += ", ... +" + std::to_string(count - options_.max_inline_items) + " more";
-      text += "]";
-      if (print) lines_.add(indent, label + ": " + text);
-      return;
-    }
-    for (int64_t i = 0; i < count; ++i) {
-      const bool print_item = print && i < options_.max_struct_items;
-      const std::string item_label = label + "[" + std::to_string(i) + "]";
-      if (innermost) {
-        if (print_item) lines_.add(indent, item_label + ":");
-        readStruct(structOf(member.type), reader, indent + "  ", print_item);
-      } else {
-        readArray(member, sizes, level + 1, item_label, reader, indent, print_item);
-      }
-    }
-    if (print && count > options_.max_struct_items)
-      lines_.add(indent, label + ": ... +" + std::to_string(count - options_.max_struct_items) + " more of " +
-                             std::to_string(count));
-    if (print && count == 0) lines_.add(indent, label + ": []");
+  // Whether what comes next (a struct, an array, bytes) is printed.
+  bool printing() const {
+    const Level& level = levels_.back();
+    return level.array && !level.array_of_scalars ? level.element_print : level.print;
   }
 
-  std::string readScalar(const std::string& type, const std::string& name, Reader& reader,
-                         std::map<std::string, int64_t>* integers) {
-    if (type == "double") return formatNumber(reader.readDouble(name));
-    if (type == "float") return formatNumber(reader.readFloat(name));
-    if (type == "string") return quoted(reader.readString(name), options_.max_string_chars);
-    if (type == "boolean") {
-      const int64_t value = reader.readSigned(1, name);
-      return value == 0 ? "false" : value == 1 ? "true" : std::to_string(value);
+  std::string format(const LcmValue& value, const std::string& name) const {
+    switch (value.kind) {
+      case LcmValue::Kind::kDouble:
+      case LcmValue::Kind::kFloat:
+        return formatNumber(value.number);
+      case LcmValue::Kind::kString:
+        return quoted(value.text, options_.max_string_chars);
+      case LcmValue::Kind::kBoolean:
+        return value.integer == 0 ? "false" : value.integer == 1 ? "true" : std::to_string(value.integer);
+      case LcmValue::Kind::kInteger:
+        break;
     }
-    const int bytes = type == "int8_t" || type == "byte" ? 1 : type == "int16_t" ? 2 : type == "int32_t" ? 4 : 8;
-    const int64_t value = reader.readSigned(bytes, name);
-    if (integers) (*integers)[name] = value;
-    std::string text = std::to_string(value);
-    if (isTimeField(name) && value >= 0) text += " (" + formatNumber(static_cast<double>(value) / 1e6) + " s)";
+    std::string text = std::to_string(value.integer);
+    if (isTimeField(name) && value.integer >= 0)
+      text += " (" + formatNumber(static_cast<double>(value.integer) / 1e6) + " s)";
     return text;
   }
 
   // "mode: 1 (MODE_VELOCITY)": names the constant a field's value stands
   // for, when the struct declares constants prefixed with the field's name.
-  std::string annotation(const LcmStruct& lcm_struct, const LcmMember& member, const std::string& value) const {
-    if (lcm_struct.constants.empty() || member.type == "string" || member.type == "double" ||
-        member.type == "float" || member.type == "boolean")
-      return "";
+  std::string annotation(const LcmStruct& lcm_struct, const LcmMember& member, const LcmValue& value) const {
+    if (lcm_struct.constants.empty() || value.kind != LcmValue::Kind::kInteger) return "";
     const std::string prefix = upper(member.name) + "_";
     for (const LcmConstant& constant : lcm_struct.constants) {
       if (constant.name.compare(0, prefix.size(), prefix) != 0) continue;
       try {
-        if (std::stoll(constant.value, nullptr, 0) == std::stoll(value)) return " (" + constant.name + ")";
+        if (std::stoll(constant.value, nullptr, 0) == value.integer) return " (" + constant.name + ")";
       } catch (const std::exception&) {
       }
     }
     return "";
   }
 
-  const LcmTypeSet& types_;
   const DescribeOptions& options_;
   Lines& lines_;
+  std::vector<Level> levels_;
 };
 
 LcmTypeSet loadEmbeddedTypes() {
@@ -341,10 +276,11 @@ std::vector<std::string> MessageDecoder::describeLines(const std::string& channe
   }
   if (!expected.empty() && expected != type->fullName())
     lines.add("", "note: " + channel + " normally carries " + expected + ", this is " + type->fullName());
-  Reader reader(static_cast<const uint8_t*>(data), static_cast<std::size_t>(size));
+  LcmReader reader(static_cast<const uint8_t*>(data), static_cast<std::size_t>(size));
   try {
     reader.skip(8, "fingerprint");
-    StructPrinter(types_, options, lines).readStruct(*type, reader, "", true);
+    StructPrinter printer(*type, options, lines);
+    walkLcmStruct(types_, *type, reader, printer);
     if (reader.remaining() > 0)
       lines.add("", "(" + std::to_string(reader.remaining()) + " bytes after the last field)");
   } catch (const std::exception& error) {
