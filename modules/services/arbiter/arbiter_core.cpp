@@ -44,7 +44,7 @@ const char* runStateName(RunState state) {
 }
 
 ArbiterCore::ArbiterCore(Net net, ArbiterConfig config, Clock& clock, ArbiterOutput& output)
-    : net_(std::move(net)), config_(config), clock_(clock), output_(output) {
+    : net_(std::move(net)), config_(config), clock_(clock), output_(output), pace_(config.pace, config.dt_s) {
   marking_ = net_.initialMarking();
   for (const auto& name : net_.experts()) {
     ExpertState expert;
@@ -79,6 +79,7 @@ void ArbiterCore::start() {
   run_start_ = now;
   startup_deadline_ = now + config_.startup_timeout_s;
   next_startup_report_ = now + config_.startup_report_period_s;
+  sendControlState();
   const auto missing = missingProcesses();
   if (missing.empty()) {
     beginRun();
@@ -104,6 +105,9 @@ void ArbiterCore::resume(const ResumePoint& point) {
   const double now = clock_.now();
   run_start_ = now;
   tick_ = last.tick;
+  pace_.restart(now, tick_);
+  if (point.control) control_.restore(*point.control);
+  sendControlState();
   stats_.steps = last.step;
   next_firing_id_ = std::max<int64_t>(next_firing_id_, point.highest_firing_id + 1);
   for (auto& expert : experts_) {
@@ -142,6 +146,7 @@ void ArbiterCore::resume(const ResumePoint& point) {
 void ArbiterCore::beginRun() {
   state_ = RunState::Running;
   run_start_ = clock_.now();
+  pace_.restart(run_start_, 0);
   // Experts drop a FIRE whose id is not above the last they ran: continue
   // above anything they report, so a restarted arbiter is heard.
   next_firing_id_ = std::max<int64_t>(1, highest_reported_firing_id_ + 1);
@@ -253,6 +258,7 @@ void ArbiterCore::onAbort(const std::string& why) {
 
 void ArbiterCore::onTimeAdvanced() {
   const double now = clock_.now();
+  if (started_ && !ended() && now >= next_control_state_) sendControlState();
   if (ended()) {
     if (final_sends_left_ > 0 && now >= next_final_send_) {
       sendStatus(state_ == RunState::Finished ? beft::run_status_t::STATE_FINISHED
@@ -278,6 +284,10 @@ void ArbiterCore::onTimeAdvanced() {
     return;
   }
   checkRunningFirings(now);
+  if (state_ == RunState::Running && pace_wait_ && now >= *pace_wait_) {
+    pace_wait_.reset();
+    step("real-time pace");
+  }
 }
 
 void ArbiterCore::checkRunningFirings(double now) {
@@ -315,6 +325,13 @@ void ArbiterCore::checkRunningFirings(double now) {
 }
 
 double ArbiterCore::nextDeadline() const {
+  double next = firingDeadline();
+  if (started_ && !ended()) next = std::min(next, next_control_state_);
+  if (pace_wait_ && state_ == RunState::Running) next = std::min(next, *pace_wait_);
+  return next;
+}
+
+double ArbiterCore::firingDeadline() const {
   double next = kNever;
   if (ended()) return final_sends_left_ > 0 ? next_final_send_ : kNever;
   if (state_ == RunState::Waiting)
@@ -361,6 +378,8 @@ void ArbiterCore::step(const std::string& event) {
   const Transition& tick = net_.transitions[tick_transition];
   int64_t silent_firings = 0;
   bool tick_opened = false;
+  bool tick_waits = false;  // held, or paced
+  const bool was_held = held_;
   while (true) {
     // After the last tick, nothing new starts once the tick transition is enabled.
     if (endingAtTickEnd() && isEnabled(tick, marking_)) break;
@@ -382,6 +401,11 @@ void ArbiterCore::step(const std::string& event) {
     }
     // The tick closes when nothing else can start.
     if (!progress && !endingAtTickEnd() && isEnabled(tick, marking_)) {
+      if (!nextTickMayStart()) {
+        tick_waits = true;
+        if (held_) note("held after tick " + std::to_string(tick_));
+        break;
+      }
       consumeInputs(tick, marking_);
       produceOutputs(tick, marking_);
       ++tick_;
@@ -407,6 +431,7 @@ void ArbiterCore::step(const std::string& event) {
   for (int e : unsent_fires_) sendFire(e);
   unsent_fires_.clear();
   if (tick_opened) sendStatus(beft::run_status_t::STATE_RUNNING, "tick " + std::to_string(tick_));
+  if (held_ && !was_held) noteHeld();
   if (anyRunning()) return;
   if (endingAtTickEnd() && isEnabled(tick, marking_)) {
     const int64_t ticks = tick_ + 1;
@@ -415,9 +440,73 @@ void ArbiterCore::step(const std::string& event) {
                            : "finished after " + std::to_string(ticks) + " ticks");
     return;
   }
+  if (tick_waits) return;  // not a deadlock: the tick transition is enabled
   fail("deadlock in tick " + std::to_string(tick_) +
        ": no transition is enabled and no expert is running; marking: " +
        describeMarking(net_, marking_));
+}
+
+bool ArbiterCore::nextTickMayStart() {
+  if (control_.holdsAfter(tick_)) {
+    held_ = true;
+    pace_wait_.reset();
+    return false;
+  }
+  const double earliest = pace_.earliestStart(tick_ + 1);
+  if (clock_.now() < earliest) {
+    pace_wait_ = earliest;
+    return false;
+  }
+  pace_wait_.reset();
+  return true;
+}
+
+void ArbiterCore::noteHeld() {
+  const bool paused = control_.requestedMode() == beft::run_control_t::MODE_PAUSE;
+  const std::string what = (paused ? "paused after tick " : "held after tick ") + std::to_string(tick_) +
+                           (paused ? "" : " (stepped)") + ", as " + control_.origin() + " asked";
+  log::info("run ", what, ": the next tick waits for RUN_CONTROL");
+  sendStatus(beft::run_status_t::STATE_RUNNING, "tick " + std::to_string(tick_) + ", " + what);
+  sendControlState();
+}
+
+void ArbiterCore::onRunControl(const beft::run_control_t& request) {
+  if (ended()) return;
+  const RunControl::Outcome outcome = control_.apply(request, tick_);
+  if (outcome == RunControl::Outcome::kRefused) {
+    if (last_refused_ != std::make_pair(request.origin, request.sequence))
+      log::warn("RUN_CONTROL from '", request.origin, "' (sequence ", request.sequence, ") refused: ",
+                control_.refusal());
+    last_refused_ = {request.origin, request.sequence};
+    return;
+  }
+  if (outcome == RunControl::Outcome::kOld || outcome == RunControl::Outcome::kRepeated) {
+    // Its answer may have been lost, or overtaken by another origin's: answer this origin.
+    output_.sendRunControlState(control_.answerTo(request.origin, tick_, held_));
+    return;
+  }
+  const int8_t mode = control_.requestedMode();
+  log::info("RUN_CONTROL from ", control_.origin(), " (sequence ", control_.sequence(), "): ",
+            mode == beft::run_control_t::MODE_RUN     ? std::string("run")
+            : mode == beft::run_control_t::MODE_PAUSE ? "pause after tick " + std::to_string(control_.holdAfterTick())
+                                                      : "step: hold after tick " + std::to_string(control_.holdAfterTick()),
+            " (at tick ", tick_, held_ ? ", held" : "", ")");
+  if (held_ && !control_.holdsAfter(tick_)) {
+    held_ = false;
+    pace_.restart(clock_.now(), tick_ + 1);  // real time counts from the resume
+    sendControlState();
+    step("resumed by " + control_.origin());
+    return;
+  }
+  sendControlState();
+  // Waiting for the pace when a pause came: hold at once.
+  if (pace_wait_ && state_ == RunState::Running && control_.holdsAfter(tick_)) step("paused by " + control_.origin());
+}
+
+void ArbiterCore::sendControlState() {
+  beft::run_control_t state = controlState();
+  output_.sendRunControlState(state);
+  next_control_state_ = clock_.now() + config_.control_state_period_s;
 }
 
 bool ArbiterCore::endingAtTickEnd() const {

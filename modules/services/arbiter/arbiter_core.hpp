@@ -10,7 +10,10 @@
 //   RUNNING  ticks: every step starts every enabled transition whose expert
 //            is idle (experts run one firing at a time), fires silent
 //            transitions at once, and fires the tick transition when nothing
-//            else can start;
+//            else can start, unless the run is held there (RUN_CONTROL:
+//            paused, or stepped to that tick) or the real-time pace says the
+//            next tick's time has not come: only the start of a tick waits,
+//            so a held or paced run computes what a fast one does;
 //   FINISHED when the tick transition is enabled after the last tick
 //            (--max-ticks) or after a stop request, and nothing is running;
 //   FAILED   on a deadlock, a "fail" policy, a startup timeout or an abort.
@@ -22,6 +25,7 @@
 #include <beft/frontier_t.hpp>
 #include <beft/heartbeat_t.hpp>
 #include <beft/marking_t.hpp>
+#include <beft/run_control_t.hpp>
 #include <beft/run_status_t.hpp>
 
 #include <cstdint>
@@ -32,6 +36,8 @@
 #include <vector>
 
 #include "lib/petri/petri_net.hpp"
+#include "services/arbiter/run_control.hpp"
+#include "services/arbiter/tick_pace.hpp"
 
 namespace beft::arbiter {
 
@@ -76,6 +82,8 @@ class ArbiterOutput {
   }
   virtual void sendMarking(const beft::marking_t& marking) = 0;
   virtual void sendRunStatus(const beft::run_status_t& status) = 0;
+  // RUN_CONTROL_STATE: how the run goes on, and the request last applied.
+  virtual void sendRunControlState(const beft::run_control_t& state) { (void)state; }
   virtual void firingEnded(const FiringRecord& record) = 0;
 };
 
@@ -97,6 +105,8 @@ struct ArbiterConfig {
   int final_status_repeats = 5;       // the final RUN_STATUS, sent this many times
   double final_status_period_s = 0.05;
   int64_t max_silent_firings_per_step = 100000;  // guard against a silent cycle
+  Pace pace = Pace::kFast;              // real-time: a tick starts no sooner than its simulated time
+  double control_state_period_s = 0.2;  // RUN_CONTROL_STATE repeated this often (and sent on a change)
 };
 
 enum class RunState { Waiting, Running, Finished, Failed };
@@ -122,6 +132,7 @@ struct ResumePoint {
   std::map<std::string, beft::fire_t> newest_fire;  // per expert, the newest FIRE logged
   std::set<int64_t> done_firing_ids;                // firings whose DONE the log holds
   int64_t highest_firing_id = 0;                    // of every FIRE logged
+  std::optional<beft::run_control_t> control;       // the last RUN_CONTROL_STATE: a held run holds again
 };
 
 class ArbiterCore {
@@ -144,6 +155,9 @@ class ArbiterCore {
   void onStopRequest(const std::string& why);
   // End the run now (FAILED), e.g. a second Ctrl-C.
   void onAbort(const std::string& why);
+  // A request on RUN_CONTROL: run on, pause after the current tick, or hold
+  // after a given tick (run_control.hpp); answered on RUN_CONTROL_STATE.
+  void onRunControl(const beft::run_control_t& request);
   // Re-sends, timeouts, heartbeats, startup reports: call when nextDeadline() passes.
   void onTimeAdvanced();
 
@@ -156,6 +170,10 @@ class ArbiterCore {
   bool done() const { return ended() && final_sends_left_ == 0; }
   const std::string& message() const { return message_; }
   int64_t tick() const { return tick_; }
+  // Held between ticks: tick() has finished and the next waits for a request.
+  bool held() const { return held_; }
+  // What RUN_CONTROL_STATE says now (utime 0).
+  beft::run_control_t controlState() const { return control_.state(tick_, held_); }
   const Marking& marking() const { return marking_; }
   const Net& net() const { return net_; }
   const ArbiterStats& stats() const { return stats_; }
@@ -196,6 +214,12 @@ class ArbiterCore {
 
   void beginRun();
   void step(const std::string& event);
+  // Whether the tick transition may fire now, opening tick_ + 1: not while
+  // the run is held after tick_, nor before the pace allows.
+  bool nextTickMayStart();
+  void noteHeld();
+  void sendControlState();
+  double firingDeadline() const;
   // send_now false: the FIRE goes out after the step's MARKING.
   void startFiring(int transition, int attempt, int64_t tick, bool send_now = true);
   void sendFire(int expert);
@@ -252,6 +276,12 @@ class ArbiterCore {
   double next_final_send_ = 0.0;
   std::map<int64_t, EndedFiring> recently_ended_;  // bounded window of ended ids
   std::vector<std::string> pending_events_;        // for the next MARKING's event text
+  RunControl control_;
+  TickPace pace_;
+  bool held_ = false;                   // the tick transition waits for a request
+  std::optional<double> pace_wait_;     // the tick transition waits for the pace until then
+  double next_control_state_ = 0.0;     // the next periodic RUN_CONTROL_STATE
+  std::pair<std::string, int64_t> last_refused_{"", -1};  // said once, not at every resend
   ArbiterStats stats_;
 };
 

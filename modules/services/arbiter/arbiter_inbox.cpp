@@ -11,6 +11,7 @@ void ArbiterInbox::deliverTo(ArbiterCore& core) {
     if (const auto* done = std::get_if<beft::done_t>(&event)) core.onDone(*done);
     else if (const auto* heartbeat = std::get_if<beft::heartbeat_t>(&event)) core.onHeartbeat(*heartbeat);
     else if (const auto* stop = std::get_if<StopRequest>(&event)) core.onStopRequest(stop->why);
+    else if (const auto* control = std::get_if<beft::run_control_t>(&event)) core.onRunControl(*control);
   }
   events_.clear();
 }

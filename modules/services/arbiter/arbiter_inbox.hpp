@@ -1,5 +1,5 @@
-// What the arbiter reads, declared once as ports: DONE, HEARTBEAT and
-// STOP_REQUEST queued as events for the core, and the beacons other runs
+// What the arbiter reads, declared once as ports: DONE, HEARTBEAT,
+// STOP_REQUEST and RUN_CONTROL queued as events for the core, and the beacons other runs
 // send on the URL (BEFT_RUNS), where it announces its own run too.
 #pragma once
 
@@ -12,6 +12,7 @@
 #include <beft/done_t.hpp>
 #include <beft/heartbeat_t.hpp>
 #include <beft/run_beacon_t.hpp>
+#include <beft/run_control_t.hpp>
 #include <beft/run_status_t.hpp>
 
 #include "lib/service/ports.hpp"
@@ -23,7 +24,7 @@ namespace beft::arbiter {
 struct StopRequest {
   std::string why;
 };
-using ArbiterEvent = std::variant<beft::done_t, beft::heartbeat_t, StopRequest>;
+using ArbiterEvent = std::variant<beft::done_t, beft::heartbeat_t, StopRequest, beft::run_control_t>;
 
 class ArbiterInbox : public service::PortSet {
  public:
@@ -49,6 +50,9 @@ class ArbiterInbox : public service::PortSet {
       [this](beft::run_status_t&& request) {
         events_.emplace_back(StopRequest{request.message.empty() ? "STOP_REQUEST" : request.message});
       }};
+  service::ReadPort<beft::run_control_t> control_in_{
+      *this, channels::kRunControl, "pause, step or run on, from viewers and beft-control; applied between ticks",
+      [this](beft::run_control_t&& request) { events_.emplace_back(std::move(request)); }};
   service::ReadPort<beft::run_beacon_t> beacons_in_{*this, channels::kRunBeacons,
                                                     "another run on this URL is said once",
                                                     [this](beft::run_beacon_t&& beacon) { onBeacon(beacon); },

@@ -35,9 +35,12 @@ std::string ArbiterProcess::description() const {
          "Waits for a heartbeat of every expert in the net, then each step starts every enabled\n"
          "transition (FIRE, re-sent until DONE) and ends it on DONE; the tick transition opens the\n"
          "next tick. Timeouts, lost heartbeats and failures apply the net's policy (retry, skip,\n"
-         "fail). Prints one line per firing on stdout. Ctrl-C ends the run after the current\n"
-         "tick, a second Ctrl-C or SIGTERM at once. Exit 0 when the run FINISHED, 1 when it\n"
-         "FAILED, 2 on bad input.";
+         "fail). Prints one line per firing on stdout. RUN_CONTROL (beft-control, a viewer)\n"
+         "pauses the run after the current tick, steps it to a given tick or lets it run on; it\n"
+         "holds between ticks, so it computes what a run that ran through does, and answers on\n"
+         "RUN_CONTROL_STATE. Ctrl-C ends the run after the current tick (held or not), a second\n"
+         "Ctrl-C or SIGTERM at once. Exit 0 when the run FINISHED, 1 when it FAILED, 2 on bad\n"
+         "input.";
 }
 
 ArbiterProcess::ArbiterProcess() {
@@ -71,11 +74,18 @@ void ArbiterProcess::addOptions(CLI::App& app) {
                  "(0: sleep at once); a tick waits for one DONE after another, and waking a sleeping process "
                  "costs more than the poll, on a virtual machine most (env BEFT_ARBITER_SPIN_US)")
       ->capture_default_str()->check(CLI::Range(0, 100000));
+  app.add_option("--pace", pace_,
+                 "fast: each tick starts as soon as the last has ended; real-time: not before its simulated "
+                 "time (tick * dt) has passed on the wall clock since the run, or its last resume, began, for "
+                 "a person watching (what the run computes is the same)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"fast", "real-time"}));
   app.add_option("--firing-log", firing_log_path_, "also write every firing to this CSV file");
   app.add_flag("--quiet", quiet_, "no line per firing on stdout");
 }
 
 void ArbiterProcess::onStartUp() {
+  config_.pace = parsePace(pace_);
   try {
     net_ = readPnmlFile(net_path_);
   } catch (const NetError& e) {
@@ -121,6 +131,7 @@ int ArbiterProcess::serve(service::Context& context) {
     }
   }
   log::info("on ", context.lcm_url, (config_.max_ticks > 0 ? ", " + std::to_string(config_.max_ticks) + " ticks" : ""),
+            config_.pace == Pace::kRealTime ? ", real-time pace" : "",
             " (Ctrl-C: end after this tick; twice, or SIGTERM: end now)");
   runArbiterLoop(*events, core, clock, &context.stop, spin_us_);
   firing_log->flush();

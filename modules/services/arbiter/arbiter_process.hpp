@@ -28,6 +28,7 @@ class ArbiterProcess : public service::Service {
   ArbiterConfig config_;
   bool quiet_ = false;
   int spin_us_ = 1000;
+  std::string pace_ = "fast";
   Net net_;
   ArbiterInbox inbox_;
   ArbiterOutlets outlets_;

@@ -7,6 +7,7 @@
 
 #include <sched.h>
 
+#include "lib/common/clocks.hpp"
 #include "lib/common/log.hpp"
 #include "lib/transport/publisher.hpp"
 #include "lib/wire/run_identity.hpp"
@@ -39,6 +40,12 @@ void LcmArbiterOutput::sendMarking(const beft::marking_t& marking) { outlets_.ma
 
 void LcmArbiterOutput::sendRunStatus(const beft::run_status_t& status) {
   outlets_.run_status.publish(lcm_, status);
+}
+
+void LcmArbiterOutput::sendRunControlState(const beft::run_control_t& state) {
+  beft::run_control_t stamped = state;
+  stamped.utime = wallMicros();
+  outlets_.control_state.publish(lcm_, stamped);
 }
 
 void LcmArbiterOutput::firingEnded(const FiringRecord& record) {

@@ -11,6 +11,7 @@
 
 #include <beft/fire_t.hpp>
 #include <beft/marking_t.hpp>
+#include <beft/run_control_t.hpp>
 #include <beft/run_status_t.hpp>
 
 #include "services/arbiter/arbiter_core.hpp"
@@ -34,6 +35,8 @@ struct ArbiterOutlets : service::PortSet {
                                                     "at start, every tick, and at the end"};
   service::WritePort<beft::frontier_t> frontier{*this, channels::kFrontier,
                                                 "before a firing, when DONEs told of new messages"};
+  service::WritePort<beft::run_control_t> control_state{
+      *this, channels::kRunControlState, "held or running, the tick, the request last applied: on a change and every 0.2 s"};
 };
 
 // Publishes the core's messages on their ports and writes the firing log.
@@ -44,6 +47,7 @@ class LcmArbiterOutput : public ArbiterOutput {
   FrontierMark sendFrontier(const beft::frontier_t& frontier) override;
   void sendMarking(const beft::marking_t& marking) override;
   void sendRunStatus(const beft::run_status_t& status) override;
+  void sendRunControlState(const beft::run_control_t& state) override;
   void firingEnded(const FiringRecord& record) override;
 
  private:

@@ -28,6 +28,9 @@ std::optional<ResumePoint> readResumePoint(const std::string& log_path, int64_t 
       if (!wire::decodeFrom(event.channel, event.data.data(), event.data.size(), fire)) continue;
       point.highest_firing_id = std::max(point.highest_firing_id, fire.firing_id);
       point.newest_fire[fire.expert] = fire;
+    } else if (event.channel == channels::kRunControlState) {
+      beft::run_control_t state{};
+      if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), state)) point.control = state;
     } else if (event.channel == channels::kDone) {
       beft::done_t done{};
       if (wire::decodeFrom(event.channel, event.data.data(), event.data.size(), done))

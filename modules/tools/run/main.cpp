@@ -6,12 +6,15 @@
 #include <chrono>
 #include <climits>
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "lib/launch/camera_sampling.hpp"
@@ -25,6 +28,7 @@
 #include "lib/launch/run_key.hpp"
 #include "lib/launch/run_parameters.hpp"
 #include "lib/launch/supervisor.hpp"
+#include "lib/launch/tcp_port.hpp"
 
 namespace {
 
@@ -69,7 +73,16 @@ struct Options {
   std::string record_camera = "all";
   long long seed = -1, max_ticks = -1;  // -1: the scenario's seed, duration / dt
   bool verbose = false, report = true, ssr = false;
+  bool real_time = false, fast = false;  // --real-time, --fast
+  bool watched = false;                  // someone watches the run live (a viewer): real time unless --fast
+  bool view = false;                     // --view: start beft-bridge, the viewer's server
+  int view_port = 8765;                  // its TCP port (0: a free one)
+  std::vector<std::string> externals;    // --external NAME=COMMAND: that expert's process replaced
 };
+
+// Whether the arbiter paces the ticks in real time: asked for, or someone
+// watches; --fast always wins (a watched run as fast as it goes).
+bool realTimePace(const Options& o) { return !o.fast && (o.real_time || o.watched); }
 
 std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app(
@@ -118,9 +131,29 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_flag("--ssr", o.ssr,
                "also start beft-ssr-bridge: hear the run in a running SoundScape Renderer (ssr-binaural "
                "--ip-server; --set ssr_server_host=HOST --set ssr_port=PORT if it is not at localhost:4711)");
+  auto* real_time = app.add_flag("--real-time", o.real_time,
+                                 "start each tick no sooner than its simulated time has passed on the wall clock "
+                                 "(the arbiter's --pace real-time), to watch the run; what it computes is the same");
+  app.add_flag("--fast", o.fast, "each tick as soon as the last has ended (the default, also when the run is watched)")
+      ->excludes(real_time);
+  app.add_flag("--view", o.view,
+               "also start beft-bridge: watch the run in a web browser at the URL it prints (or in Foxglove, "
+               "ws://127.0.0.1:PORT), pause, step and send the robot somewhere; the run is paced in real time "
+               "unless --fast");
+  app.add_option("--port", o.view_port, "with --view: the viewer's TCP port on 127.0.0.1 (0: a free one)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 65535));
+  app.add_option("--external", o.externals,
+                 "NAME=COMMAND: run this command instead of expert NAME's process, an expert written in another "
+                 "language that takes part through the run's bridge (modules/python/README.md), e.g. "
+                 "dw=\"python3 modules/python/examples/dw_expert.py\"; started, supervised and restarted as NAME's "
+                 "process, with --url of the bridge (started too) and --name NAME (repeatable)");
   app.add_flag("--verbose,-v", o.verbose, "echo every process's output (always in processes.log)");
   app.add_flag("!--no-report", o.report, "skip report.json and the pictures");
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
+  o.watched = o.watched || o.view;
+  // External experts need the bridge, not a viewer: on a free port unless given.
+  if (!o.externals.empty() && !o.view && app.count("--port") == 0) o.view_port = 0;
   return std::nullopt;
 }
 
@@ -141,8 +174,35 @@ std::map<std::string, std::string> launchArguments(const Options& o, const beft:
     args["ears"] = "1";
   }
   if (o.ssr) args["ssr"] = "1";
+  if (o.view || !o.externals.empty()) {  // only then: a launch file of the user's need not declare them
+    args["view"] = "1";
+    args["view_port"] = std::to_string(o.view_port);
+    args["view_log"] = o.out_dir + "/processes.log";
+  }
+  if (realTimePace(o)) args["pace"] = "real-time";  // only then: a launch file of the user's need not declare it
   for (const auto& [name, value] : beft::launch::parseSettings(o.sets)) args[name] = value;
   return args;
+}
+
+// --external NAME=COMMAND: the process NAME runs COMMAND (split at spaces;
+// a word naming a file here made absolute) and connects to the run's bridge.
+void useExternalExperts(const Options& o, beft::launch::LaunchSpec& spec) {
+  for (const auto& [name, command] : beft::launch::parseSettings(o.externals)) {
+    auto process = std::find_if(spec.processes.begin(), spec.processes.end(),
+                                [&name = name](const beft::launch::ProcessSpec& p) { return p.name == name; });
+    if (process == spec.processes.end())
+      throw beft::launch::LaunchError("--external " + name + ": the launch file starts no process " + name);
+    std::vector<std::string> words;
+    std::istringstream split(command);
+    for (std::string word; split >> word;)
+      words.push_back(std::filesystem::exists(word) ? absolutePath(word) : word);
+    if (words.empty()) throw beft::launch::LaunchError("--external " + name + ": no command");
+    process->command = words.front();
+    process->args.assign(words.begin() + 1, words.end());
+    for (const std::string& arg : {std::string("--url"), "ws://127.0.0.1:" + std::to_string(o.view_port),
+                                   std::string("--name"), name})
+      process->args.push_back(arg);
+  }
 }
 
 // The run's id: --run-id, else a fresh one (this host runs the arbiter
@@ -171,6 +231,26 @@ int writeReport(const Options& o, const beft::launch::SupervisorOptions& options
   return code;
 }
 
+// With --view: the viewer's port (a free one for 0); false, said, when it is taken.
+bool chooseViewPort(Options& o) {
+  if (o.view_port == 0) o.view_port = beft::launch::findFreeTcpPort();
+  if (o.view_port > 0 && beft::launch::tcpPortFree(o.view_port)) return true;
+  std::fprintf(stderr, "[run] error: TCP port %d for --view is taken (another viewer?): give --port N, or 0\n",
+               o.view_port);
+  return false;
+}
+
+// Prints the viewer's URL once its server listens (it starts with the other processes).
+void announceViewer(const Options& o) {
+  std::thread([port = o.view_port] {
+    if (beft::launch::waitForTcpListener("127.0.0.1", port, 60))
+      std::printf("[run] view: http://127.0.0.1:%d/\n", port);
+    else
+      std::printf("[run] warning: the viewer did not start listening on port %d (see processes.log)\n", port);
+    std::fflush(stdout);
+  }).detach();
+}
+
 int runMission(Options& o) {
   beft::scenario::Scenario scenario;
   try {
@@ -189,6 +269,7 @@ int runMission(Options& o) {
     std::fprintf(stderr, "[run] error: cannot create the run folder %s\n", o.out_dir.c_str());
     return 1;
   }
+  if ((o.view || !o.externals.empty()) && !chooseViewPort(o)) return 1;
   const int port = beft::launch::findFreeUdpPort();
   if (port < 0) {
     std::fprintf(stderr, "[run] error: no free UDP port for LCM\n");
@@ -207,6 +288,7 @@ int runMission(Options& o) {
     for (const auto& kill : o.kills) options.kills.push_back(beft::launch::parsePlannedKill(kill));
     options.key_file = beft::launch::runKeyFile(o.key_file);
     spec = beft::launch::loadLaunchFile(o.launch_file, launchArguments(o, scenario, options.lcm_url));
+    useExternalExperts(o, spec);
     const auto identity = beft::launch::identifyLaunch(spec, identityRequest(o, options.lcm_url));
     options.run_id = identity.run_id;
     options.run_origin = identity.origin;
@@ -217,6 +299,7 @@ int runMission(Options& o) {
   std::printf("[run] scenario %s (%s): up to %lld ticks of %.3g s, seed %lld, planner %s\n", scenario.name.c_str(),
               o.scenario_path.c_str(), o.max_ticks, scenario.dt, o.seed, o.planner.c_str());
   std::printf("[run] LCM %s; process output in %s/processes.log\n", options.lcm_url.c_str(), o.out_dir.c_str());
+  if (realTimePace(o)) std::printf("[run] real-time pace: a tick of %.3g s takes at least that long\n", scenario.dt);
   if (o.record_camera != "all") std::printf("[run] camera frames recorded: %s\n", o.record_camera.c_str());
   std::fflush(stdout);
 
@@ -226,6 +309,7 @@ int runMission(Options& o) {
     if (!beft::launch::writeRunParameters(spec, o.out_dir + "/" + beft::launch::kRunParametersFile))
       std::fprintf(stderr, "[run] warning: cannot write %s/%s: a replay will need --param\n", o.out_dir.c_str(),
                    beft::launch::kRunParametersFile);
+    if (o.view) announceViewer(o);
     outcome = beft::launch::supervise(spec, options);
   } catch (const beft::launch::LaunchError& e) {
     std::fprintf(stderr, "[run] error: %s\n", e.what());

@@ -1,0 +1,111 @@
+// BEFT's viewer: connects to the bridge that served this page (Foxglove
+// WebSocket protocol, JSON messages on BEFT's channel names), draws the run
+// and sends the viewer's requests back.
+import { FoxgloveClient } from "./foxglove_client.js";
+import { SceneView } from "./scene_view.js";
+import { ObjectLayer } from "./object_layer.js";
+import { RobotModel } from "./robot_model.js";
+import { PathLayer } from "./path_layer.js";
+import { MapLayer } from "./map_layer.js";
+import { HypothesisLayer, HypothesisList, HYPOTHESIS_STATES } from "./hypothesis_layer.js";
+import { AudioLayer } from "./audio_layer.js";
+import { WeightsPlot } from "./weights_plot.js";
+import { CameraView } from "./camera_view.js";
+import { LogList, showMarking, showTaskStack } from "./panels.js";
+import { Controls, wireButtons } from "./controls.js";
+import { Pointer } from "./pointer.js";
+import { createPageState, FrameClock, mirrorIntoDom } from "./page_state.js";
+import { topicHandlers } from "./topic_handlers.js";
+import { Timeline } from "./timeline.js";
+
+const byId = (id) => document.getElementById(id);
+
+function createParts() {
+  const view = new SceneView(byId("scene"));
+  return {
+    view,
+    objects: new ObjectLayer(view),
+    robot: new RobotModel(view),
+    path: new PathLayer(view),
+    map: new MapLayer(view),
+    hypotheses: new HypothesisLayer(view),
+    hypothesisList: new HypothesisList(),
+    audio: new AudioLayer(view),
+    weights: new WeightsPlot(byId("weights"), byId("weights-title")),
+    colour: new CameraView(byId("camera-colour"), byId("camera-colour-caption")),
+    depth: new CameraView(byId("camera-depth"), byId("camera-depth-caption")),
+    log: new LogList(byId("log")),
+    showTasks: (message) => showTaskStack(byId("tasks"), message),
+    showMarking: (message) => showMarking(byId("marking"), message),
+  };
+}
+
+function showLegend() {
+  const legend = byId("legend");
+  for (const state of HYPOTHESIS_STATES) {
+    const item = document.createElement("span");
+    item.className = "legend-item";
+    item.style.setProperty("--swatch", `#${state.colour.toString(16).padStart(6, "0")}`);
+    item.textContent = state.name;
+    legend.append(item);
+  }
+}
+
+function start() {
+  const state = createPageState();
+  const parts = createParts();
+  const timeline = new Timeline(state, byId("seek"));
+  const handlers = topicHandlers(state, parts);
+  // A viewer on another host sends controls with the bridge's token, given
+  // to the page as ?token=... and passed on to the WebSocket.
+  const token = new URLSearchParams(location.search).get("token");
+  const query = token ? `?token=${encodeURIComponent(token)}` : "";
+  const wsUrl = `${location.protocol === "https:" ? "wss" : "ws"}://${location.host}/${query}`;
+  const client = new FoxgloveClient(wsUrl, {
+    onOpen: () => (state.connected = true),
+    onClose: () => (state.connected = false),
+    onServerInfo: (info) => timeline.serverInfo(info),
+    onAdvertise: () => (state.topics = [...client.channelsById.values()].map((c) => c.topic)),
+    onMessage: (topic, text, receiveNs) => {
+      const handle = handlers.get(topic) || handlers.get(topic.replace(/^\//, ""));
+      if (!handle) return;
+      state.messages[topic] = (state.messages[topic] || 0) + 1;
+      timeline.received(receiveNs);
+      try {
+        handle(JSON.parse(text));
+      } catch (error) {
+        // One malformed message costs that message only.
+        console.warn(`${topic}: ${error}`);
+      }
+      parts.view.invalidate();
+    },
+    onTime: (ns) => timeline.time(ns),
+  });
+  client.want([...handlers.keys()].flatMap((topic) => [topic, `/${topic}`]));
+  const controls = new Controls(client);
+  wireButtons(controls, timeline);
+  const pointer = new Pointer(parts.view, parts, controls, byId("tooltip"));
+  showLegend();
+  window.beft = Object.assign(state, {
+    actions: controls,
+    sent: controls.sent,
+    screenOf: (x, y, z) => parts.view.screenOf(x, y, z),
+  });
+  animate(state, parts, pointer, timeline);
+}
+
+function animate(state, parts, pointer, timeline) {
+  const clock = new FrameClock(state);
+  const frame = (now) => {
+    clock.tick(now);
+    pointer.update();
+    parts.weights.draw();
+    if (parts.view.render()) state.renders++;
+    timeline.draw();
+    mirrorIntoDom(state);
+    requestAnimationFrame(frame);
+  };
+  requestAnimationFrame(frame);
+}
+
+start();
