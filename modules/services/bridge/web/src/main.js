@@ -77,7 +77,7 @@ function start() {
         // One malformed message costs that message only.
         console.warn(`${topic}: ${error}`);
       }
-      parts.view.invalidate();
+      parts.view.invalidate(true);
     },
     onTime: (ns) => timeline.time(ns),
   });
@@ -100,7 +100,7 @@ function animate(state, parts, pointer, timeline) {
     clock.tick(now);
     pointer.update();
     parts.weights.draw();
-    if (parts.view.render()) state.renders++;
+    if (parts.view.render(now)) state.renders++;
     timeline.draw();
     mirrorIntoDom(state);
     requestAnimationFrame(frame);

@@ -3,6 +3,9 @@
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 
+// The shortest time between two frames drawn for the run's changes [ms].
+const DATA_FRAME_MS = 100;
+
 THREE.Object3D.DEFAULT_UP.set(0, 0, 1);
 
 export class SceneView {
@@ -21,6 +24,8 @@ export class SceneView {
     // Drawn on the next animation frame after a change only: a held run or
     // a still view costs no CPU (software WebGL draws a frame in ~100 ms).
     this.needsRender = true;
+    this.dataChanged = false;
+    this.lastRenderMs = -Infinity;
     this.controls.addEventListener("change", () => this.invalidate());
     this.addLights();
     this.ground = this.makeGround();
@@ -86,14 +91,24 @@ export class SceneView {
     this.invalidate();
   }
 
-  invalidate() {
-    this.needsRender = true;
+  // What a person does (orbit, zoom, resize) is drawn on the next frame;
+  // what the run changes (fromData) at most every DATA_FRAME_MS: a run at
+  // full speed changes the scene a hundred times a second, and drawing each
+  // would take a core from the run beside it.
+  invalidate(fromData = false) {
+    if (fromData) this.dataChanged = true;
+    else this.needsRender = true;
   }
 
-  render() {
+  render(nowMs) {
     this.controls.update();
+    if (this.dataChanged && nowMs - this.lastRenderMs >= DATA_FRAME_MS) {
+      this.needsRender = true;
+      this.dataChanged = false;
+    }
     if (!this.needsRender) return false;
     this.needsRender = false;
+    this.lastRenderMs = nowMs;
     this.renderer.render(this.scene, this.camera);
     return true;
   }
