@@ -20,6 +20,39 @@ import { Timeline } from "./timeline.js";
 
 const byId = (id) => document.getElementById(id);
 
+// Camera images are the bulk of a run's traffic (a raw frame is a megabyte
+// of base64): only the newest of each is decoded, at most every
+// LATEST_ONLY_MS, so that a page on a slow machine keeps up with the rest.
+const LATEST_ONLY = new Set(["/camera/color", "/camera/depth"]);
+const LATEST_ONLY_MS = 250;
+
+// Hands `text` to the topic's handler; a malformed message costs itself only.
+function handleText(handle, topic, text) {
+  try {
+    handle(JSON.parse(text));
+  } catch (error) {
+    console.warn(`${topic}: ${error}`);
+  }
+}
+
+// The newest message of each LATEST_ONLY topic, handled by drain(now).
+class LatestOnly {
+  constructor() {
+    this.pending = new Map();
+    this.lastDrainMs = -Infinity;
+  }
+  keep(topic, handle, text) {
+    this.pending.set(topic, { handle, text });
+  }
+  drain(nowMs) {
+    if (this.pending.size === 0 || nowMs - this.lastDrainMs < LATEST_ONLY_MS) return false;
+    this.lastDrainMs = nowMs;
+    for (const [topic, { handle, text }] of this.pending) handleText(handle, topic, text);
+    this.pending.clear();
+    return true;
+  }
+}
+
 function createParts() {
   const view = new SceneView(byId("scene"));
   return {
@@ -56,6 +89,7 @@ function start() {
   const parts = createParts();
   const timeline = new Timeline(state, byId("seek"));
   const handlers = topicHandlers(state, parts);
+  const latest = new LatestOnly();
   // A viewer on another host sends controls with the bridge's token, given
   // to the page as ?token=... and passed on to the WebSocket.
   const token = new URLSearchParams(location.search).get("token");
@@ -71,12 +105,8 @@ function start() {
       if (!handle) return;
       state.messages[topic] = (state.messages[topic] || 0) + 1;
       timeline.received(receiveNs);
-      try {
-        handle(JSON.parse(text));
-      } catch (error) {
-        // One malformed message costs that message only.
-        console.warn(`${topic}: ${error}`);
-      }
+      if (LATEST_ONLY.has(topic)) return latest.keep(topic, handle, text);
+      handleText(handle, topic, text);
       parts.view.invalidate(true);
     },
     onTime: (ns) => timeline.time(ns),
@@ -91,13 +121,14 @@ function start() {
     sent: controls.sent,
     screenOf: (x, y, z) => parts.view.screenOf(x, y, z),
   });
-  animate(state, parts, pointer, timeline);
+  animate(state, parts, pointer, timeline, latest);
 }
 
-function animate(state, parts, pointer, timeline) {
+function animate(state, parts, pointer, timeline, latest) {
   const clock = new FrameClock(state);
   const frame = (now) => {
     clock.tick(now);
+    latest.drain(now);
     pointer.update();
     parts.weights.draw();
     if (parts.view.render(now)) state.renders++;
