@@ -1,0 +1,9 @@
+function core = new_core(process_name, ready_timeout_s)
+% What the live runner decides (lib/expert/live_runner.cpp, the Python
+% LiveCore), without the socket: the FIRE taken last, whether it has run,
+% the DONE it answered, and the end of the run.
+  core = struct('name', process_name, 'ready_timeout_s', ready_timeout_s, ...
+                'pending', [], 'pending_fired', false, 'pending_since', [], ...
+                'last_fired_id', -1, 'last_done', [], 'firing', false, 'waiting', false, ...
+                'run_ended', false, 'run_end_reason', '', 'firings_run', 0);
+end
