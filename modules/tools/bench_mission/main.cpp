@@ -4,9 +4,11 @@
 // LCM's own receive thread with the kernel channel filter, as before it; the
 // arbiter's poll for DONE, BEFT_ARBITER_SPIN_US=0; the background priority of
 // the recorder and blackboard, BEFT_BACKGROUND=0; the heap kept between
-// firings, BEFT_RETAIN_HEAP=0), alternately so that all share the machine's
-// state, and prints ticks per second, times real time and each baseline's
-// ratio to the shipped setup.
+// firings, BEFT_RETAIN_HEAP=0), and with the dynamic-weighting expert
+// replaced by its Python port (modules/python/examples/dw_expert.py, through
+// the run's bridge), alternately so that all share the machine's state, and
+// prints ticks per second, times real time and each baseline's ratio to the
+// shipped setup.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -36,10 +38,17 @@ struct RunFigures {
   bool completed = false;
 };
 
-// One setup of the run: its name and the environment setting it adds.
+// One setup of the run: its name, the environment setting it adds and the
+// arguments it adds to beft-run.
 struct Variant {
   std::string name, setting;  // setting: "" or NAME=VALUE
+  std::vector<std::string> run_args = {};
 };
+
+// Debian's interpreter: the one that sees Debian's python3-websockets.
+const char* const kPython = "/usr/bin/python3";
+const std::string kPythonDw =
+    std::string("dw=") + kPython + " " + BEFT_SOURCE_DIR + "/modules/python/examples/dw_expert.py";
 
 const char* const kSettingsUnderTest[] = {"BEFT_UDPM_RECEIVER=", "BEFT_UDPM_FILTER=", "BEFT_ARBITER_SPIN_US=",
                                           "BEFT_BACKGROUND=", "BEFT_RETAIN_HEAP="};
@@ -49,6 +58,7 @@ RunFigures runOnce(const std::string& scenario, const std::string& net, const st
   RunFigures figures;
   std::vector<std::string> args = {beft::ownBinDir() + "/beft-run", scenario, "--out", out_dir};
   if (!net.empty()) args.insert(args.end(), {"--net", net});
+  args.insert(args.end(), variant.run_args.begin(), variant.run_args.end());
   std::vector<char*> argv;
   for (auto& arg : args) argv.push_back(arg.data());
   argv.push_back(nullptr);
@@ -106,8 +116,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       "several times: as shipped, with LCM's own receive thread instead of the direct receiver "
       "(BEFT_UDPM_RECEIVER=0), without the arbiter's poll for DONE (BEFT_ARBITER_SPIN_US=0), without the "
       "background priority of the recorder and blackboard (BEFT_BACKGROUND=0) and with freed memory given "
-      "back to the kernel at once, glibc's default (BEFT_RETAIN_HEAP=0), one after the other, and "
-      "prints the median ticks per second and times real time of each and each one's ratio to the shipped "
+      "back to the kernel at once, glibc's default (BEFT_RETAIN_HEAP=0), and with the dw expert replaced by "
+      "its Python port through the run's bridge (--external dw=..., needs Debian's python3-websockets), one "
+      "after the other, and prints the median ticks per second and times real time of each and each one's ratio to the shipped "
       "setup. Target: >= 50x real time on yard.xml."};
   app.add_option("scenario", o.scenario, "scenario XML file")->capture_default_str()->check(CLI::ExistingFile);
   app.add_option("--net", o.net, "Petri net of the schedule (default: the run's, scenarios/nets/default.pnml)")
@@ -121,7 +132,8 @@ const std::vector<Variant> kVariants = {{"as shipped", ""},
                                         {"LCM receive", "BEFT_UDPM_RECEIVER=0"},
                                         {"no DONE poll", "BEFT_ARBITER_SPIN_US=0"},
                                         {"no background", "BEFT_BACKGROUND=0"},
-                                        {"heap given back", "BEFT_RETAIN_HEAP=0"}};
+                                        {"heap given back", "BEFT_RETAIN_HEAP=0"},
+                                        {"Python dw", "", {"--external", kPythonDw}}};
 
 // Per setup: ticks per second, times real time, and the same with start and stop.
 struct Figures {
