@@ -1,9 +1,9 @@
-#include "tools/net_draw/net_dot.hpp"
+#include "lib/petri/net_dot.hpp"
 
 #include <algorithm>
 #include <sstream>
 
-namespace beft::net_draw {
+namespace beft::arbiter {
 
 namespace {
 
@@ -38,7 +38,7 @@ std::string label(const std::string& id, const std::string& name) {
 
 }  // namespace
 
-std::string netToDot(const arbiter::Net& net, const std::optional<ShownMarking>& marking) {
+std::string netToDot(const Net& net, const std::optional<ShownMarking>& marking) {
   std::ostringstream dot;
   dot << "digraph " << quoted(net.id.empty() ? "net" : net.id) << " {\n";
   dot << "  rankdir=LR;\n  node [fontname=\"Helvetica\", fontsize=10];\n  edge [arrowsize=0.7];\n";
@@ -46,7 +46,7 @@ std::string netToDot(const arbiter::Net& net, const std::optional<ShownMarking>&
   if (marking) title += "\n" + marking->caption;
   dot << "  label=" << quoted(title) << "; labelloc=t;\n";
   for (size_t p = 0; p < net.places.size(); ++p) {
-    const arbiter::Place& place = net.places[p];
+    const Place& place = net.places[p];
     int tokens = place.initial_tokens;
     if (marking) {
       const auto found = marking->tokens.find(place.id);
@@ -54,24 +54,27 @@ std::string netToDot(const arbiter::Net& net, const std::optional<ShownMarking>&
     }
     const std::string dots = tokenText(tokens);
     dot << "  p" << p << " [shape=circle, width=0.45, fixedsize=true, label=" << quoted(dots)
-        << ", xlabel=" << quoted(label(place.id, place.name)) << (tokens > 0 ? ", penwidth=2" : "") << "];\n";
+        << ", xlabel=" << quoted(label(place.id, place.name)) << (tokens > 0 ? ", penwidth=2" : "")
+        << ", id=" << quoted("place:" + place.id) << ", class=\"place\"];\n";
   }
   for (size_t t = 0; t < net.transitions.size(); ++t) {
-    const arbiter::Transition& transition = net.transitions[t];
+    const Transition& transition = net.transitions[t];
     const bool running = marking && !transition.silent() &&
                          std::find(marking->running.begin(), marking->running.end(), transition.expert) !=
                              marking->running.end();
     dot << "  t" << t;
+    const std::string node_names = ", id=" + quoted("transition:" + transition.id) + ", class=" +
+                                   quoted(transition.expert.empty() ? "transition" : "transition expert-" + transition.expert);
     if (transition.silent() && !transition.is_tick && net.annotated) {
       dot << " [shape=box, style=filled, fillcolor=black, height=0.08, width=0.5, label=\"\", xlabel="
-          << quoted(transition.id) << "];\n";
+          << quoted(transition.id) << node_names << "];\n";
       continue;
     }
     std::string text = label(transition.id, transition.name);
     if (!transition.expert.empty()) text += "\n" + transition.expert;
     if (transition.is_tick) text += "\ntick";
     dot << " [shape=box, label=" << quoted(text) << (transition.is_tick ? ", peripheries=2" : "")
-        << (running ? ", style=filled, fillcolor=\"#ffd54f\"" : "") << "];\n";
+        << (running ? ", style=filled, fillcolor=\"#ffd54f\"" : "") << node_names << "];\n";
   }
   for (size_t t = 0; t < net.transitions.size(); ++t) {
     for (const auto& arc : net.transitions[t].inputs)
@@ -85,4 +88,4 @@ std::string netToDot(const arbiter::Net& net, const std::optional<ShownMarking>&
   return dot.str();
 }
 
-}  // namespace beft::net_draw
+}  // namespace beft::arbiter

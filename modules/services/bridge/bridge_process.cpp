@@ -22,6 +22,7 @@
 #include "lib/wire/run_discovery.hpp"
 #include "lib/transport/publisher.hpp"
 #include "lib/wire/run_identity.hpp"
+#include "services/bridge/net_drawing.hpp"
 #include "services/bridge/web_server.hpp"
 
 #ifndef BEFT_WEB_DIR
@@ -69,6 +70,8 @@ void BridgeProcess::addOptions(CLI::App& app) {
   app.add_option("--log-file", options_.log_file, "the processes' log to show on /log as it grows (\"\": none)");
   app.add_option("--run-id", options_.run_id, "the run to show (hex; default: BEFT_RUN_ID, else the one heard)");
   app.add_option("--scenario", options_.scenario, "the run's scenario, named to viewers");
+  app.add_option("--net", options_.net,
+                 "the run's Petri net (PNML): drawn by Graphviz for the page (/net.svg), which lights its marking");
   app.add_option("--max-clients", options_.max_clients, "WebSocket clients at once")
       ->capture_default_str()
       ->check(CLI::Range(1, 1024));
@@ -87,6 +90,11 @@ void BridgeProcess::onStartUp() {
   if (!std::filesystem::is_directory(options_.web_dir))
     log::warn("--web-dir ", options_.web_dir, " is no directory: the page is not served, the WebSocket is");
   if (!options_.log_file.empty()) tail_ = std::make_unique<LogTail>(options_.log_file);
+  if (!options_.net.empty()) {
+    std::string why;
+    net_svg_ = drawNetAsSvg(options_.net, why);
+    if (net_svg_.empty()) log::warn("--net ", options_.net, ": not drawn (", why, "); the page lists the marking");
+  }
 }
 
 HubOptions BridgeProcess::hubOptions(bool log_mode) const {
@@ -102,6 +110,7 @@ HubOptions BridgeProcess::hubOptions(bool log_mode) const {
     hub.metadata["start_ns"] = std::to_string(index_->start_utime * 1000);
     hub.metadata["end_ns"] = std::to_string(index_->end_utime * 1000);
   }
+  if (!net_svg_.empty()) hub.metadata["net"] = kNetDrawingPath;
   hub.time_capability = log_mode;
   return hub;
 }
@@ -134,8 +143,9 @@ int BridgeProcess::serve(service::Context& context) {
 
 namespace {
 
-WebServerOptions webOptions(const BridgeOptions& o) {
+WebServerOptions webOptions(const BridgeOptions& o, const std::string& net_svg) {
   WebServerOptions web;
+  if (!net_svg.empty()) web.documents[kNetDrawingPath] = {"image/svg+xml", net_svg};
   web.bind_address = o.bind;
   web.port = o.port;
   web.web_dir = o.web_dir;
@@ -158,7 +168,7 @@ int BridgeProcess::serveLive(service::Context& context, boost::asio::io_context&
   experts_ = std::make_unique<ExternalExperts>(*this);
   hub_->acceptExperts(*experts_);
   auto receiver = transport::openReceiver(context.lcm, context.lcm_url, selection(service::Delivery::kWakes), 64);
-  WebServer server(io, webOptions(options_), *hub_);
+  WebServer server(io, webOptions(options_, net_svg_), *hub_);
   hub_->attach(server);
   log::info("view: http://", options_.bind, ":", server.port(), "/ (", wire::describeRun(wire::runId()), "; ",
             receiver->description(), ")");
@@ -191,7 +201,7 @@ int BridgeProcess::serveLog(service::Context& context, boost::asio::io_context& 
   player_ = std::make_unique<LogPlayer>(*index_, [this](const wire::LogEvent& e) {
     hub_->onRunMessage(e.channel, e.data.data(), e.data.size(), static_cast<uint64_t>(e.timestamp) * 1000);
   });
-  WebServer server(io, webOptions(options_), *hub_);
+  WebServer server(io, webOptions(options_, net_svg_), *hub_);
   hub_->attach(server);
   log::info("view: http://", options_.bind, ":", server.port(), "/ (playing ", options_.log, ")");
   if (!options_.paused) player_->play(options_.speed);

@@ -40,8 +40,12 @@ struct BridgeOptions {
   std::string log_file;   // the processes' log to tail on /log
   std::string run_id;     // live mode: the run (default: BEFT_RUN_ID, else the one heard)
   std::string scenario;   // for the viewer's metadata
+  std::string net;        // the run's Petri net (PNML), drawn for the page at /net.svg
   int max_clients = 32;
 };
+
+// Where the page finds the run's net drawn (serverInfo's metadata "net" says so).
+inline constexpr const char* kNetDrawingPath = "/net.svg";
 
 class BridgeProcess : public service::Service, public ControlSink, public ExpertBus {
  public:
@@ -77,6 +81,7 @@ class BridgeProcess : public service::Service, public ControlSink, public Expert
   std::unique_ptr<LogIndex> index_;
   std::unique_ptr<LogPlayer> player_;
   std::unique_ptr<LogTail> tail_;
+  std::string net_svg_;  // the run's net drawn (--net), served at kNetDrawingPath
   service::RunControlClient run_control_{"viewer"};
   std::optional<beft::run_control_t> last_state_told_;
   lcm::LCM* lcm_ = nullptr;

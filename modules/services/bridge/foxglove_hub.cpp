@@ -122,12 +122,14 @@ void FoxgloveHub::publishDerived() {
 
 void FoxgloveHub::publishLogLines(const std::vector<std::string>& lines, uint64_t receive_ns) {
   Topic& topic = topics_.at(log_topic_);
-  if (topic.subscribers.empty()) return;
   for (const auto& line : lines) {
     const ProcessLine split = splitProcessLine(line);
     const auto message = foxglove::logLine(static_cast<int64_t>(receive_ns / 1000), levelOfLine(split.text),
                                            split.process, split.text);
-    sendData(topic, foxglove::dumpJson(message), receive_ns);
+    // Kept for viewers that come later: a log's processes.log is written before any of them connects.
+    recent_log_lines_.push_back({foxglove::dumpJson(message), receive_ns});
+    if (recent_log_lines_.size() > kRecentLogLines) recent_log_lines_.pop_front();
+    if (!topic.subscribers.empty()) sendData(topic, recent_log_lines_.back().payload, receive_ns);
   }
 }
 
@@ -284,6 +286,10 @@ void FoxgloveHub::sendKept(Client& client, Topic& topic, uint32_t subscription) 
       payload = foxglove::dumpJson(*message);
       receive_ns = last_receive_ns_;
     } else {
+      for (const auto& line : recent_log_lines_) {
+        client.queue.push({foxglove::messageDataFrame(subscription, line.receive_ns, line.payload), true, std::nullopt});
+      }
+      wake(client.info.id);
       return;
     }
   } catch (const std::exception&) {

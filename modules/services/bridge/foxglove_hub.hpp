@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <memory>
 #include <set>
@@ -132,6 +133,12 @@ class FoxgloveHub : public SessionHandler {
     uint64_t receive_ns = 0;
   };
   std::map<uint32_t, Kept> kept_;  // the newest message of each BEFT channel, for a new subscriber
+  struct LogLine {
+    std::string payload;  // foxglove.Log as JSON
+    uint64_t receive_ns = 0;
+  };
+  static constexpr std::size_t kRecentLogLines = 200;
+  std::deque<LogLine> recent_log_lines_;  // the newest lines of /log, for a new subscriber
   std::map<uint32_t, std::unique_ptr<Client>> clients_;
   uint64_t frames_dropped_ = 0;
   uint64_t last_receive_ns_ = 0;  // of the newest run message

@@ -170,6 +170,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     if (websocket::is_upgrade(request)) return upgrade(std::move(request));
     if (request.method() != http::verb::get && request.method() != http::verb::head)
       return reply(simple(request, http::status::method_not_allowed, "only GET and HEAD\n"));
+    if (const auto* document = documentFor(request.target())) return reply(served(request, *document));
     const auto file = resolveStaticFile(state_->options.web_dir, request.target());
     if (!file) return reply(simple(request, http::status::not_found, "not found\n"));
     http::file_body::value_type body;
@@ -191,6 +192,23 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     response.content_length(size);
     response.keep_alive(request.keep_alive());
     reply(std::move(response));
+  }
+
+  const ServedDocument* documentFor(std::string_view target) const {
+    const auto path = target.substr(0, target.find('?'));
+    const auto found = state_->options.documents.find(std::string(path));
+    return found == state_->options.documents.end() ? nullptr : &found->second;
+  }
+
+  static http::response<http::string_body> served(const http::request<http::string_body>& request,
+                                                  const ServedDocument& document) {
+    http::response<http::string_body> response{http::status::ok, request.version()};
+    response.set(http::field::content_type, document.content_type);
+    response.set(http::field::cache_control, "no-cache");
+    if (request.method() != http::verb::head) response.body() = document.body;
+    response.content_length(document.body.size());
+    response.keep_alive(request.keep_alive());
+    return response;
   }
 
   static http::response<http::string_body> simple(const http::request<http::string_body>& request,

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -42,10 +43,17 @@ class SessionHandler {
   virtual void onClose(uint32_t client) = 0;
 };
 
+// A document the server makes itself rather than reads from web_dir.
+struct ServedDocument {
+  std::string content_type;
+  std::string body;
+};
+
 struct WebServerOptions {
   std::string bind_address = "127.0.0.1";
   int port = 8765;                      // 0: any free port
   std::filesystem::path web_dir;        // the page's files
+  std::map<std::string, ServedDocument> documents;  // by request path ("/net.svg"), before web_dir
   std::string token;                    // "" : none; controls from other hosts are then refused
   std::size_t max_clients = 32;         // WebSocket clients at once; more are refused (503)
   std::size_t max_frame_bytes = 1 << 20;  // a bigger frame from a client closes its connection

@@ -2,20 +2,15 @@
 // transitions with their experts, and, given a run's log, the marking the
 // run left. Run as `./beft net draw FILE.pnml --out net.svg`.
 #include <CLI/CLI.hpp>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cstdio>
 #include <optional>
 
 #include "lib/common/command_line.hpp"
-#include "tools/net_draw/net_dot.hpp"
+#include "lib/petri/graphviz.hpp"
+#include "lib/petri/net_dot.hpp"
 #include "lib/petri/pnml_reader.hpp"
 #include "tools/net_draw/run_marking.hpp"
 #include "lib/common/whole_file.hpp"
-
-extern char** environ;
 
 namespace {
 
@@ -47,30 +42,10 @@ std::string extensionOf(const std::string& path) {
   return dot == std::string::npos || path.find('/', dot) != std::string::npos ? "" : path.substr(dot + 1);
 }
 
-// Runs dot -T<format> on the graph; "" on success, else what went wrong.
-std::string runGraphviz(const std::string& graph, const std::string& format, const std::string& out) {
-  char scratch[] = "/tmp/beft_net_XXXXXX.dot";
-  const int fd = mkstemps(scratch, 4);
-  if (fd < 0) return "cannot create a scratch file";
-  const bool written = write(fd, graph.data(), graph.size()) == static_cast<ssize_t>(graph.size());
-  close(fd);
-  if (!written) {
-    unlink(scratch);
-    return "cannot write a scratch file";
-  }
-  const std::string type = "-T" + format;
+// Runs dot -T<format> on the graph into `out`, whole or not at all.
+std::string drawInto(const std::string& graph, const std::string& format, const std::string& out) {
   const std::string partial = partialPathFor(out);
-  const char* argv[] = {"dot", type.c_str(), "-o", partial.c_str(), scratch, nullptr};
-  pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, "dot", nullptr, nullptr, const_cast<char* const*>(argv), environ);
-  int status = 0;
-  if (spawned == 0) waitpid(pid, &status, 0);
-  unlink(scratch);
-  if (spawned != 0) return "Graphviz's dot is not installed (./beft setup installs it: apt-get install graphviz)";
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    unlink(partial.c_str());
-    return "dot failed (see above)";
-  }
+  if (std::string error = arbiter::runGraphviz(graph, format, partial); !error.empty()) return error;
   try {
     commitPartial(partial, out);
   } catch (const std::exception& e) {
@@ -95,7 +70,7 @@ int draw(const Options& o) {
     for (const auto& problem : e.problems()) std::fprintf(stderr, "%s\n", problem.c_str());
     return 2;
   }
-  std::optional<net_draw::ShownMarking> marking;
+  std::optional<arbiter::ShownMarking> marking;
   if (!o.log.empty()) {
     try {
       marking = net_draw::lastMarkingOfRun(o.log, o.run_id);
@@ -112,7 +87,7 @@ int draw(const Options& o) {
         std::fprintf(stderr, "warning: the run's marking names place '%s', which this net has not (another net?)\n",
                      place.c_str());
   }
-  const std::string graph = net_draw::netToDot(net, marking);
+  const std::string graph = arbiter::netToDot(net, marking);
   if (format == "dot") {
     try {
       writeWholeFile(o.out, graph);
@@ -120,7 +95,7 @@ int draw(const Options& o) {
       std::fprintf(stderr, "beft-net-draw: %s\n", e.what());
       return 2;
     }
-  } else if (const std::string error = runGraphviz(graph, format, o.out); !error.empty()) {
+  } else if (const std::string error = drawInto(graph, format, o.out); !error.empty()) {
     std::fprintf(stderr, "beft-net-draw: %s\n", error.c_str());
     return 2;
   }

@@ -9,7 +9,7 @@
 
 namespace beft::net_draw {
 
-std::optional<ShownMarking> lastMarkingOfRun(const std::string& log_path, const std::string& run_id) {
+std::optional<arbiter::ShownMarking> lastMarkingOfRun(const std::string& log_path, const std::string& run_id) {
   const int64_t run = run_id.empty() ? wire::runOfLog(log_path) : wire::parseRunId(run_id);
   wire::LogReader log(log_path);
   wire::LogEvent event;
@@ -20,7 +20,7 @@ std::optional<ShownMarking> lastMarkingOfRun(const std::string& log_path, const 
     if (wire::guardedDecode(event.data.data(), event.data.size(), marking).ok()) newest = std::move(marking);
   }
   if (!newest) return std::nullopt;
-  ShownMarking shown;
+  arbiter::ShownMarking shown;
   for (int32_t i = 0; i < newest->num_places; ++i) shown.tokens[newest->place_ids[i]] = newest->tokens[i];
   shown.running = newest->running;
   shown.caption = "run " + wire::runIdText(run) + ", last marking: tick " + std::to_string(newest->tick) + ", step " +

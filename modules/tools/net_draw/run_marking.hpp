@@ -5,13 +5,13 @@
 #include <optional>
 #include <string>
 
-#include "tools/net_draw/net_dot.hpp"
+#include "lib/petri/net_dot.hpp"
 
 namespace beft::net_draw {
 
 // The newest marking_t of the log's run (or of run_id, hex, when given);
 // nullopt when the log holds none. Throws std::runtime_error when the log
 // cannot be read. Damaged records are skipped.
-std::optional<ShownMarking> lastMarkingOfRun(const std::string& log_path, const std::string& run_id = "");
+std::optional<arbiter::ShownMarking> lastMarkingOfRun(const std::string& log_path, const std::string& run_id = "");
 
 }  // namespace beft::net_draw

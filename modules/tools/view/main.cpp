@@ -17,6 +17,7 @@
 #include "lib/common/command_line.hpp"
 #include "lib/common/own_bin_dir.hpp"
 #include "lib/launch/tcp_port.hpp"
+#include "tools/view/run_net.hpp"
 
 namespace {
 
@@ -25,6 +26,7 @@ struct Options {
   int port = 8765;
   double speed = 1.0;
   bool paused = false;
+  std::string net;  // the run's Petri net (default: the one its processes.log names)
   std::vector<std::string> bridge_args;  // after --
 };
 
@@ -36,6 +38,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       "beft-view");
   app.add_option("log", o.log, "RUN.lcmlog, or a run's folder (logs/<run>/)")->required();
   app.add_option("--port", o.port, "TCP port (0: a free one)")->capture_default_str()->check(CLI::Range(0, 65535));
+  app.add_option("--net", o.net,
+                 "the run's Petri net (PNML), drawn in the page with its marking (default: given a run's folder, the "
+                 "net its processes.log names, if that file is there)")
+      ->check(CLI::ExistingFile);
   app.add_option("--speed", o.speed, "log seconds per second")->capture_default_str()->check(CLI::Range(0.01, 1000.0));
   app.add_flag("--paused", o.paused, "start paused");
   app.add_option("bridge_args", o.bridge_args, "after --: more options for beft-bridge (--bind, --token, --web-dir)");
@@ -49,7 +55,10 @@ std::vector<std::string> bridgeCommand(const Options& o) {
                                       "--speed", std::to_string(o.speed)};
   if (std::filesystem::is_directory(o.log)) {
     command.insert(command.end(), {"--log", o.log + "/run.lcmlog", "--log-file", o.log + "/processes.log"});
+    const std::string net = o.net.empty() ? beft::view::netOfRun(o.log + "/processes.log") : o.net;
+    if (!net.empty()) command.insert(command.end(), {"--net", net});
   } else {
+    if (!o.net.empty()) command.insert(command.end(), {"--net", o.net});
     command.insert(command.end(), {"--log", o.log});
   }
   if (o.paused) command.push_back("--paused");

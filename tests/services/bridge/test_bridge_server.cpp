@@ -179,6 +179,42 @@ TEST_F(LogBridge, ServesThePageAndNothingOutsideIt) {
   EXPECT_EQ(httpGet(bridge_->port(), "/nothing.js").status, 404);
 }
 
+// The run's net drawn for the page, with every place and transition named
+// (the page lights them), and the processes' log lines kept for a viewer
+// that connects after they were written.
+TEST(NetAndLogBridge, ServesTheNetDrawnAndTheLogLinesToALateViewer) {
+  const auto dir = std::filesystem::temp_directory_path() / ("beft_bridge_net_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string processes_log = (dir / "processes.log").string();
+  std::ofstream(processes_log) << "[arbiter] [arbiter] info: first line\n[vision] [vision] WARN: second line\n";
+  const std::string net = std::string(BEFT_SOURCE_DIR) + "/scenarios/nets/default.pnml";
+  BridgeProgram bridge({"--log", kLog, "--paused", "--net", net, "--log-file", processes_log, "--lcm-url", "memq://"});
+  ASSERT_TRUE(bridge.listening()) << bridge.output();
+  usleep(600 * 1000);  // the log file is read every 250 ms, before any viewer comes
+  Viewer viewer(bridge.port());
+  EXPECT_EQ(viewer.info["metadata"]["net"], "/net.svg");
+  const HttpReply drawing = httpGet(bridge.port(), "/net.svg");
+  EXPECT_EQ(drawing.status, 200);
+  EXPECT_EQ(drawing.content_type, "image/svg+xml");
+  EXPECT_NE(drawing.body.find("<svg"), std::string::npos);
+  EXPECT_NE(drawing.body.find("id=\"place:p_tick_start\""), std::string::npos) << drawing.body.substr(0, 400);
+  EXPECT_NE(drawing.body.find("transition expert&#45;vision"), std::string::npos);
+  viewer.subscribe(3, "/log");
+  const json first = json::parse(viewer.client.readData(3).payload);
+  const json second = json::parse(viewer.client.readData(3).payload);
+  EXPECT_EQ(first["message"], "[arbiter] info: first line");
+  EXPECT_EQ(second["name"], "vision");
+  EXPECT_EQ(bridge.stop(), 0) << bridge.output();
+  std::filesystem::remove_all(dir);
+}
+
+// Without --net there is no drawing: the page lists the marking instead.
+TEST_F(LogBridge, HasNoNetDrawingWithoutANet) {
+  Viewer viewer(bridge_->port());
+  EXPECT_FALSE(viewer.info["metadata"].contains("net"));
+  EXPECT_EQ(httpGet(bridge_->port(), "/net.svg").status, 404);
+}
+
 TEST_F(LogBridge, PlaybackControlsFromThisHostWork) {
   Viewer viewer(bridge_->port());
   const uint64_t start_ns = std::stoull(viewer.info["metadata"]["start_ns"].get<std::string>());

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "tools/net_draw/net_dot.hpp"
+#include "lib/petri/net_dot.hpp"
 #include "lib/petri/pnml_reader.hpp"
 #include "lib/wire/run_identity.hpp"
 #include "tools/net_draw/run_marking.hpp"
@@ -22,7 +22,7 @@ const std::string kDefaultNet = system_test::sourceDir() + "/scenarios/nets/defa
 
 TEST(NetDot, ShowsTokensExpertsAndTheTick) {
   const arbiter::Net net = arbiter::readPnmlFile(kDefaultNet);
-  const std::string dot = net_draw::netToDot(net, std::nullopt);
+  const std::string dot = arbiter::netToDot(net, std::nullopt);
   const int start = net.placeIndex("p_tick_start");
   ASSERT_GE(start, 0);
   EXPECT_NE(dot.find("p" + std::to_string(start) + " [shape=circle, width=0.45, fixedsize=true, label=\"\u25CF\""),
@@ -33,6 +33,19 @@ TEST(NetDot, ShowsTokensExpertsAndTheTick) {
   size_t arcs = 0;
   for (size_t at = dot.find(" -> "); at != std::string::npos; at = dot.find(" -> ", at + 1)) ++arcs;
   EXPECT_EQ(arcs, net.arcCount());
+}
+
+// The viewer lights a drawn net by these names: one per place and transition.
+TEST(NetDot, NamesEveryNodeForAPageToFind) {
+  const arbiter::Net net = arbiter::readPnmlFile(kDefaultNet);
+  const std::string dot = arbiter::netToDot(net, std::nullopt);
+  for (const auto& place : net.places)
+    EXPECT_NE(dot.find("id=\"place:" + place.id + "\", class=\"place\""), std::string::npos) << place.id;
+  for (const auto& transition : net.transitions) {
+    const std::string classes = transition.expert.empty() ? "transition" : "transition expert-" + transition.expert;
+    EXPECT_NE(dot.find("id=\"transition:" + transition.id + "\", class=\"" + classes + "\""), std::string::npos)
+        << transition.id;
+  }
 }
 
 // A log with two runs' markings; the drawing takes the newest of the one asked for.
@@ -79,7 +92,7 @@ TEST(RunMarking, TheNewestMarkingOfTheRunAskedFor) {
   EXPECT_TRUE(b->running.empty());
 
   const arbiter::Net net = arbiter::readPnmlFile(kDefaultNet);
-  const std::string dot = net_draw::netToDot(net, a);
+  const std::string dot = arbiter::netToDot(net, a);
   const int tasks = net.placeIndex("p_tasks_in");
   const int start = net.placeIndex("p_tick_start");
   EXPECT_NE(dot.find("p" + std::to_string(tasks) + " [shape=circle, width=0.45, fixedsize=true, label=\"\u25CF\""),

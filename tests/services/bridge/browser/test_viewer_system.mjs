@@ -17,6 +17,7 @@ const part = option("--part", "all");
 const scenario = join(source, "scenarios", "yard.xml");
 const STABLE_MS = 3000;  // how long a held tick must stay put to count as held
 const LOG_TICKS = 80;
+const defaultNet = join(source, "scenarios", "nets", "default.pnml");
 
 function preconditions() {
   for (const program of ["beft-run", "beft-bridge"])
@@ -24,6 +25,11 @@ function preconditions() {
   const help = runProgram(join(bin, "beft-run"), ["--help"], { cwd: source, timeoutMs: 20000 }).output;
   if (!help.includes("--view")) skip("beft-run has no --view (the run's bridge) yet");
   if (!existsSync(join(bin, "..", "share", "beft", "web", "app.js"))) skip("the viewer page is not built (target beft_web)");
+}
+
+// The places of the run's net: every <place> element of the PNML file.
+function netPlaceCount() {
+  return (readFileSync(defaultNet, "utf8").replace(/<!--[\s\S]*?-->/g, "").match(/<place\b/g) || []).length;
 }
 
 // The scenario's objects: every <object> element of the file.
@@ -76,6 +82,12 @@ async function liveRun(checks, browser) {
       assert.deepEqual(page.errors, []);
       await screenshot(page, outDir, "live_running");
     });
+    await checks.run("live: the run's net is drawn as `net draw` lays it out and lights the experts firing", async () => {
+      // Each tick lights every expert of the schedule in turn; a frame shows only the newest marking.
+      await waitForState(page, (s) => s.netDrawn && s.netLitSeen.length >= 3, null, 60000);
+      const places = await page.evaluate(() => document.querySelectorAll("#net svg g.place").length);
+      assert.equal(places, netPlaceCount());
+    });
     await page.close();
   } finally {
     await stopProcess(run);
@@ -114,7 +126,7 @@ async function loggedRun(checks, browser) {
   const states = robotStates(readLogEvents(logPath));
   assert.ok(states.length > LOG_TICKS / 2, `${logPath}: ${states.length} robot states`);
   const port = await freePort();
-  const bridge = startProcess(join(bin, "beft-bridge"), ["--log", logPath, "--port", String(port)],
+  const bridge = startProcess(join(bin, "beft-bridge"), ["--log", logPath, "--port", String(port), "--net", defaultNet],
     { cwd: source, logFile: join(outDir, "log_bridge.out") });
   try {
     await waitForHttp(`http://127.0.0.1:${port}/`, bridge);
@@ -129,6 +141,11 @@ async function loggedRun(checks, browser) {
     });
     await checks.run("log: seeking back shows the earlier pose", async () => {
       await seekAndCompare(page, states, Math.floor(LOG_TICKS * 0.25), "log_seek_early");
+    });
+    await checks.run("log: the net is drawn with the marking where the log stands", async () => {
+      const state = await waitForState(page, (s) => s.netDrawn && s.markingStep >= 0, null, 60000);
+      const shown = await page.evaluate(() => document.querySelectorAll("#net svg g.marked, #net svg g.lit").length);
+      assert.ok(shown > 0, `step ${state.markingStep}: no place marked, no transition lit`);
     });
     await checks.run("log: step plays exactly one tick on", async () => {
       const held = await heldTick(page);

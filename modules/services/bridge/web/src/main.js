@@ -12,6 +12,7 @@ import { AudioLayer } from "./audio_layer.js";
 import { WeightsPlot } from "./weights_plot.js";
 import { CameraView } from "./camera_view.js";
 import { LogList, showMarking, showTaskStack } from "./panels.js";
+import { NetDrawing } from "./net_drawing.js";
 import { Controls, wireButtons } from "./controls.js";
 import { Pointer } from "./pointer.js";
 import { createPageState, FrameClock, mirrorIntoDom } from "./page_state.js";
@@ -53,9 +54,11 @@ class LatestOnly {
   }
 }
 
-function createParts() {
+function createParts(state) {
   const view = new SceneView(byId("scene"));
+  const net = new NetDrawing(byId("net"), state);
   return {
+    net,
     view,
     objects: new ObjectLayer(view),
     robot: new RobotModel(view),
@@ -69,7 +72,11 @@ function createParts() {
     depth: new CameraView(byId("camera-depth"), byId("camera-depth-caption")),
     log: new LogList(byId("log")),
     showTasks: (message) => showTaskStack(byId("tasks"), message),
-    showMarking: (message) => showMarking(byId("marking"), message),
+    // On the drawn net when there is one; the marking is listed as well.
+    showMarking: (message) => {
+      net.show(message);
+      showMarking(byId("marking"), message);
+    },
   };
 }
 
@@ -86,7 +93,7 @@ function showLegend() {
 
 function start() {
   const state = createPageState();
-  const parts = createParts();
+  const parts = createParts(state);
   const timeline = new Timeline(state, byId("seek"));
   const handlers = topicHandlers(state, parts);
   const latest = new LatestOnly();
@@ -98,7 +105,11 @@ function start() {
   const client = new FoxgloveClient(wsUrl, {
     onOpen: () => (state.connected = true),
     onClose: () => (state.connected = false),
-    onServerInfo: (info) => timeline.serverInfo(info),
+    onServerInfo: (info) => {
+      timeline.serverInfo(info);
+      const drawing = (info.metadata || {}).net;
+      if (drawing && !state.netDrawn) parts.net.load(drawing).catch((error) => console.warn(`net: ${error}`));
+    },
     onAdvertise: () => (state.topics = [...client.channelsById.values()].map((c) => c.topic)),
     onMessage: (topic, text, receiveNs) => {
       const handle = handlers.get(topic) || handlers.get(topic.replace(/^\//, ""));

@@ -29,6 +29,10 @@ export function createPageState() {
     taskCount: 0,
     logLines: 0,
     markingStep: -1,
+    netDrawn: false,         // the run's net drawn (metadata "net")
+    netLit: [],              // experts whose transitions are lit now
+    netLitSeen: [],          // every expert lit on the drawing so far
+    netMarked: [],           // places holding tokens now, on the drawing
     colourFrames: 0,
     depthFrames: 0,
     frameTimeMs: 0,          // rolling mean of requestAnimationFrame intervals
