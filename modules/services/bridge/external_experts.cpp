@@ -162,6 +162,9 @@ ExpertStatus ExternalExperts::announce(uint32_t client, const std::string& paylo
     }
   }
   sessions_[client] = Session{name, std::set<std::string>(writes.begin(), writes.end())};
+  // A restarted expert runs its unanswered firing again: what it published then is on the bus already.
+  const auto& unanswered = since_done_[name];
+  owed_again_[name] = std::deque<Sent>(unanswered.begin(), unanswered.end());
   return {foxglove::kStatusInfo,
           "expert " + name + " accepted: reads " + joined(reads) + "; writes " + joined(writes) +
               ", DONE, HEARTBEAT" + resumed,
@@ -211,10 +214,32 @@ ExpertStatus ExternalExperts::publish(uint32_t client, const std::string& topic,
   if (isAnswerChannel(topic))
     if (const std::string problem = checkAnswer(session, topic, bytes); !problem.empty())
       return refuse(session.name, topic + " refused: " + problem);
-  if (const std::string problem = bus_.publish(topic, bytes); !problem.empty())
+  Sent sent{topic, std::move(bytes)};
+  if (alreadyOnTheBus(session.name, sent)) {
+    ++resent_taken_;
+    return {};
+  }
+  if (const std::string problem = bus_.publish(topic, sent.second); !problem.empty())
     return {foxglove::kStatusError, topic + ": " + problem, "beft.expert." + session.name + ".refused"};
   ++published_;
+  if (topic == channels::kDone.name) {
+    since_done_[session.name].clear();
+    owed_again_[session.name].clear();
+  } else if (!isAnswerChannel(topic)) {
+    since_done_[session.name].push_back(std::move(sent));
+  }
   return {};
+}
+
+bool ExternalExperts::alreadyOnTheBus(const std::string& name, const Sent& sent) {
+  auto owed = owed_again_.find(name);
+  if (owed == owed_again_.end() || owed->second.empty() || isAnswerChannel(sent.first)) return false;
+  if (owed->second.front() == sent) {
+    owed->second.pop_front();
+    return true;
+  }
+  owed->second.clear();  // it computed something else this time: from here on, everything is new
+  return false;
 }
 
 }  // namespace beft::bridge

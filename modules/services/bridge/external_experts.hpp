@@ -5,14 +5,19 @@
 // DONE and on HEARTBEAT is checked against the .lcm definitions (jsonToLcm)
 // and the message guard, and published on the run's channel like a C++
 // expert's message. Anything else is refused with a status naming the
-// channel and the field, and nothing reaches the bus. No socket and no LCM
-// here: the bridge gives it a Bus.
+// channel and the field, and nothing reaches the bus. An expert killed
+// between an output and its DONE runs that firing again when restarted: the
+// outputs it sends again, identical to those already on the bus, are taken
+// and not published twice, so the run's messages do not change. No socket
+// and no LCM here: the bridge gives it a Bus.
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <beft/done_t.hpp>
@@ -70,6 +75,8 @@ class ExternalExperts {
   // The name of the expert a client is, or "" (not announced).
   std::string nameOf(uint32_t client) const;
   std::size_t published() const { return published_; }
+  // Outputs a restarted expert sent again that were on the bus already.
+  std::size_t resentTaken() const { return resent_taken_; }
   std::size_t refused() const { return refused_; }
 
  private:
@@ -80,8 +87,17 @@ class ExternalExperts {
   ExpertStatus refuse(const std::string& name, const std::string& why);
   std::string checkAnswer(const Session& session, const std::string& channel, std::vector<uint8_t>& bytes);
 
+  using Sent = std::pair<std::string, std::vector<uint8_t>>;  // channel, encoded bytes
+  // True when `sent` is the next output a restarted expert owes again (on the bus already).
+  bool alreadyOnTheBus(const std::string& name, const Sent& sent);
+
   ExpertBus& bus_;
   std::map<uint32_t, Session> sessions_;
+  // By expert name (outliving its clients): outputs published since its last
+  // DONE, and, for an expert restarted since, those it has yet to send again.
+  std::map<std::string, std::vector<Sent>> since_done_;
+  std::map<std::string, std::deque<Sent>> owed_again_;
+  std::size_t resent_taken_ = 0;
   std::map<uint32_t, std::vector<std::string>> histories_;
   std::size_t published_ = 0, refused_ = 0;
 };

@@ -155,3 +155,47 @@ TEST_F(ExternalExpertsTest, AnExpertRestartedMidRunGetsTheRunsHistoryBeforeItsAc
 }
 
 }  // namespace
+
+// Killed between an output and its DONE, a restarted expert runs the firing
+// again: its identical output is on the bus already and is not sent twice;
+// after its DONE, the next firing's outputs are published as ever.
+TEST_F(ExternalExpertsTest, ARestartedExpertsRepeatedOutputIsNotPublishedTwice) {
+  experts.announce(1, kAnnouncement);
+  ASSERT_TRUE(experts.publish(1, "DYNAMIC_WEIGHTS", kWeights).message.empty());
+  experts.forget(1);  // killed before its DONE
+  ASSERT_EQ(experts.announce(2, kAnnouncement).level, foxglove::kStatusInfo);
+  EXPECT_TRUE(experts.publish(2, "DYNAMIC_WEIGHTS", kWeights).message.empty());
+  EXPECT_TRUE(experts.publish(2, "DONE", done("dw")).message.empty());
+  ASSERT_EQ(bus.sent.size(), 2u);
+  EXPECT_EQ(bus.sent[0].first, "DYNAMIC_WEIGHTS");
+  EXPECT_EQ(bus.sent[1].first, "DONE");
+  EXPECT_EQ(experts.resentTaken(), 1u);
+  EXPECT_TRUE(experts.publish(2, "DYNAMIC_WEIGHTS", kWeights).message.empty());  // the next firing's
+  EXPECT_EQ(bus.sent.size(), 3u);
+}
+
+// A restarted expert that computes something else this time publishes it:
+// the bridge drops only byte-identical repeats.
+TEST_F(ExternalExpertsTest, ARestartedExpertsDifferentOutputIsPublished) {
+  experts.announce(1, kAnnouncement);
+  experts.publish(1, "DYNAMIC_WEIGHTS", kWeights);
+  experts.forget(1);
+  experts.announce(2, kAnnouncement);
+  std::string other = kWeights;
+  other.replace(other.find("\"weight\": 0.5"), 13, "\"weight\": 0.7");
+  EXPECT_TRUE(experts.publish(2, "DYNAMIC_WEIGHTS", other).message.empty());
+  EXPECT_EQ(bus.sent.size(), 2u);
+  EXPECT_EQ(experts.resentTaken(), 0u);
+}
+
+// An expert answered (DONE) before it died owes nothing again.
+TEST_F(ExternalExpertsTest, AnExpertThatAnsweredBeforeItDiedOwesNothing) {
+  experts.announce(1, kAnnouncement);
+  experts.publish(1, "DYNAMIC_WEIGHTS", kWeights);
+  experts.publish(1, "DONE", done("dw"));
+  experts.forget(1);
+  experts.announce(2, kAnnouncement);
+  EXPECT_TRUE(experts.publish(2, "DYNAMIC_WEIGHTS", kWeights).message.empty());
+  EXPECT_EQ(bus.sent.size(), 3u);
+  EXPECT_EQ(experts.resentTaken(), 0u);
+}
