@@ -1,8 +1,9 @@
 #!/bin/sh
 # The geometry expert in Octave (modules/matlab/examples) takes part in a
 # yard run through the bridge and the run writes exactly the data messages
-# of the same run with the C++ geometry (beft-diff); its --interface is the
-# C++ expert's. Prints both runs' wall times. Skipped (77) without Octave,
+# of the same run with the C++ geometry (beft-diff), also when it is killed
+# mid-run and restarted; its --interface is the C++ expert's. Prints the
+# runs' wall times. Skipped (77) without Octave,
 # its Java interface or the client's jar.
 #   yard_run.sh BIN_DIR SOURCE_DIR WORK_DIR JAR
 bin="$1" source="$2" work="$3" jar="$4"
@@ -33,10 +34,18 @@ run() {  # run NAME [ARGS...]: a yard run into WORK/NAME, its wall time printed
 }
 run cpp
 run octave --external "geometry=$octave $geometry"
+run octave_killed --external "geometry=$octave $geometry" --kill geometry@60
 
 if ! grep -q "\[geometry\] run ended" "$work/octave/processes.log"; then
   echo "the Octave geometry did not run to the end of the run:"
   grep "geometry" "$work/octave/processes.log" | tail -20
   exit 1
 fi
-"$bin/beft-diff" "$work/cpp/run.lcmlog" "$work/octave/run.lcmlog"
+if ! grep -q "\[geometry\] resumed from the run's history" "$work/octave_killed/processes.log"; then
+  echo "the killed Octave geometry did not resume from the run's history:"
+  grep "geometry" "$work/octave_killed/processes.log" | tail -20
+  exit 1
+fi
+"$bin/beft-diff" "$work/cpp/run.lcmlog" "$work/octave/run.lcmlog" || exit 1
+echo "killed at tick 60 and restarted:"
+"$bin/beft-diff" "$work/cpp/run.lcmlog" "$work/octave_killed/run.lcmlog"
