@@ -48,7 +48,7 @@ std::string queryValue(beast::string_view target, const std::string& name) {
   return "";
 }
 
-bool offersSubprotocol(beast::string_view offered) {
+bool offersSubprotocol(beast::string_view offered, beast::string_view wanted) {
   std::size_t start = 0;
   while (start <= offered.size()) {
     std::size_t end = offered.find(',', start);
@@ -56,10 +56,19 @@ bool offersSubprotocol(beast::string_view offered) {
     beast::string_view item = offered.substr(start, end - start);
     while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
     while (!item.empty() && item.back() == ' ') item.remove_suffix(1);
-    if (item == kSubprotocol) return true;
+    if (item == wanted) return true;
     start = end + 1;
   }
   return false;
+}
+
+// The subprotocol to answer with: foxglove.websocket.v1 when offered, else
+// foxglove.sdk.v1 (what newer Foxglove clients offer: the same messages);
+// "" when the client offers neither (it is served all the same).
+std::string chosenSubprotocol(beast::string_view offered) {
+  for (const char* known : {kSubprotocol, kSubprotocolSdk})
+    if (offersSubprotocol(offered, known)) return known;
+  return "";
 }
 
 }  // namespace
@@ -71,11 +80,11 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
       : ws_(std::move(socket)), state_(std::move(state)), info_(std::move(info)) {}
 
   void start(http::request<http::string_body> request) {
-    const bool subprotocol = offersSubprotocol(request[http::field::sec_websocket_protocol]);
+    const std::string subprotocol = chosenSubprotocol(request[http::field::sec_websocket_protocol]);
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.set_option(websocket::stream_base::decorator([subprotocol](websocket::response_type& response) {
       response.set(http::field::server, "beft-bridge");
-      if (subprotocol) response.set(http::field::sec_websocket_protocol, kSubprotocol);
+      if (!subprotocol.empty()) response.set(http::field::sec_websocket_protocol, subprotocol);
     }));
     ws_.read_message_max(state_->options.max_frame_bytes);
     ws_.async_accept(request, [self = shared_from_this()](beast::error_code error) { self->onAccepted(error); });

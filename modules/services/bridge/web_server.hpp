@@ -1,5 +1,6 @@
 // The bridge's one port: plain HTTP for the web page's files, and WebSocket
-// upgrades (subprotocol foxglove.websocket.v1) handed to a SessionHandler.
+// upgrades (subprotocol foxglove.websocket.v1 or foxglove.sdk.v1) handed to a
+// SessionHandler.
 // Everything runs on one io_context thread: no locks, and a slow client only
 // ever waits on its own socket. What is sent is pulled from the handler when
 // the socket has taken the previous frame, so what waits for a client that
@@ -18,6 +19,7 @@
 namespace beft::bridge {
 
 inline constexpr const char* kSubprotocol = "foxglove.websocket.v1";
+inline constexpr const char* kSubprotocolSdk = "foxglove.sdk.v1";
 
 struct OutgoingFrame {
   bool text = true;

@@ -127,7 +127,7 @@ struct WsClient::Impl {
 };
 
 WsClient::WsClient(const std::string& address, int port, const std::string& target, const std::string& local_address,
-                   int receive_buffer_bytes)
+                   int receive_buffer_bytes, const std::string& subprotocols)
     : impl_(std::make_unique<Impl>()) {
   auto& socket = impl_->ws.next_layer();
   socket.open(tcp::v4());
@@ -135,7 +135,7 @@ WsClient::WsClient(const std::string& address, int port, const std::string& targ
   if (!local_address.empty()) socket.bind(tcp::endpoint(net::ip::make_address(local_address), 0));
   socket.connect(tcp::endpoint(net::ip::make_address(address), static_cast<unsigned short>(port)));
   impl_->ws.set_option(websocket::stream_base::decorator(
-      [](websocket::request_type& request) { request.set(http::field::sec_websocket_protocol, "foxglove.websocket.v1"); }));
+      [subprotocols](websocket::request_type& request) { request.set(http::field::sec_websocket_protocol, subprotocols); }));
   websocket::response_type response;
   impl_->ws.handshake(response, address + ":" + std::to_string(port), target);
   subprotocol_ = std::string(response[http::field::sec_websocket_protocol]);

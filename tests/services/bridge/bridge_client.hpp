@@ -50,10 +50,11 @@ bool parseMessageData(const Frame& frame, MessageData& data);
 
 class WsClient {
  public:
-  // Connects and shakes hands (subprotocol foxglove.websocket.v1), from
-  // `local_address` when given. Throws on failure.
+  // Connects and shakes hands (offering `subprotocols`, by default
+  // foxglove.websocket.v1), from `local_address` when given. Throws on failure.
   WsClient(const std::string& address, int port, const std::string& target = "/",
-           const std::string& local_address = "", int receive_buffer_bytes = 0);
+           const std::string& local_address = "", int receive_buffer_bytes = 0,
+           const std::string& subprotocols = "foxglove.websocket.v1");
   ~WsClient();
   const std::string& subprotocol() const { return subprotocol_; }
 

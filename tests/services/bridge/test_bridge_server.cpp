@@ -208,6 +208,16 @@ TEST(NetAndLogBridge, ServesTheNetDrawnAndTheLogLinesToALateViewer) {
   std::filesystem::remove_all(dir);
 }
 
+// Newer Foxglove clients offer foxglove.sdk.v1 (the same messages): taken,
+// and foxglove.websocket.v1 preferred when both are offered.
+TEST_F(LogBridge, AcceptsBothFoxgloveSubprotocols) {
+  WsClient sdk("127.0.0.1", bridge_->port(), "/", "", 0, "foxglove.sdk.v1");
+  EXPECT_EQ(sdk.subprotocol(), "foxglove.sdk.v1");
+  EXPECT_EQ(sdk.readOp("serverInfo")["name"], "beft-bridge");
+  WsClient both("127.0.0.1", bridge_->port(), "/", "", 0, "foxglove.sdk.v1, foxglove.websocket.v1");
+  EXPECT_EQ(both.subprotocol(), "foxglove.websocket.v1");
+}
+
 // Without --net there is no drawing: the page lists the marking instead.
 TEST_F(LogBridge, HasNoNetDrawingWithoutANet) {
   Viewer viewer(bridge_->port());
