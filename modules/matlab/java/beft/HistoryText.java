@@ -16,7 +16,7 @@ final class HistoryText {
     while (i < json.length()) {
       char c = json.charAt(i);
       if (c == '"') {
-        int end = endOfString(json, i);
+        int end = JsonNumbers.endOfString(json, i);
         if (depth == 1 && expectKey) {
           String key = json.substring(i + 1, end - 1);
           int value = skipSpace(json, end);
@@ -41,17 +41,5 @@ final class HistoryText {
   private static int skipSpace(String json, int i) {
     while (i < json.length() && Character.isWhitespace(json.charAt(i))) ++i;
     return i;
-  }
-
-  // Just past the closing quote of the string opening at start.
-  private static int endOfString(String json, int start) {
-    int i = start + 1;
-    while (i < json.length()) {
-      char c = json.charAt(i);
-      if (c == '\\') i += 2;
-      else if (c == '"') return i + 1;
-      else ++i;
-    }
-    return json.length();
   }
 }

@@ -63,8 +63,8 @@ public final class JsonNumbers {
   public String hex() { return hex; }
 
   // The index just past the closing quote of the string opening at start
-  // (the text's end if it is not closed).
-  private static int endOfString(String json, int start) {
+  // (the text's end if it is not closed). Shared with HistoryText.
+  static int endOfString(String json, int start) {
     int i = start + 1;
     while (i < json.length()) {
       char c = json.charAt(i);
