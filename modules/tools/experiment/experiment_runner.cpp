@@ -1,0 +1,143 @@
+#include "tools/experiment/experiment_runner.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "lib/common/own_bin_dir.hpp"
+#include "tools/experiment/episodes.hpp"
+#include "tools/experiment/experiment_file.hpp"
+#include "tools/experiment/local_pool.hpp"
+#include "tools/experiment/plots.hpp"
+#include "tools/experiment/scenes.hpp"
+#include "tools/experiment/summary_output.hpp"
+
+namespace beft::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+
+void say(const std::string& line) {
+  std::printf("[experiment] %s\n", line.c_str());
+  std::fflush(stdout);
+}
+
+PoolJob jobOf(const Experiment& x, const Episode& episode, const std::string& out_dir) {
+  const std::string folder = episodeFolder(out_dir, episode);
+  PoolJob job{episode.id, folder, runCommand(x, episode, folder, ownBinDir()), {}};
+  job.recorded = recordedCommand(job.command, out_dir);
+  return job;
+}
+
+// What the episode's folder holds, missing if it was run with other options
+// (a changed max_ticks, scene file, ...): its results are not this experiment's.
+EpisodeState stateOf(const PoolJob& job, bool say_stale) {
+  EpisodeState state = readEpisodeState(job.folder);
+  if (state.status == Status::missing || state.command == job.recorded) return state;
+  if (say_stale) say(job.id + " was run with other options (its episode.json): it runs again");
+  return {};
+}
+
+// The episodes to run now: those missing, and the failed ones with --retry-failed.
+std::vector<PoolJob> jobsToRun(const Experiment& x, const std::vector<Episode>& episodes, const RunnerOptions& o) {
+  std::vector<PoolJob> jobs;
+  int done = 0, failed = 0;
+  for (const auto& episode : episodes) {
+    const PoolJob job = jobOf(x, episode, o.out_dir);
+    const Status status = stateOf(job, true).status;
+    done += status == Status::done;
+    failed += status == Status::failed;
+    if (status == Status::missing || (status == Status::failed && o.retry_failed)) jobs.push_back(job);
+  }
+  say(x.name + ": " + std::to_string(episodes.size()) + " episodes in " + o.out_dir + ": " + std::to_string(done) + " done, " +
+      std::to_string(failed) + " failed" + (failed > 0 && !o.retry_failed ? " (not run again without --retry-failed)" : "") +
+      ", " + std::to_string(jobs.size()) + " to run with " + std::to_string(o.jobs) + " job(s)");
+  return jobs;
+}
+
+std::vector<EpisodeResult> collect(const Experiment& x, const std::vector<Episode>& episodes,
+                                   const std::string& out_dir) {
+  std::vector<EpisodeResult> results;
+  for (const auto& episode : episodes) {
+    const PoolJob job = jobOf(x, episode, out_dir);
+    EpisodeResult r{episode, stateOf(job, false), std::nullopt};
+    if (r.state.status == Status::done) r.metrics = readMetrics((fs::path(job.folder) / "report.json").string());
+    results.push_back(r);
+  }
+  return results;
+}
+
+void writeResults(const Experiment& x, const std::vector<EpisodeResult>& results, const std::string& out_dir) {
+  const Summary summary = summarise(x, results);
+  std::ofstream episodes_csv(fs::path(out_dir) / "episodes.csv");
+  writeEpisodesCsv(x, results, episodes_csv);
+  std::ofstream summary_csv(fs::path(out_dir) / "summary.csv");
+  writeSummaryCsv(summary, summary_csv);
+  nlohmann::json json = summaryJson(summary);
+  json["experiment"] = x.name;
+  json["episodes"] = results.size();
+  std::ofstream(fs::path(out_dir) / "summary.json") << json.dump(2) << "\n";
+  if (!writeSuccessPlot(summary, (fs::path(out_dir) / "success.png").string()) ||
+      !writeTimeToFindPlot(results, (fs::path(out_dir) / "time_to_find.png").string()))
+    say("warning: cannot write the pictures in " + out_dir);
+  std::cout << "\n";
+  printSummary(summary, std::cout);
+  std::cout << "\n";
+  for (const auto& r : results)
+    if (r.state.status == Status::failed) say("failed: " + r.episode.id + ": " + r.state.reason);
+  say("wrote " + out_dir + "/episodes.csv, summary.csv, summary.json, success.png, time_to_find.png");
+}
+
+// Episodes per hour, and how much the pool overlapped them (the sum of their
+// times over the pool's; not a speed-up: episodes side by side slow each other).
+void sayPace(const PoolOutcome& pool) {
+  if (pool.done == 0 || pool.wall_s <= 0) return;
+  char line[256];
+  std::snprintf(line, sizeof(line),
+                "%d episode(s) done in %.1f s: %.0f episodes per hour; their own times add up to %.1f s, %.2fx the "
+                "pool's",
+                pool.done, pool.wall_s, pool.done * 3600 / pool.wall_s, pool.episode_wall_s,
+                pool.episode_wall_s / pool.wall_s);
+  say(line);
+}
+
+int exitCode(const PoolOutcome& pool, const std::vector<EpisodeResult>& results) {
+  if (pool.interrupted) return 130;
+  for (const auto& r : results)
+    if (r.state.status != Status::done) return 1;
+  return 0;
+}
+
+}  // namespace
+
+int runExperiment(const RunnerOptions& options) {
+  Experiment x;
+  std::vector<Episode> episodes;
+  try {
+    x = readExperiment(options.file);
+    episodes = expandEpisodes(x);
+  } catch (const ExperimentError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+  if (options.list_only) {
+    for (const auto& e : episodes) std::printf("%s\n", e.id.c_str());
+    return 0;
+  }
+  try {
+    fs::create_directories(options.out_dir);
+    generateScenes(x, options.out_dir, ownBinDir(), say);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "[experiment] error: %s\n", e.what());
+    return 1;
+  }
+  const PoolOutcome pool = runLocalPool(jobsToRun(x, episodes, options), options.jobs, say);
+  const auto results = collect(x, episodes, options.out_dir);
+  writeResults(x, results, options.out_dir);
+  sayPace(pool);
+  if (pool.interrupted) say("interrupted: start it again to run what is missing");
+  return exitCode(pool, results);
+}
+
+}  // namespace beft::experiment

@@ -1,0 +1,115 @@
+#include "tools/experiment/local_pool.hpp"
+
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <thread>
+
+#include "tools/experiment/child_process.hpp"
+#include "tools/experiment/episode_run.hpp"
+
+namespace beft::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+volatile sig_atomic_t stop_requested = 0;
+void requestStop(int) { stop_requested = 1; }
+
+// Without SA_RESTART, so that a signal wakes the pool's waitpid.
+void catchStopSignals() {
+  struct sigaction action = {};
+  action.sa_handler = requestStop;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+struct Running {
+  const PoolJob* job;
+  Clock::time_point start;
+};
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// A clean folder (what an interrupted run left is gone) with beft-run started in it.
+pid_t start(const PoolJob& job) {
+  fs::remove_all(job.folder);
+  fs::create_directories(job.folder);
+  return startProgram(job.command, (fs::path(job.folder) / kRunOutput).string());
+}
+
+// Records an ended episode (unless the pool is stopping: then it is left missing).
+void finish(const Running& run, int status, PoolOutcome& outcome, const std::function<void(const std::string&)>& say) {
+  const double wall_s = secondsSince(run.start);
+  if (stop_requested) return;
+  EpisodeState state = finishedState(run.job->folder, exitCodeOf(status), wall_s);
+  state.command = run.job->recorded;
+  writeEpisodeState(run.job->folder, state);
+  outcome.episode_wall_s += wall_s;
+  char seconds[32];
+  std::snprintf(seconds, sizeof(seconds), "%.1f s", wall_s);
+  if (state.status == Status::done) {
+    ++outcome.done;
+    say("done " + run.job->id + " (" + seconds + ")");
+  } else {
+    ++outcome.failed;
+    say("FAILED " + run.job->id + " (" + seconds + "): " + state.reason);
+  }
+}
+
+void stopAll(const std::map<pid_t, Running>& running) {
+  for (const auto& [pid, run] : running) kill(pid, SIGTERM);
+}
+
+}  // namespace
+
+int defaultJobs() {
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores >= 2 ? static_cast<int>(cores / 2) : 1;
+}
+
+PoolOutcome runLocalPool(const std::vector<PoolJob>& jobs, int max_jobs,
+                         const std::function<void(const std::string&)>& say) {
+  catchStopSignals();
+  PoolOutcome outcome;
+  const auto pool_start = Clock::now();
+  std::map<pid_t, Running> running;
+  size_t next = 0;
+  bool stopping = false;
+  while (next < jobs.size() || !running.empty()) {
+    while (!stop_requested && next < jobs.size() && static_cast<int>(running.size()) < max_jobs) {
+      const pid_t pid = start(jobs[next]);
+      if (pid > 0) running[pid] = {&jobs[next], Clock::now()};
+      if (pid < 0) say("cannot start beft-run for " + jobs[next].id);
+      ++next;
+    }
+    if (stop_requested && !stopping) {
+      stopping = true;
+      say("stopping: the running episodes are ended and left to run again");
+      stopAll(running);
+    }
+    if (running.empty()) break;
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0 && errno == ECHILD) break;
+    if (pid < 0) continue;  // EINTR: a stop signal, seen above
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;
+    finish(it->second, status, outcome, say);
+    running.erase(it);
+  }
+  outcome.interrupted = stop_requested;
+  outcome.wall_s = secondsSince(pool_start);
+  return outcome;
+}
+
+}  // namespace beft::experiment

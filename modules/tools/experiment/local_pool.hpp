@@ -1,0 +1,32 @@
+// Runs episodes on this machine, at most `jobs` at once. On SIGINT or SIGTERM
+// it stops its running episodes and records nothing for them: they are
+// missing, and run again when the experiment is started again.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace beft::experiment {
+
+struct PoolJob {
+  std::string id, folder;
+  std::vector<std::string> command;
+  std::vector<std::string> recorded;  // the command as episode.json keeps it
+};
+
+struct PoolOutcome {
+  int done = 0, failed = 0;
+  bool interrupted = false;
+  double wall_s = 0;          // the pool's time, first start to last end
+  double episode_wall_s = 0;  // the sum of the episodes' own times
+};
+
+PoolOutcome runLocalPool(const std::vector<PoolJob>& jobs, int max_jobs,
+                         const std::function<void(const std::string&)>& say);
+
+// The default --jobs: half the cores (the other half for each run's
+// processes), at least one.
+int defaultJobs();
+
+}  // namespace beft::experiment
