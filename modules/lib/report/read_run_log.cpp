@@ -135,8 +135,19 @@ class RecordBuilder {
       auto& trail = record_.trails[object.id];
       if (trail.empty() || std::hypot(trail.back().first - object.x, trail.back().second - object.y) >= kTrailStep)
         trail.emplace_back(object.x, object.y);
+      addTruthPosition(object, scene.tick);
     }
     return true;
+  }
+
+  // A new entry only when the object moved (or on a later tick than any
+  // before: a tick sent again or late changes nothing).
+  void addTruthPosition(const scene_object_t& object, int64_t tick) {
+    auto& positions = record_.truth_positions[object.id];
+    if (!positions.empty() && (tick < positions.back().tick ||
+                               (positions.back().x == object.x && positions.back().y == object.y)))
+      return;
+    positions.push_back({tick, object.x, object.y});
   }
 
   // The world publishes a tick's GT_OBJECTS before the experts fire, so the
@@ -194,11 +205,13 @@ class RecordBuilder {
   void addHypothesesSample(const hypotheses_t& message) {
     HypothesesSample sample;
     sample.t = seconds(message.utime);
+    sample.tick = message.tick;
     for (const auto& h : message.hypotheses) {
       HypothesisState state;
       state.object_id = h.object_id;
       state.x = h.x;
       state.y = h.y;
+      placeOf(state, sample);
       state.best_category = h.best_category;
       state.confidence = h.confidence;
       state.seen = h.seen;
@@ -213,6 +226,20 @@ class RecordBuilder {
       sample.hypotheses.push_back(std::move(state));
     }
     record_.hypotheses.push_back(std::move(sample));
+  }
+
+  // When the estimate took its present position: the first sample that had it.
+  void placeOf(HypothesisState& state, const HypothesesSample& sample) {
+    const auto [placed, added] = placed_.try_emplace(state.object_id, state);
+    HypothesisState& last = placed->second;
+    if (added || last.x != state.x || last.y != state.y) {
+      last.x = state.x;
+      last.y = state.y;
+      last.placed_tick = sample.tick;
+      last.placed_s = sample.t;
+    }
+    state.placed_tick = last.placed_tick;
+    state.placed_s = last.placed_s;
   }
 
   bool addWeights(const wire::LogEvent& event) {
@@ -297,6 +324,7 @@ class RecordBuilder {
   RunRecord& record_;
   std::map<std::tuple<std::string, int32_t, std::string>, process_rejects_t> last_rejects_;  // by host, pid, name
   std::optional<hypotheses_t> keyframe_;  // the last HYPOTHESES
+  std::map<std::string, HypothesisState> placed_;  // by object id: its position and when it took it
   std::map<int64_t, obstacle_map_t> map_keyframes_;  // the last OBSTACLE_MAPs by tick
   std::optional<obstacle_map_changes_t> last_map_changes_;
 };

@@ -26,6 +26,25 @@ std::string refusedByProcess(const RunReport& report) {
   return joined(items);
 }
 
+// A victim found; its path efficiency only when it was computed.
+nlohmann::json victimJson(const VictimEntry& v) {
+  nlohmann::json json = {{"object", v.object},
+                         {"hypothesis", v.hypothesis},
+                         {"x", rounded(v.x)},
+                         {"y", rounded(v.y)},
+                         {"true_x", rounded(v.true_x)},
+                         {"true_y", rounded(v.true_y)},
+                         {"error_m", rounded(v.error_m)},
+                         {"placed_at_s", rounded(v.placed_at_s)},
+                         {"confidence", rounded(v.confidence)},
+                         {"verified", v.verified},
+                         {"found_at_s", rounded(v.found_at_s)}};
+  if (v.shortest_path_m) json["shortest_path_m"] = rounded(*v.shortest_path_m);
+  if (v.driven_m) json["driven_m"] = rounded(*v.driven_m);
+  if (v.path_efficiency) json["path_efficiency"] = rounded(*v.path_efficiency);
+  return json;
+}
+
 }  // namespace
 
 nlohmann::json toJson(const RunReport& report) {
@@ -46,15 +65,8 @@ nlohmann::json toJson(const RunReport& report) {
   json["persons"] = report.persons;
   json["person_confidence_threshold"] = report.person_confidence;
   json["victims"] = nlohmann::json::array();
-  for (const auto& v : report.victims)
-    json["victims"].push_back({{"object", v.object},
-                               {"hypothesis", v.hypothesis},
-                               {"x", rounded(v.x)},
-                               {"y", rounded(v.y)},
-                               {"error_m", rounded(v.error_m)},
-                               {"confidence", rounded(v.confidence)},
-                               {"verified", v.verified},
-                               {"found_at_s", rounded(v.found_at_s)}});
+  for (const auto& v : report.victims) json["victims"].push_back(victimJson(v));
+  if (report.path_efficiency_mean) json["path_efficiency_mean"] = rounded(*report.path_efficiency_mean);
   json["falsified"] = nlohmann::json::array();
   for (const auto& f : report.falsified)
     json["falsified"].push_back({{"object", f.object},

@@ -3,7 +3,9 @@
 // of the stack, the last obstacle map and the ground truth the world published.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -42,10 +44,15 @@ struct HypothesisState {
   bool seen = false, heard = false, verified = false, falsified = false;
   std::string seen_as, heard_as;
   double first_heard_s = -1, first_seen_s = -1, settled_s = -1;  // sim time, -1 = never
+  // When fusion last moved its estimate (x, y): the tick and sim time of the
+  // first sample with the current position, as the log showed it.
+  int64_t placed_tick = -1;
+  double placed_s = -1;
 };
 
 struct HypothesesSample {
   double t = 0;              // simulated time [s]
+  int64_t tick = -1;
   std::vector<HypothesisState> hypotheses;
 };
 
@@ -73,6 +80,12 @@ struct TruthObject {
   bool acoustic = false;
 };
 
+// Where an object truly was from a tick on (GT_OBJECTS of that tick).
+struct TruthPosition {
+  int64_t tick = 0;
+  double x = 0, y = 0;       // [m]
+};
+
 // The audio expert's last position estimate of a sounding object (AUDIO),
 // beside where the object truly was then (GT_OBJECTS of the same tick).
 struct HeardPosition {
@@ -97,6 +110,9 @@ struct RunRecord {
   std::vector<std::string> categories;
   std::vector<TruthObject> truth;     // as of the last GT_OBJECTS
   std::map<std::string, std::vector<std::pair<double, double>>> trails;  // moving objects' positions
+  // Each object's true position when first published and at every tick it
+  // moved since, in tick order: where a walker was when it was seen.
+  std::map<std::string, std::vector<TruthPosition>> truth_positions;
   std::vector<RobotSample> robot;     // one per tick, in tick order
   double robot_radius = 0;            // [m]
   std::vector<HypothesesSample> hypotheses;  // in log order
@@ -120,6 +136,17 @@ struct RunRecord {
   // Wall time of the lockstep loop itself, first FIRE to last DONE (0 if unknown).
   double tickingSpan() const {
     return first_fire_us >= 0 && last_done_us > first_fire_us ? (last_done_us - first_fire_us) * 1e-6 : 0.0;
+  }
+  // Where the object truly was at `tick` (the last published position of a
+  // tick up to it); nullopt when GT_OBJECTS never gave one that early.
+  std::optional<TruthPosition> truthAt(const std::string& id, int64_t tick) const {
+    const auto found = truth_positions.find(id);
+    if (found == truth_positions.end()) return std::nullopt;
+    const auto& positions = found->second;
+    const auto after = std::upper_bound(positions.begin(), positions.end(), tick,
+                                        [](int64_t k, const TruthPosition& p) { return k < p.tick; });
+    if (after == positions.begin()) return std::nullopt;
+    return *std::prev(after);
   }
   // Ticks run: from the tick indices, so a robot state the logger lost does not count less.
   int64_t tickCount() const { return robot.empty() ? 0 : robot.back().tick - robot.front().tick + 1; }

@@ -152,6 +152,22 @@ void orderVictims(const std::vector<const TruthObject*>& persons, RunReport& rep
   report.victims.swap(ordered);
 }
 
+// The estimate against where the person was when the hypothesis last placed
+// it: a moving person's error is not the distance it walked since.
+void placeVictim(const RunRecord& record, const HypothesisState& h, const TruthObject& person,
+                 VictimEntry& victim) {
+  victim.x = h.x;
+  victim.y = h.y;
+  victim.true_x = person.x;
+  victim.true_y = person.y;
+  if (const auto then = record.truthAt(person.id, h.placed_tick); then && h.placed_tick >= 0) {
+    victim.true_x = then->x;
+    victim.true_y = then->y;
+    victim.placed_at_s = h.placed_s;
+  }
+  victim.error_m = std::hypot(victim.true_x - h.x, victim.true_y - h.y);
+}
+
 }  // namespace
 
 RunReport scoreRun(const RunRecord& record, const ScoringOptions& options) {
@@ -192,9 +208,7 @@ RunReport scoreRun(const RunRecord& record, const ScoringOptions& options) {
     VictimEntry victim;
     victim.object = person->id;
     victim.hypothesis = h->object_id;
-    victim.x = h->x;
-    victim.y = h->y;
-    victim.error_m = std::hypot(person->x - h->x, person->y - h->y);
+    placeVictim(record, *h, *person, victim);
     victim.confidence = h->confidence;
     victim.verified = h->verified;
     const auto found = found_times.find(h->object_id);

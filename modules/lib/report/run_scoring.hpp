@@ -33,10 +33,21 @@ struct VictimEntry {
   std::string object;       // ground-truth person id
   std::string hypothesis;   // the hypothesis' object id
   double x = 0, y = 0;      // estimated position [m]
-  double error_m = 0;       // distance to the true position at the end of the run [m]
+  // The person's true position when the hypothesis last placed it (its last
+  // position update; GT_OBJECTS of that tick), so a walker located when seen
+  // is not charged for walking on afterwards. Without that tick in the log:
+  // the true position at the end of the run.
+  double true_x = 0, true_y = 0;  // [m]
+  double error_m = 0;       // distance from (x, y) to (true_x, true_y) [m]
+  double placed_at_s = -1;  // sim time of that position update, -1 if unknown
   double confidence = 0;    // fused confidence of `person`
   bool verified = false;
   double found_at_s = 0;    // first sim time the hypothesis met the victim test
+  // Path efficiency (SPL per victim), when the ground truth allowed it
+  // (beft-report with the scenario): the shortest path from the robot's start
+  // to a viewpoint of the person, the distance driven until it was found, and
+  // shortest / max(shortest, driven).
+  std::optional<double> shortest_path_m, driven_m, path_efficiency;
 };
 
 // Where the audio expert last put a sounding object, and how far off it was.
@@ -81,6 +92,9 @@ struct RunReport {
   std::vector<FalsifiedEntry> falsified;
   std::vector<HeardEntry> heard;        // every object the audio expert reported, by id
   std::vector<std::string> missed;      // ground-truth persons not found
+  // The mean of the victims' path_efficiency over every person present, 0
+  // for a person missed (SPL); unset when it was not computed.
+  std::optional<double> path_efficiency_mean;
   std::vector<FalseAlarm> false_alarms;
   std::vector<std::string> unsettled;   // heard, neither verified nor falsified
   int hypotheses = 0;

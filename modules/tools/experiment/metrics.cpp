@@ -29,6 +29,16 @@ std::vector<double> foundTimes(const nlohmann::json& victims) {
   return times;
 }
 
+// The found persons' path efficiencies, in report order (those that have one).
+std::vector<double> pathEfficiencies(const nlohmann::json& victims) {
+  std::vector<double> values;
+  if (victims.is_array())
+    for (const auto& v : victims)
+      if (v.contains("path_efficiency") && v["path_efficiency"].is_number())
+        values.push_back(v["path_efficiency"].get<double>());
+  return values;
+}
+
 int count(const nlohmann::json& report, const char* list) {
   return report.contains(list) && report[list].is_array() ? static_cast<int>(report[list].size()) : 0;
 }
@@ -56,6 +66,8 @@ std::optional<EpisodeMetrics> readMetrics(const std::string& report_file) {
   m.found_at_s = times;
   m.time_to_find_first_s = quantile(times, 0.0);
   m.time_to_find_median_s = quantile(times, 0.5);
+  m.path_efficiency_mean = report.value("path_efficiency_mean", kNone);
+  m.path_efficiency = pathEfficiencies(report.value("victims", nlohmann::json::array()));
   return m;
 }
 
@@ -77,7 +89,7 @@ namespace {
 
 const char* const kMetricsHeader =
     "completed,persons_found,persons_present,false_alarms,falsified,unsettled,collisions,path_length_m,sim_time_s,"
-    "wall_time_s,heard_error_mean_m,time_to_find_first_s,time_to_find_median_s,end_reason";
+    "wall_time_s,heard_error_mean_m,time_to_find_first_s,time_to_find_median_s,path_efficiency_mean,end_reason";
 
 std::string metricsFields(const EpisodeMetrics& m) {
   return std::string(m.completed ? "1" : "0") + "," + std::to_string(m.persons_found) + "," +
@@ -85,7 +97,7 @@ std::string metricsFields(const EpisodeMetrics& m) {
          std::to_string(m.falsified) + "," + std::to_string(m.unsettled) + "," + std::to_string(m.collisions) + "," +
          csvNumber(m.path_length_m) + "," + csvNumber(m.sim_time_s) + "," + csvNumber(m.wall_time_s) + "," +
          csvNumber(m.heard_error_mean_m) + "," + csvNumber(m.time_to_find_first_s) + "," +
-         csvNumber(m.time_to_find_median_s) + "," + csvField(m.end_reason);
+         csvNumber(m.time_to_find_median_s) + "," + csvNumber(m.path_efficiency_mean) + "," + csvField(m.end_reason);
 }
 
 // The empty fields of an episode without measures, one per column.

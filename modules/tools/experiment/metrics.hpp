@@ -19,6 +19,11 @@ struct EpisodeMetrics {
   double path_length_m = 0, sim_time_s = 0, wall_time_s = 0;
   double heard_error_mean_m = 0;  // NaN: nothing heard
   double time_to_find_first_s = 0, time_to_find_median_s = 0;  // NaN: nobody found
+  // SPL over the persons present (report.json's path_efficiency_mean, a person
+  // missed counting 0) and the found persons' own values; NaN / none when the
+  // report has none (made without the scenario).
+  double path_efficiency_mean = 0;
+  std::vector<double> path_efficiency;
   std::string end_reason;  // the report's: why the run ended
   std::vector<double> found_at_s;  // when each person found was found (for the time-to-find curves)
 };

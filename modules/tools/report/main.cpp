@@ -11,6 +11,7 @@
 #include "lib/report/report_json.hpp"
 #include "lib/report/run_record.hpp"
 #include "lib/report/run_scoring.hpp"
+#include "tools/report/path_efficiency.hpp"
 
 namespace {
 
@@ -18,6 +19,7 @@ struct Options {
   std::string log_path, scenario_path, out_dir;
   std::optional<double> wall_time;
   beft::report::ScoringOptions scoring;
+  beft::report::PathEfficiencyOptions paths;
   bool quiet = false;
 };
 
@@ -25,8 +27,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   CLI::App app{
       "beft-report: reads a run's LCM log and writes DIR/report.json (victims found with their position "
       "error, confidence and time, falsified hypotheses, missed persons, path length, collisions, sim and "
-      "wall time, ticks per second), DIR/map.png (top-down map: ground truth by category, the robot's "
-      "obstacle map, its path, the hypotheses) and DIR/weights.png (the paper's Fig. 4: dynamic weights, "
+      "wall time, ticks per second, path efficiency with --scenario), DIR/map.png (top-down map: ground "
+      "truth by category, the robot's obstacle map, its path, the hypotheses) and DIR/weights.png (the "
+      "paper's Fig. 4: dynamic weights, "
       "task and viewing direction over time), and prints a summary.\n"
       "A victim is found when a hypothesis ends with best category 'person', confidence at least "
       "--person-confidence, was seen by vision and is not falsified; heard alone is not enough."};
@@ -45,6 +48,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
                  "how far a hypothesis not keyed by a person's id may be from that person to match it [m]")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  app.add_option("--planner-inflation", o.paths.inflation_m,
+                 "the planner's obstacle inflation, for the shortest paths of path efficiency [m]")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.add_flag("--quiet", o.quiet, "do not print the summary");
   app.add_flag("--log-incomplete", o.scoring.log_incomplete,
                "the recorder died during the run: the report says the log misses what came after");
@@ -55,11 +62,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
 
 // The run's log, with the scenario's ground truth where the log lacks it;
 // what is missing or did not decode, said on stderr.
-beft::report::RunRecord readRecord(const Options& o) {
+beft::report::RunRecord readRecord(const Options& o, const std::optional<beft::scenario::Scenario>& scenario) {
   auto record = beft::report::readRunLog(o.log_path);
-  if (!o.scenario_path.empty()) {
-    const auto scenario = beft::scenario::loadScenario(o.scenario_path, nullptr);
-    for (const auto& warning : beft::report::applyScenario(record, scenario))
+  if (scenario) {
+    for (const auto& warning : beft::report::applyScenario(record, *scenario))
       std::cerr << "beft-report: warning: " << warning << "\n";
   } else if (record.truth.empty()) {
     std::cerr << "beft-report: warning: " << o.log_path
@@ -82,8 +88,12 @@ beft::report::RunRecord readRecord(const Options& o) {
 
 int report(const Options& o) {
   try {
-    const auto record = readRecord(o);
-    const auto report = beft::report::scoreRun(record, o.scoring);
+    std::optional<beft::scenario::Scenario> scenario;
+    if (!o.scenario_path.empty()) scenario = beft::scenario::loadScenario(o.scenario_path, nullptr);
+    const auto record = readRecord(o, scenario);
+    auto report = beft::report::scoreRun(record, o.scoring);
+    // Shortest paths need the ground truth's obstacles: the scenario's.
+    if (scenario) beft::report::scorePathEfficiency(record, *scenario, o.paths, report);
     beft::report::writeReportFiles(record, report, o.out_dir);
     if (!o.quiet) beft::report::printSummary(report, std::cout);
     return 0;

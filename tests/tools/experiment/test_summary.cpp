@@ -82,7 +82,37 @@ TEST(ExperimentMetrics, EveryRowHasAFieldPerColumn) {
   const auto commas = [](const std::string& line) { return std::count(line.begin(), line.end(), ','); };
   EXPECT_EQ(commas(done), commas(header) + 1);  // the one inside the quoted end_reason
   EXPECT_EQ(commas(not_done), commas(header));
-  EXPECT_EQ(not_done, "s_planner-a,s,a,failed,beft-run exited with code 2,,,,,,,,,,,,,,");
+  EXPECT_EQ(not_done, "s_planner-a,s,a,failed,beft-run exited with code 2,,,,,,,,,,,,,,,");
+}
+
+// SPL per person: the report's mean over the persons present, and each found
+// person's own value; a report made without the scenario has none.
+TEST(ExperimentMetrics, PathEfficiencyFromTheReport) {
+  const fs::path file = fs::temp_directory_path() / ("beft_experiment_spl_" + std::to_string(getpid()) + ".json");
+  std::ofstream(file) << R"({"completed": false, "persons": 3, "path_efficiency_mean": 0.4,
+    "victims": [{"found_at_s": 30.0, "path_efficiency": 0.5}, {"found_at_s": 10.0, "path_efficiency": 0.7}]})";
+  const auto m = readMetrics(file.string());
+  std::ofstream(file) << R"({"completed": true, "persons": 1, "victims": [{"found_at_s": 3.0}]})";
+  const auto without = readMetrics(file.string());
+  fs::remove(file);
+  ASSERT_TRUE(m && without);
+  EXPECT_DOUBLE_EQ(m->path_efficiency_mean, 0.4);
+  EXPECT_EQ(m->path_efficiency, (std::vector<double>{0.5, 0.7}));
+  EXPECT_TRUE(std::isnan(without->path_efficiency_mean));
+  EXPECT_TRUE(without->path_efficiency.empty());
+
+  Experiment x;
+  EpisodeResult r = result("s", "a", false, 20);
+  r.episode.values = {{kScene, "s"}};
+  r.metrics = *m;
+  std::ostringstream csv;
+  writeEpisodesCsv(x, {r}, csv);
+  std::istringstream lines(csv.str());
+  std::string header, row;
+  std::getline(lines, header);
+  std::getline(lines, row);
+  EXPECT_NE(header.find(",time_to_find_median_s,path_efficiency_mean,end_reason"), std::string::npos) << header;
+  EXPECT_NE(row.find(",20.000,0.400,"), std::string::npos) << row;
 }
 
 TEST(ExperimentSummary, ConditionsAndAPairedComparison) {
