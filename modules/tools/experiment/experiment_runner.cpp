@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "lib/common/own_bin_dir.hpp"
 #include "tools/experiment/episodes.hpp"
@@ -11,6 +12,7 @@
 #include "tools/experiment/local_pool.hpp"
 #include "tools/experiment/plots.hpp"
 #include "tools/experiment/scenes.hpp"
+#include "tools/experiment/slurm_runner.hpp"
 #include "tools/experiment/summary_output.hpp"
 
 namespace beft::experiment {
@@ -52,7 +54,8 @@ std::vector<PoolJob> jobsToRun(const Experiment& x, const std::vector<Episode>& 
   }
   say(x.name + ": " + std::to_string(episodes.size()) + " episodes in " + o.out_dir + ": " + std::to_string(done) + " done, " +
       std::to_string(failed) + " failed" + (failed > 0 && !o.retry_failed ? " (not run again without --retry-failed)" : "") +
-      ", " + std::to_string(jobs.size()) + " to run with " + std::to_string(o.jobs) + " job(s)");
+      ", " + std::to_string(jobs.size()) + " to run " +
+      (o.slurm ? "on Slurm" : "with " + std::to_string(o.jobs) + " job(s)"));
   return jobs;
 }
 
@@ -109,6 +112,38 @@ int exitCode(const PoolOutcome& pool, const std::vector<EpisodeResult>& results)
   return 0;
 }
 
+// --run-episode ID: that episode, run as the local pool runs each one (what a Slurm task does).
+int runOneEpisode(const Experiment& x, const std::vector<Episode>& episodes, const RunnerOptions& o) {
+  for (const auto& episode : episodes)
+    if (episode.id == o.run_episode) {
+      const PoolOutcome pool = runLocalPool({jobOf(x, episode, o.out_dir)}, 1, say);
+      return pool.interrupted ? 130 : pool.done == 1 ? 0 : 1;
+    }
+  std::fprintf(stderr, "[experiment] error: %s has no episode '%s' (--list prints them)\n", o.file.c_str(),
+               o.run_episode.c_str());
+  return 2;
+}
+
+SlurmRun slurmRun(const Experiment& x, const RunnerOptions& o) {
+  const std::string file = fs::absolute(o.file).lexically_normal().string();
+  return {o.limits, o.slurm_wait, x.name, o.out_dir,
+          {ownBinDir() + "/beft-experiment", file, "--out", o.out_dir, "--run-episode"}};
+}
+
+// The missing episodes run, locally or on Slurm; the exit code when there is
+// nothing to gather (a Slurm job not waited for, or not submitted).
+std::optional<int> runJobs(const Experiment& x, const std::vector<Episode>& episodes, const RunnerOptions& o,
+                           PoolOutcome& pool) {
+  const auto jobs = jobsToRun(x, episodes, o);
+  if (!o.slurm) {
+    pool = runLocalPool(jobs, o.jobs, say);
+    return std::nullopt;
+  }
+  const SlurmOutcome slurm = runOnSlurm(jobs, slurmRun(x, o), say);
+  pool = slurm.pool;
+  return slurm.gather ? std::nullopt : std::optional<int>(slurm.exit_code);
+}
+
 }  // namespace
 
 int runExperiment(const RunnerOptions& options) {
@@ -125,6 +160,7 @@ int runExperiment(const RunnerOptions& options) {
     for (const auto& e : episodes) std::printf("%s\n", e.id.c_str());
     return 0;
   }
+  if (options.slurm && !haveSlurmCommands()) return 2;
   try {
     fs::create_directories(options.out_dir);
     generateScenes(x, options.out_dir, ownBinDir(), say);
@@ -132,7 +168,9 @@ int runExperiment(const RunnerOptions& options) {
     std::fprintf(stderr, "[experiment] error: %s\n", e.what());
     return 1;
   }
-  const PoolOutcome pool = runLocalPool(jobsToRun(x, episodes, options), options.jobs, say);
+  if (!options.run_episode.empty()) return runOneEpisode(x, episodes, options);
+  PoolOutcome pool;
+  if (const auto code = runJobs(x, episodes, options, pool)) return *code;
   const auto results = collect(x, episodes, options.out_dir);
   writeResults(x, results, options.out_dir);
   sayPace(pool);

@@ -2,7 +2,7 @@
 // run again interrupted halfway and resumed, which runs only the missing
 // episode and gives the same rows; an episode that fails is recorded with its
 // reason and not run again (unless asked), nor taken for this experiment's
-// once the file's options change.
+// once the file's options change. Without Slurm's commands, --slurm is refused.
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -148,6 +148,23 @@ TEST_F(ExperimentSystemTest, AFailedEpisodeIsRecordedWithItsReasonAndNotRunAgain
   const Finished changed = run("bad", "1", "bad.xml");
   EXPECT_NE(changed.output.find("yard_no_such_arg-1 was run with other options"), std::string::npos) << changed.output;
   EXPECT_NE(changed.output.find("0 done, 0 failed, 1 to run"), std::string::npos) << changed.output;
+}
+
+TEST_F(ExperimentSystemTest, SlurmWithoutItsCommandsIsRefused) {
+  const pid_t pid = fork();
+  if (pid == 0) {  // a PATH without sbatch and squeue
+    setenv("PATH", (dir_ / "empty").c_str(), 1);
+    const std::string output = (dir_ / "no_slurm.txt").string();
+    if (!freopen(output.c_str(), "w", stdout) || !freopen(output.c_str(), "a", stderr)) _exit(126);
+    execl(BEFT_EXPERIMENT_BINARY, BEFT_EXPERIMENT_BINARY, (dir_ / "tiny.xml").c_str(), "--out",
+          (dir_ / "no_slurm").c_str(), "--slurm", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const Finished refused = wait(pid, "no_slurm");
+  EXPECT_EQ(refused.code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("--slurm needs Slurm's commands on PATH; not found: sbatch squeue"), std::string::npos)
+      << refused.output;
+  EXPECT_FALSE(fs::exists(dir_ / "no_slurm"));
 }
 
 }  // namespace
