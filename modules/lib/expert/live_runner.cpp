@@ -49,13 +49,28 @@ class LcmOutput : public Output {
  public:
   explicit LcmOutput(lcm::LCM& lcm) : lcm_(lcm) {}
   void publishEncoded(const std::string& channel, const std::vector<uint8_t>& bytes) override {
+    if (alreadySent(channel, bytes)) return;
     if (transport::publishEncoded(lcm_, run_names_.of(channel), bytes.data(), bytes.size()) != 0)
       log::warn("could not publish on ", channel, " (", bytes.size(), " bytes)");
   }
+  // Outputs on the bus already (a restarted process runs its in-flight
+  // firing again): identical ones are not sent twice.
+  void expectAlreadySent(std::multiset<uint64_t> fingerprints) { already_sent_ = std::move(fingerprints); }
+  void forgetAlreadySent() { already_sent_.clear(); }
 
  private:
+  bool alreadySent(const std::string& channel, const std::vector<uint8_t>& bytes) {
+    if (already_sent_.empty()) return false;
+    const auto found = already_sent_.find(messageFingerprint(channel, bytes.data(), bytes.size()));
+    if (found == already_sent_.end()) return false;
+    already_sent_.erase(found);
+    log::info(channel, ": published before this process was restarted, not sent again");
+    return true;
+  }
+
   lcm::LCM& lcm_;
   wire::RunChannelNames run_names_;
+  std::multiset<uint64_t> already_sent_;
 };
 
 // Tells whether the blackboard's copy of a channel is the message already
@@ -157,6 +172,10 @@ class Runner {
       heartbeat_->setState(false, last_fired_id_);
     }
     logged_recently_ = std::move(state.logged_recently);
+    if (state.in_flight) {
+      in_flight_id_ = state.in_flight->firing_id;
+      output_.expectAlreadySent(std::move(state.in_flight_outputs));
+    }
     if (state.firings_lacking_inputs > 0)
       log::warn("the run's log lacks inputs of ", state.firings_lacking_inputs, " of the ", state.firings,
                 " firings replayed (", describeLackingInputs(state.lacking_inputs),
@@ -284,12 +303,15 @@ class Runner {
 
   void fireNow() {
     const auto start = Clock::now();
+    // Only the firing in flight when the process died has outputs on the bus already.
+    if (pending_->firing_id != in_flight_id_) output_.forgetAlreadySent();
     Outcome outcome;
     try {
       outcome = expert_.fire(*pending_, output_);
     } catch (const std::exception& e) {
       outcome = Outcome::failure(std::string("exception: ") + e.what());
     }
+    output_.forgetAlreadySent();
     ++firings_run_;
     pending_fired_ = true;
     last_fired_id_ = pending_->firing_id;
@@ -416,6 +438,7 @@ class Runner {
   double next_wait_report_s_ = 5.0;
   std::map<std::string, uint64_t> last_live_bytes_;  // hash of the latest message heard per channel
   std::multiset<uint64_t> logged_recently_;  // inputs the resume replayed that may also arrive live
+  int64_t in_flight_id_ = -1;                // the firing in flight when the process died (resume)
   const std::string done_channel_ = wire::runChannel(channels::kDone);
 };
 

@@ -214,6 +214,29 @@ ReplayResult replayLog(Expert& expert, const std::string& process_name, const st
   return result;
 }
 
+// What the log holds on `writes` after each firing's FIRE, while no newer
+// FIRE has come: the outputs of a firing that may be in flight.
+class OutputsAfterFire {
+ public:
+  OutputsAfterFire(const Expert& expert, const LogFeeder& feeder) : feeder_(feeder) {
+    for (const auto& spec : expert.writes()) writes_.insert(spec.channel);
+  }
+  void see(const wire::LogEvent& event) {
+    const auto& in_flight = feeder_.inFlight();
+    if (!writes_.count(event.channel) || !in_flight || in_flight->firing_id != feeder_.lastFiringId()) return;
+    by_firing_[in_flight->firing_id].insert(fingerprintOf(event.channel, event.data.data(), event.data.size()));
+  }
+  std::multiset<uint64_t> of(int64_t firing_id) const {
+    const auto found = by_firing_.find(firing_id);
+    return found == by_firing_.end() ? std::multiset<uint64_t>() : found->second;
+  }
+
+ private:
+  const LogFeeder& feeder_;
+  std::set<std::string> writes_;
+  std::map<int64_t, std::multiset<uint64_t>> by_firing_;
+};
+
 ResumeState resumeFromLog(Expert& expert, const std::string& process_name, const std::string& log_path,
                           int64_t live_since_us) {
   if (!wire::waitForLogPast(log_path, live_since_us, 5.0))
@@ -223,11 +246,13 @@ ResumeState resumeFromLog(Expert& expert, const std::string& process_name, const
   DiscardingOutput output;
   LogFeeder feeder(expert, process_name, output, [&](int64_t firing_id) { return dones.count(firing_id) > 0; });
   ResumeState state;
+  OutputsAfterFire outputs(expert, feeder);
   wire::LogReader log(log_path);
   wire::LogEvent event;
   // Inputs logged after this instant may also be waiting on the live sockets.
   const int64_t overlap_from_us = live_since_us - 1000000;
   while (log.nextOfRun(event, wire::runId())) {
+    outputs.see(event);
     if (feeder.feed(event)) {
       ++state.inputs;
       if (event.timestamp >= overlap_from_us) state.logged_recently.insert(fingerprintOf(event.channel, event.data.data(), event.data.size()));
@@ -245,6 +270,7 @@ ResumeState resumeFromLog(Expert& expert, const std::string& process_name, const
   state.in_flight = feeder.inFlight();
   if (state.in_flight && state.last_fired && state.in_flight->firing_id < state.last_fired->firing_id)
     state.in_flight.reset();
+  if (state.in_flight) state.in_flight_outputs = outputs.of(state.in_flight->firing_id);
   state.log_damage = log.damage().summary();
   return state;
 }

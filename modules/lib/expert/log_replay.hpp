@@ -61,6 +61,10 @@ struct ResumeState {
   std::optional<Firing> last_fired;  // the newest firing replayed ...
   std::optional<beft::done_t> last_done;  // ... and its DONE as logged (sent again if asked)
   std::optional<Firing> in_flight;   // a FIRE with no DONE: the arbiter sends it again
+  // messageFingerprint of what the log holds on the expert's channels after
+  // the in-flight FIRE: published before the process died, so the firing run
+  // again does not send them twice.
+  std::multiset<uint64_t> in_flight_outputs;
   std::string log_damage;
   // messageFingerprint of the inputs logged in the last second before the
   // live sockets opened: their live copies are dropped once each.

@@ -657,6 +657,33 @@ TEST(Replay, AnOutputLostByTheLoggerShiftsNothing) {
   std::remove(log_path.c_str());
 }
 
+// A process killed between an output and its DONE: restarted, it runs that
+// firing again, and what the log holds of it is not to be sent twice.
+TEST(Resume, TheOutputsOfTheFiringInFlightAreKnownAsSentAlready) {
+  const std::string log_path = writeRecordedLog(2.0);  // no DONE: the last FIRE is in flight
+  ScalingExpert scaler;
+  scaler.startUp();
+  const auto state = expert::resumeFromLog(scaler, "scaler", log_path, 0);
+  ASSERT_TRUE(state.in_flight);
+  EXPECT_EQ(state.in_flight->firing_id, 104);
+  const auto sent = stateAt(4, 5.0 * 2.0);
+  std::vector<uint8_t> bytes(sent.getEncodedSize());
+  sent.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  EXPECT_EQ(state.in_flight_outputs.size(), 1u);
+  EXPECT_EQ(state.in_flight_outputs.count(expert::messageFingerprint("SCALED", bytes.data(), bytes.size())), 1u);
+  std::remove(log_path.c_str());
+}
+
+TEST(Resume, AFiringInFlightThatPublishedNothingOwesNothing) {
+  const std::string log_path = writeRecordedLog(2.0, 4);  // the last firing's output never made it
+  ScalingExpert scaler;
+  scaler.startUp();
+  const auto state = expert::resumeFromLog(scaler, "scaler", log_path, 0);
+  ASSERT_TRUE(state.in_flight);
+  EXPECT_TRUE(state.in_flight_outputs.empty());
+  std::remove(log_path.c_str());
+}
+
 TEST(Replay, MissingLogIsAClearError) {
   ScalingExpert scaler;
   try {
