@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 
+#include "planners/planner_factory.hpp"
 #include "tools/experiment/value_lists.hpp"
 
 namespace beft::experiment {
@@ -104,6 +105,12 @@ void readSeeds(const Reading& r, Experiment& x) {
   addValues(r, x, kSeed, values);
 }
 
+// The names beft-run's --planner takes (planners/planner_factory.hpp).
+std::set<std::string> knownPlanners() {
+  const auto names = planners::plannerNames();
+  return {names.begin(), names.end()};
+}
+
 void readWords(const Reading& r, Experiment& x, const std::string& factor, const std::set<std::string>& allowed) {
   r.allow({"values"});
   const auto values = words(r.text("values"));
@@ -187,7 +194,7 @@ void readChild(const Reading& r, Experiment& x) {
       {"scenario", readScenario},
       {"generated", readGenerated},
       {"seeds", readSeeds},
-      {"planners", [](const Reading& r, Experiment& x) { readWords(r, x, "planner", {}); }},
+      {"planners", [](const Reading& r, Experiment& x) { readWords(r, x, "planner", knownPlanners()); }},
       {"acoustics", [](const Reading& r, Experiment& x) { readWords(r, x, "acoustics", {"ground_truth", "binaural"}); }},
       {"nets", readNets},
       {"set", readSet},

@@ -54,6 +54,7 @@ TEST_F(ExperimentFileTest, RefusesWhatIsWrongAtItsLine) {
       {head + "  <seeds values=\"5-1\"/>\n</experiment>\n", "seeds and ranges"},
       {head + "  <seeds values=\"1 2x\"/>\n</experiment>\n", "seeds and ranges"},
       {head + "  <acoustics values=\"echo\"/>\n</experiment>\n", "'echo' is not a value of acoustics"},
+      {head + "  <planners values=\"astar rrt\"/>\n</experiment>\n", "'rrt' is not a value of planner"},
       {head + "  <planners values=\"astar astar\"/>\n</experiment>\n", "'astar' is twice a value of planner"},
       {head + "  <scenario file=\"missing.xml\"/>\n</experiment>\n", "no such file: missing.xml"},
       {head + "  <scenario file=\"a.xml\"/>\n</experiment>\n", "two scenes named 'a'"},
@@ -156,7 +157,7 @@ TEST_F(ExperimentFileTest, AListOfEpisodesInsteadOfTheProduct) {
 
 TEST_F(ExperimentFileTest, IdsThatWouldCollideAreRefused) {
   const auto x = readExperiment(write(
-      "<experiment>\n  <scenario file=\"a.xml\"/>\n  <planners values=\"ompl:RRT ompl_RRT\"/>\n</experiment>\n"));
+      "<experiment>\n  <scenario file=\"a.xml\"/>\n  <set name=\"mode\" values=\"a:b a_b\"/>\n</experiment>\n"));
   EXPECT_THROW(expandEpisodes(x), ExperimentError);
 }
 
