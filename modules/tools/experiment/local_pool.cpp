@@ -12,24 +12,13 @@
 
 #include "tools/experiment/child_process.hpp"
 #include "tools/experiment/episode_run.hpp"
+#include "tools/experiment/stop_signals.hpp"
 
 namespace beft::experiment {
 namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-volatile sig_atomic_t stop_requested = 0;
-void requestStop(int) { stop_requested = 1; }
-
-// Without SA_RESTART, so that a signal wakes the pool's waitpid.
-void catchStopSignals() {
-  struct sigaction action = {};
-  action.sa_handler = requestStop;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-}
 
 struct Running {
   const PoolJob* job;
@@ -50,7 +39,7 @@ pid_t start(const PoolJob& job) {
 // Records an ended episode (unless the pool is stopping: then it is left missing).
 void finish(const Running& run, int status, PoolOutcome& outcome, const std::function<void(const std::string&)>& say) {
   const double wall_s = secondsSince(run.start);
-  if (stop_requested) return;
+  if (stopRequested()) return;
   EpisodeState state = finishedState(run.job->folder, exitCodeOf(status), wall_s);
   state.command = run.job->recorded;
   writeEpisodeState(run.job->folder, state);
@@ -86,13 +75,13 @@ PoolOutcome runLocalPool(const std::vector<PoolJob>& jobs, int max_jobs,
   size_t next = 0;
   bool stopping = false;
   while (next < jobs.size() || !running.empty()) {
-    while (!stop_requested && next < jobs.size() && static_cast<int>(running.size()) < max_jobs) {
+    while (!stopRequested() && next < jobs.size() && static_cast<int>(running.size()) < max_jobs) {
       const pid_t pid = start(jobs[next]);
       if (pid > 0) running[pid] = {&jobs[next], Clock::now()};
       if (pid < 0) say("cannot start beft-run for " + jobs[next].id);
       ++next;
     }
-    if (stop_requested && !stopping) {
+    if (stopRequested() && !stopping) {
       stopping = true;
       say("stopping: the running episodes are ended and left to run again");
       stopAll(running);
@@ -107,7 +96,7 @@ PoolOutcome runLocalPool(const std::vector<PoolJob>& jobs, int max_jobs,
     finish(it->second, status, outcome, say);
     running.erase(it);
   }
-  outcome.interrupted = stop_requested;
+  outcome.interrupted = stopRequested();
   outcome.wall_s = secondsSince(pool_start);
   return outcome;
 }

@@ -1,7 +1,5 @@
 #include "tools/experiment/slurm_runner.hpp"
 
-#include <signal.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -12,6 +10,7 @@
 #include "tools/experiment/episode_run.hpp"
 #include "tools/experiment/scenes.hpp"
 #include "tools/experiment/slurm_queue.hpp"
+#include "tools/experiment/stop_signals.hpp"
 
 namespace beft::experiment {
 namespace {
@@ -19,17 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 using Say = std::function<void(const std::string&)>;
-
-volatile sig_atomic_t stop_waiting = 0;
-void requestStop(int) { stop_waiting = 1; }
-
-void catchStopSignals() {
-  struct sigaction action = {};
-  action.sa_handler = requestStop;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-}
 
 struct Programs {
   std::string sbatch, squeue;
@@ -62,7 +50,7 @@ bool waitForJob(const Programs& slurm, const std::string& job_id, const std::vec
   catchStopSignals();
   say("waiting for job " + job_id + " (Ctrl-C stops waiting, not the job)");
   int said = -1;
-  for (int poll = 1; !stop_waiting; ++poll) {
+  for (int poll = 1; !stopRequested(); ++poll) {
     const InQueue queued = jobInQueue(slurm.squeue, job_id, (dir / "squeue.txt").string());
     const int ended = endedCount(jobs, dir / "job.txt");
     if (ended != said)
@@ -72,7 +60,7 @@ bool waitForJob(const Programs& slurm, const std::string& job_id, const std::vec
     if (queued == InQueue::unknown && poll % 10 == 1)
       say("squeue failed: " + lastLineOf((dir / "squeue.txt").string()));
     const auto until = Clock::now() + std::chrono::seconds(std::min(poll, 30));
-    while (!stop_waiting && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    while (!stopRequested() && Clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   return false;
 }

@@ -32,6 +32,7 @@
 #include "lib/report/run_record.hpp"
 #include "lib/report/run_scoring.hpp"
 #include "lib/report/weights_picture.hpp"
+#include "tests/tools/report/log_events.hpp"
 
 namespace beft::report {
 namespace {
@@ -48,18 +49,7 @@ fs::path scratchDir(const std::string& name) {
   return dir;
 }
 
-template <typename Message>
-void write(lcm::LogFile& log, const std::string& channel, const Message& message, int64_t timestamp) {
-  std::vector<uint8_t> bytes(message.getEncodedSize());
-  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  lcm::LogEvent event;
-  event.eventnum = 0;
-  event.timestamp = timestamp;
-  event.channel = channel;
-  event.datalen = static_cast<int32_t>(bytes.size());
-  event.data = bytes.data();
-  ASSERT_EQ(log.writeEvent(&event), 0);
-}
+using report_test::write;
 
 scene_object_t object(const std::string& id, const std::string& label, double x, double y, int8_t shape) {
   scene_object_t o{};

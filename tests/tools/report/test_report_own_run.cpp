@@ -24,6 +24,7 @@
 #include "lib/report/run_scoring.hpp"
 #include "lib/wire/log_reader.hpp"
 #include "lib/wire/run_identity.hpp"
+#include "tests/tools/report/log_events.hpp"
 
 namespace beft::report {
 namespace {
@@ -35,18 +36,7 @@ constexpr int64_t kOtherRun = 0x6b6b;
 constexpr int kTicks = 10;
 constexpr int64_t kWall0 = 1'700'000'000'000'000;
 
-template <typename Message>
-void write(lcm::LogFile& log, const std::string& channel, const Message& message, int64_t timestamp) {
-  std::vector<uint8_t> bytes(message.getEncodedSize());
-  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  lcm::LogEvent event;
-  event.eventnum = 0;
-  event.timestamp = timestamp;
-  event.channel = channel;
-  event.datalen = static_cast<int32_t>(bytes.size());
-  event.data = bytes.data();
-  ASSERT_EQ(log.writeEvent(&event), 0);
-}
+using report_test::write;
 
 robot_state_t robotAt(int64_t tick) {
   robot_state_t robot{};

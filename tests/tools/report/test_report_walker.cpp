@@ -20,6 +20,7 @@
 #include "lib/report/run_record.hpp"
 #include "lib/report/run_scoring.hpp"
 #include "lib/wire/hypothesis_changes.hpp"
+#include "tests/tools/report/log_events.hpp"
 
 namespace beft::report {
 namespace {
@@ -33,18 +34,7 @@ constexpr int kLastSeen = 30;     // ... tracked until 3 s, then out of sight
 constexpr double kSpeed = 1.0;    // the walker's speed along +x [m/s]
 constexpr double kOffset = 0.2;   // the estimate's error along +y while tracked [m]
 
-template <typename Message>
-void write(lcm::LogFile& log, const std::string& channel, const Message& message, int64_t timestamp) {
-  std::vector<uint8_t> bytes(message.getEncodedSize());
-  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  lcm::LogEvent event;
-  event.eventnum = 0;
-  event.timestamp = timestamp;
-  event.channel = channel;
-  event.datalen = static_cast<int32_t>(bytes.size());
-  event.data = bytes.data();
-  ASSERT_EQ(log.writeEvent(&event), 0);
-}
+using report_test::write;
 
 double walkerX(int tick) { return 5 + kSpeed * tick * kDt; }
 
