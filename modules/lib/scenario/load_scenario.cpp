@@ -104,7 +104,9 @@ class Loader {
          e = e->NextSiblingElement("congruency")) {
       readCongruency(*e);
     }
-    warnUnknownChildren(root, {"world", "categories", "robot", "object", "path", "events", "congruency"});
+    if (const XMLElement* acoustics = single(root, "acoustics", false)) readAcoustics(*acoustics);
+    warnUnknownChildren(root, {"world", "categories", "robot", "object", "path", "events", "congruency",
+                               "acoustics"});
 
     checkRobotStart(*robot);
     checkCongruencyCoverage();
@@ -358,6 +360,7 @@ class Loader {
       reader.fail("attribute 'shape' of <visual> must be 'box' or 'cylinder', got '" + shape + "'");
     }
     if (auto color = reader.optionalString("color")) visual.color_rgb = parseColor(reader, *color);
+    if (auto absorption = reader.optionalNumber("absorption")) visual.absorption = requireShare(reader, "absorption", *absorption);
     finish(reader);
     warnUnknownChildren(element, {});
     return visual;
@@ -382,6 +385,41 @@ class Loader {
     acoustic.sound_path = resolveSound(reader, acoustic.sound);
     warnUnknownChildren(element, {});
     return acoustic;
+  }
+
+  // A share in [0, 1] (absorption).
+  static double requireShare(const ElementReader& reader, const char* attribute, double value) {
+    if (!(value >= 0 && value <= 1)) {
+      reader.fail(std::string("attribute '") + attribute + "' of <" + reader.name() + "> must be in [0, 1], got " +
+                  formatNumber(value));
+    }
+    return value;
+  }
+
+  // <acoustics>: every attribute optional; refused outside the ranges the format gives.
+  void readAcoustics(const XMLElement& element) {
+    ElementReader reader(element, file_);
+    Acoustics acoustics;
+    acoustics.line = reader.line();
+    acoustics.reverberation = reader.number("reverberation", acoustics.reverberation);
+    if (acoustics.reverberation < 0 || acoustics.reverberation > 10) {
+      reader.fail("attribute 'reverberation' of <acoustics> must be 0 (no tail) or a T60 in (0, 10] s, got " +
+                  formatNumber(acoustics.reverberation));
+    }
+    if (auto text = reader.optionalString("reflection_order")) {
+      const auto digit = std::find_if(text->begin(), text->end(), [](char c) { return c != ' '; });
+      const bool one_digit = digit != text->end() && *digit >= '0' && *digit <= '4' &&
+                             std::all_of(digit + 1, text->end(), [](char c) { return c == ' '; });
+      if (!one_digit) {
+        reader.fail("attribute 'reflection_order' of <acoustics> must be an integer in 0..4, got '" + *text + "'");
+      }
+      acoustics.reflection_order = *digit - '0';
+    }
+    acoustics.absorption = requireShare(reader, "absorption", reader.number("absorption", acoustics.absorption));
+    acoustics.ground = reader.flag("ground", acoustics.ground);
+    finish(reader);
+    warnUnknownChildren(element, {});
+    scenario_.acoustics = acoustics;
   }
 
   const Object& requireObject(const ElementReader& reader, const std::string& id) const {

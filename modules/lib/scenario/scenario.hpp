@@ -18,6 +18,20 @@ struct Visual {
   double size_x = 0, size_y = 0, size_z = 0;  // box full extents [m]
   double radius = 0, height = 0;              // cylinder [m]
   uint32_t color_rgb = 0x808080;              // 0xRRGGBB
+  // Share of sound energy its surfaces absorb, [0, 1]; none: the
+  // scenario's <acoustics absorption> (rendered hearing only).
+  std::optional<double> absorption;
+  int line = 0;
+};
+
+// Room acoustics of the rendered ear signals (<acoustics>); without the
+// element the free field, direct sound only. Neither the paper's
+// degradation functions nor the ground-truth acoustic expert use it.
+struct Acoustics {
+  double reverberation = 0;  // T60 of the diffuse late tail [s]; 0: no tail
+  int reflection_order = 0;  // image sources off the objects' surfaces up to this order, 0..4
+  double absorption = 0.2;   // share of sound energy a surface without its own absorbs [-]
+  bool ground = true;        // the ground z = 0 reflects
   int line = 0;
 };
 
@@ -107,6 +121,7 @@ struct Scenario {
   std::vector<Path> paths;
   std::vector<Event> events;            // sorted by t; equal t keep file order
   std::map<std::pair<std::string, std::string>, double> congruency;  // (label, activity) -> c
+  std::optional<Acoustics> acoustics;   // none: the free field
   std::vector<std::string> warnings;    // "FILE:LINE: warning: ..." found while loading
 
   const Object* findObject(const std::string& id) const;

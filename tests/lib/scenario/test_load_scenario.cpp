@@ -327,5 +327,46 @@ TEST_F(LoadScenario, WorksFromAnotherWorkingFolder) {
   EXPECT_TRUE(std::filesystem::exists(s.objects[1].acoustic->sound_path));
 }
 
+TEST_F(LoadScenario, AcousticsAbsentMeansTheFreeField) {
+  const Scenario s = loadScenario(write(kMinimal), nullptr);
+  EXPECT_FALSE(s.acoustics.has_value());
+  EXPECT_FALSE(s.objects[0].visual->absorption.has_value());
+}
+
+TEST_F(LoadScenario, AcousticsDefaultsAndValues) {
+  std::string text = kMinimal;
+  text.replace(text.find("</scenario>"), 0, "  <acoustics/>\n");
+  const Scenario defaults = loadScenario(write(text), nullptr);
+  ASSERT_TRUE(defaults.acoustics.has_value());
+  EXPECT_DOUBLE_EQ(defaults.acoustics->reverberation, 0);
+  EXPECT_EQ(defaults.acoustics->reflection_order, 0);
+  EXPECT_DOUBLE_EQ(defaults.acoustics->absorption, 0.2);
+  EXPECT_TRUE(defaults.acoustics->ground);
+  EXPECT_EQ(defaults.acoustics->line, 15);
+
+  std::string full = kMinimal;
+  full.replace(full.find("</scenario>"), 0,
+               "  <acoustics reverberation=\"0.6\" reflection_order=\"2\" absorption=\"0.35\" ground=\"0\"/>\n");
+  full.replace(full.find("size=\"4 0.2 2.5\""), 0, "absorption=\"0.05\" ");
+  std::ostringstream warnings;
+  const Scenario s = loadScenario(write(full), &warnings);
+  EXPECT_EQ(warnings.str(), "");
+  ASSERT_TRUE(s.acoustics.has_value());
+  EXPECT_DOUBLE_EQ(s.acoustics->reverberation, 0.6);
+  EXPECT_EQ(s.acoustics->reflection_order, 2);
+  EXPECT_DOUBLE_EQ(s.acoustics->absorption, 0.35);
+  EXPECT_FALSE(s.acoustics->ground);
+  EXPECT_DOUBLE_EQ(*s.objects[0].visual->absorption, 0.05);
+}
+
+TEST_F(LoadScenario, AcousticsEdgesOfTheRangesLoad) {
+  for (const char* attributes : {"reverberation=\"10\" reflection_order=\"4\" absorption=\"1\" ground=\"1\"",
+                                 "reverberation=\"0\" reflection_order=\"0\" absorption=\"0\" ground=\"0\""}) {
+    std::string text = kMinimal;
+    text.replace(text.find("</scenario>"), 0, std::string("  <acoustics ") + attributes + "/>\n");
+    EXPECT_NO_THROW(loadScenario(write(text), nullptr)) << attributes;
+  }
+}
+
 }  // namespace
 }  // namespace beft::scenario

@@ -543,5 +543,45 @@ TEST_F(Refusal, CongruencyValueBelowZero) {
                 "<c ", "congruency value must be in [0, 1], got -0.25");
 }
 
+// --- acoustics (rendered hearing only) ---
+
+TEST_F(Refusal, SecondAcousticsElement) {
+  expectRefused(scenarioWith("  <acoustics reverberation=\"0.6\"/>\n  <acoustics reflection_order=\"1\" />"),
+                "<acoustics reflection_order", "<acoustics> may appear only once in <scenario> (first at line 5)");
+}
+
+TEST_F(Refusal, EveryBadAcousticsValue) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"reverberation=\"-0.1\"", "attribute 'reverberation' of <acoustics> must be 0 (no tail) or a T60 in (0, 10] s, got -0.1"},
+      {"reverberation=\"10.5\"", "attribute 'reverberation' of <acoustics> must be 0 (no tail) or a T60 in (0, 10] s, got 10.5"},
+      {"reverberation=\"nan\"", "attribute 'reverberation' of <acoustics> must be a finite number, got 'nan'"},
+      {"reverberation=\"slow\"", "attribute 'reverberation' of <acoustics> is not a number: 'slow'"},
+      {"reflection_order=\"5\"", "attribute 'reflection_order' of <acoustics> must be an integer in 0..4, got '5'"},
+      {"reflection_order=\"-1\"", "attribute 'reflection_order' of <acoustics> must be an integer in 0..4, got '-1'"},
+      {"reflection_order=\"1.5\"", "attribute 'reflection_order' of <acoustics> must be an integer in 0..4, got '1.5'"},
+      {"reflection_order=\"two\"", "attribute 'reflection_order' of <acoustics> must be an integer in 0..4, got 'two'"},
+      {"reflection_order=\"\"", "attribute 'reflection_order' of <acoustics> must be an integer in 0..4, got ''"},
+      {"absorption=\"1.2\"", "attribute 'absorption' of <acoustics> must be in [0, 1], got 1.2"},
+      {"absorption=\"-0.01\"", "attribute 'absorption' of <acoustics> must be in [0, 1], got -0.01"},
+      {"absorption=\"inf\"", "attribute 'absorption' of <acoustics> must be a finite number, got 'inf'"},
+      {"ground=\"2\"", "attribute 'ground' of <acoustics> must be 0 or 1, got '2'"},
+      {"ground=\"yes\"", "attribute 'ground' of <acoustics> must be 0 or 1, got 'yes'"},
+  };
+  for (const auto& [attribute, what] : cases) {
+    SCOPED_TRACE(attribute);
+    expectRefused(scenarioWith(kVictim + "  <acoustics " + attribute + "/>"), "<acoustics", what);
+  }
+}
+
+TEST_F(Refusal, VisualAbsorptionOutsideZeroToOne) {
+  for (const char* value : {"1.5", "-0.2"}) {
+    SCOPED_TRACE(value);
+    expectRefused(scenarioWith(std::string("  <object id=\"w\" label=\"wall\" x=\"10\" y=\"5\">\n"
+                                           "    <visual shape=\"box\" size=\"4 0.2 2.5\" absorption=\"") +
+                               value + "\"/>\n  </object>"),
+                  "<visual", std::string("attribute 'absorption' of <visual> must be in [0, 1], got ") + value);
+  }
+}
+
 }  // namespace
 }  // namespace beft::scenario
