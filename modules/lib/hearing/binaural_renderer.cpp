@@ -10,10 +10,16 @@
 #include "lib/hearing/fft_convolver.hpp"
 #include "lib/hearing/looped_signal.hpp"
 #include "lib/hearing/sensor_noise.hpp"
+#include "lib/hearing/source_reading.hpp"
 
 namespace beft::hearing {
 
 namespace {
+
+using detail::progressAt;
+using detail::readMoving;
+using detail::readStill;
+using detail::SourceView;
 
 constexpr double kPi = 3.14159265358979323846;
 // Output samples per FFT: a 0.1 s block is one chunk; a long span is cut
@@ -21,13 +27,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxChunk = 16384;
 // Absolute sample indices beyond this lose precision as doubles.
 constexpr int64_t kMaxAbsoluteSample = int64_t{1} << 52;
-
-// Where and how loud a source is for one head pose.
-struct SourceView {
-  double azimuth_deg;
-  double gain;           // level / r
-  double delay_samples;  // r / c
-};
 
 // Buffers reused from call to call on the same thread.
 struct Scratch {
@@ -81,18 +80,6 @@ void checkRequest(const BlockRequest& request, double sample_rate) {
 
 bool samePose(const HeadPose& a, const HeadPose& b) { return a.centre == b.centre && a.yaw_deg == b.yaw_deg; }
 
-// Position index + fraction of the signal heard at absolute sample n when
-// it is read `shift` samples later (shift = advance - delay): the split
-// depends on shift alone, so a sample's value does not depend on the block.
-struct ReadPosition {
-  int64_t offset;  // added to n
-  float fraction;
-};
-ReadPosition splitShift(double shift) {
-  const double whole = std::floor(shift);
-  return {static_cast<int64_t>(whole), static_cast<float>(shift - whole)};
-}
-
 // The sources' azimuth, gain and delay for each of the first `poses` poses
 // (previous, current).
 void viewSources(const BlockRequest& request, int poses, double sample_rate, Scratch& s) {
@@ -106,52 +93,6 @@ void viewSources(const BlockRequest& request, int poses, double sample_rate, Scr
       s.views[p][i] = {BinauralRenderer::headAzimuthDeg(*pose_of[p], source.position), source.level / distance,
                        distance / BinauralRenderer::kSpeedOfSound * sample_rate};
     }
-  }
-}
-
-// Share of the way from the previous pose to the current one at absolute
-// sample n, for a block of `total` samples from `first`: 1/total at the
-// block's first sample, 1 at its last, negative before the block.
-double progressAt(int64_t n, int64_t first, int total) { return static_cast<double>(n - first + 1) / total; }
-
-// A source's signal as it arrives at the head centre while the head stands
-// still, from absolute sample segment_first on.
-void readStill(const std::vector<float>& signal, const SourceView& view, double read_advance, int64_t segment_first,
-               int segment_length, float* segment) {
-  const ReadPosition read = splitShift(read_advance - view.delay_samples);
-  readLoopedRun(signal, segment_first + read.offset, read.fraction, static_cast<float>(view.gain), segment_length,
-                segment);
-}
-
-// The same while the head moves from the pose `before` to `after` over the
-// block of `total` samples from `first`. The delay and gain move linearly
-// over the block; before it (the history the filters need), they continue
-// the same motion backwards, at most one block's worth, which is what the
-// previous block rendered when the head moved steadily: walking towards a
-// source at 1 m/s, holding the delay there instead put a 2-sample phase jump
-// at each block's start. The read index moves by 0 to 2 samples from one
-// sample to the next: a cursor kept wrapped saves a division per sample.
-void readMoving(const std::vector<float>& signal, const SourceView& before, const SourceView& after,
-                double read_advance, int64_t segment_first, int segment_length, int64_t first, int total,
-                float* segment) {
-  const int64_t length = static_cast<int64_t>(signal.size());
-  int64_t index = 0, cursor = 0;
-  for (int j = 0; j < segment_length; ++j) {
-    const int64_t n = segment_first + j;
-    const double u = std::clamp(progressAt(n, first, total), -1.0, 1.0);
-    const double delay = before.delay_samples + u * (after.delay_samples - before.delay_samples);
-    const double gain = std::max(0.0, before.gain + u * (after.gain - before.gain));
-    const ReadPosition read = splitShift(read_advance - delay);
-    const int64_t next = n + read.offset;
-    if (j == 0 || next - index > 2 * length || index - next > 2 * length) {
-      cursor = ((next % length) + length) % length;
-    } else {
-      cursor += next - index;
-      while (cursor >= length) cursor -= length;
-      while (cursor < 0) cursor += length;
-    }
-    index = next;
-    segment[j] = static_cast<float>(gain) * readLoopedWrapped(signal, cursor, read.fraction);
   }
 }
 
@@ -215,9 +156,12 @@ void BinauralRenderer::render(const BlockRequest& request, StereoBlock& out) con
   viewSources(request, turning ? 2 : 1, sample_rate_, s);
   s.hrir_left.resize(hrirs_.length());
   s.hrir_right.resize(hrirs_.length());
-  for (int chunk_start = 0; chunk_start < total; chunk_start += kMaxChunk) {
-    renderChunk(request, turning, chunk_start, std::min(kMaxChunk, total - chunk_start), out);
+  if (request.direct_sound) {
+    for (int chunk_start = 0; chunk_start < total; chunk_start += kMaxChunk) {
+      renderChunk(request, turning, chunk_start, std::min(kMaxChunk, total - chunk_start), out);
+    }
   }
+  if (request.room != nullptr) addRoom(request, turning, out);
 
   addSensorNoise(request.noise_seed, request.first_sample, total, request.noise_rms, out.left.data(),
                  out.right.data());

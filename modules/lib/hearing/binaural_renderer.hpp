@@ -19,6 +19,8 @@
 
 namespace beft::hearing {
 
+class RoomModel;
+
 struct SourceSignal {             // a mono sound, looped from t = 0 of the run
   std::vector<float> samples;     // at the renderer's sample rate
 };
@@ -28,6 +30,7 @@ struct RenderedSource {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // world frame [m]
   double level = 1.0;             // linear gain of the source [-]
   double occlusion = 0.0;         // O_a in [0,1]: share of source-to-ear lines blocked [-]
+  int room_owner = -1;            // the object it belongs to in the room (RoomModel's boxes' owner), -1: none
 };
 
 struct HeadPose {
@@ -42,6 +45,10 @@ struct BlockRequest {
   std::vector<RenderedSource> sources;
   uint64_t noise_seed = 0;        // sensor noise: a function of (seed, absolute sample index)
   double noise_rms = 1e-4;        // sensor noise level [-]
+  // The room the sources are heard in (not owned); null: the free field,
+  // direct sound only, rendered exactly as without rooms.
+  const RoomModel* room = nullptr;
+  bool direct_sound = true;       // false: the room's contribution alone (impulse responses, tests)
 };
 
 struct StereoBlock {
@@ -72,6 +79,15 @@ class BinauralRenderer {
   // move linearly from the previous pose's to the current one's, and the
   // outputs through the previous and the current HRIRs are cross-faded
   // with a raised cosine, so a turning head makes no clicks.
+  //
+  // In a room (request.room), also each source's early reflections, every
+  // image source (RoomModel::imageSources, for each pose) heard from its
+  // own direction through its own HRIRs, delayed by its path (fractional,
+  // Catmull-Rom), attenuated by 1 / path and sqrt(1 - absorption) per
+  // bounce, not occluded (its path is clear), the poses cross-faded as the
+  // direct sound's are; and the room's diffuse tail, the sum of the
+  // sources (each level times the room's tail amplitude, read at its direct
+  // delay plus the tail's onset) through the tail's two responses.
   StereoBlock render(const BlockRequest& request) const;
   // The same into `out`, reusing its buffers.
   void render(const BlockRequest& request, StereoBlock& out) const;
@@ -88,6 +104,10 @@ class BinauralRenderer {
 
  private:
   void renderChunk(const BlockRequest& request, bool turning, int chunk_start, int chunk, StereoBlock& out) const;
+  // room_rendering.cpp: the room's early reflections and tail, added to out.
+  void addRoom(const BlockRequest& request, bool turning, StereoBlock& out) const;
+  void addEarlyReflections(const BlockRequest& request, bool turning, StereoBlock& out) const;
+  void addTail(const BlockRequest& request, bool turning, StereoBlock& out) const;
 
   HrirSet hrirs_;
   double sample_rate_;
