@@ -74,13 +74,33 @@ double eyringT60(double volume_m3, double surface_m2, double absorption) {
 
 RoomModel::RoomModel(std::vector<ReflectingBox> boxes, const RoomSettings& settings, const HrirSet& hrirs,
                      double sample_rate)
-    : boxes_(std::move(boxes)), settings_(settings) {
+    : settings_(settings) {
   if (settings_.reflection_order < 0 || settings_.reflection_order > 4)
     refuse("reflection order " + std::to_string(settings_.reflection_order) + " is outside 0..4");
   if (!share(settings_.ground_absorption)) refuse("ground absorption is outside [0, 1]");
   if (!(settings_.t60_s >= 0 && settings_.t60_s <= 10)) refuse("T60 is outside [0, 10] s");
   if (!(settings_.volume_m3 >= 0) || !std::isfinite(settings_.volume_m3)) refuse("volume is not finite and >= 0");
   if (!(settings_.max_path_m > 0)) refuse("max_path_m must be > 0");
+  setBoxes(std::move(boxes));
+  if (settings_.t60_s > 0) {
+    // Polack's mixing time, sqrt(V) ms (Polack 1988; Lindau et al. 2012, JAES 60(11)).
+    const double onset = std::clamp(1e-3 * std::sqrt(volume_), kMinTailOnset,
+                                    std::min(kMaxTailOnset, 0.5 * settings_.t60_s));
+    tail_ = std::make_shared<const LateReverb>(hrirs, settings_.t60_s, onset, sample_rate, settings_.seed);
+  }
+  setTailAmplitude();
+}
+
+RoomModel RoomModel::rebuilt(std::vector<ReflectingBox> boxes) const {
+  RoomModel room = *this;
+  room.setBoxes(std::move(boxes));
+  room.setTailAmplitude();
+  return room;
+}
+
+void RoomModel::setBoxes(std::vector<ReflectingBox> boxes) {
+  boxes_ = std::move(boxes);
+  faces_.clear();
   double min_x = kInfinity, min_y = kInfinity, max_x = -kInfinity, max_y = -kInfinity, top = 2.5;
   double absorbed = 0, area = 0;
   for (std::size_t i = 0; i < boxes_.size(); ++i) {
@@ -112,15 +132,14 @@ RoomModel::RoomModel(std::vector<ReflectingBox> boxes, const RoomSettings& setti
   volume_ = settings_.volume_m3 > 0 ? settings_.volume_m3
                                     : (boxes_.empty() ? 100.0 : std::max(1.0, (max_x - min_x) * (max_y - min_y) * top));
   mean_absorption_ = area > 0 ? absorbed / area : settings_.ground_absorption;
-  if (settings_.t60_s > 0) {
-    // Polack's mixing time, sqrt(V) ms (Polack 1988; Lindau et al. 2012, JAES 60(11)).
-    const double onset = std::clamp(1e-3 * std::sqrt(volume_), kMinTailOnset,
-                                    std::min(kMaxTailOnset, 0.5 * settings_.t60_s));
-    tail_ = std::make_shared<const LateReverb>(hrirs, settings_.t60_s, onset, sample_rate, settings_.seed);
-    const double equivalent_area = 0.161 * volume_ / settings_.t60_s;  // Sabine's A [m^2]
-    const double a = std::min(mean_absorption_, 0.99);
-    tail_amplitude_ = std::sqrt(16 * kPi * (1 - a) / equivalent_area);
-  }
+}
+
+void RoomModel::setTailAmplitude() {
+  tail_amplitude_ = 0;
+  if (tail_ == nullptr) return;
+  const double equivalent_area = 0.161 * volume_ / settings_.t60_s;  // Sabine's A [m^2]
+  const double a = std::min(mean_absorption_, 0.99);
+  tail_amplitude_ = std::sqrt(16 * kPi * (1 - a) / equivalent_area);
 }
 
 void RoomModel::addFaces(const ReflectingBox& box, int index) {

@@ -68,6 +68,10 @@ class RoomModel {
   RoomModel(std::vector<ReflectingBox> boxes, const RoomSettings& settings, const HrirSet& hrirs,
             double sample_rate);
 
+  // The same room (settings, tail) with other boxes: the scene's solids of
+  // another tick, without making the tail again.
+  RoomModel rebuilt(std::vector<ReflectingBox> boxes) const;
+
   const RoomSettings& settings() const { return settings_; }
   const std::vector<ReflectingBox>& boxes() const { return boxes_; }
   const std::vector<ReflectingFace>& faces() const { return faces_; }
@@ -100,6 +104,8 @@ class RoomModel {
   double meanAbsorption() const { return mean_absorption_; }
 
  private:
+  void setBoxes(std::vector<ReflectingBox> boxes);
+  void setTailAmplitude();
   void addFaces(const ReflectingBox& box, int index);
   bool validPath(const std::vector<int>& sequence, const std::vector<Eigen::Vector3d>& images,
                  const Eigen::Vector3d& listener, int source_owner) const;

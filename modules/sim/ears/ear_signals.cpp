@@ -54,6 +54,7 @@ hearing::BlockRequest blockRequest(const scene_objects_t& scene, const camera::S
     source.signal = signal;
     source.position = soundPosition(object);
     source.level = object.level;
+    source.room_owner = static_cast<int>(i);
     source.occlusion = audio::acousticOcclusion(solids, static_cast<int>(i), audio::sourceSamplePoints(object),
                                                 left_ear, right_ear) / 100.0;
     const double distance = std::max(0.3, (source.position - request.current.centre).norm());
@@ -65,6 +66,55 @@ hearing::BlockRequest blockRequest(const scene_objects_t& scene, const camera::S
   if (static_cast<int>(candidates.size()) > config.max_sources) candidates.resize(config.max_sources);
   for (auto& candidate : candidates) request.sources.push_back(candidate.source);
   return request;
+}
+
+std::optional<EarsRoom> roomOfScenario(const scenario::Scenario& scenario, const hearing::HrirSet& hrirs,
+                                       double sample_rate) {
+  if (!scenario.acoustics) return std::nullopt;
+  const scenario::Acoustics& acoustics = *scenario.acoustics;
+  hearing::RoomSettings settings;
+  settings.reflection_order = acoustics.reflection_order;
+  settings.ground = acoustics.ground;
+  settings.ground_absorption = acoustics.absorption;
+  settings.t60_s = acoustics.reverberation;
+  settings.seed = scenario.seed + 1;
+  double top = 2.5;
+  std::map<std::string, double> absorption;
+  for (const scenario::Object& object : scenario.objects) {
+    if (!object.visual) continue;
+    const scenario::Visual& visual = *object.visual;
+    top = std::max(top, object.z + (visual.shape == scenario::Visual::Shape::Box ? visual.size_z : visual.height));
+    absorption[object.id] = visual.absorption.value_or(acoustics.absorption);
+  }
+  settings.volume_m3 = scenario.world.width * scenario.world.height * top;
+  return EarsRoom{hearing::RoomModel({}, settings, hrirs, sample_rate), std::move(absorption), acoustics.absorption};
+}
+
+hearing::RoomModel roomOfTick(const EarsRoom& room, const scene_objects_t& scene, const camera::SceneGeometry& solids) {
+  std::vector<hearing::ReflectingBox> boxes;
+  boxes.reserve(solids.solids().size());
+  for (const camera::Solid& solid : solids.solids()) {
+    hearing::ReflectingBox box;
+    box.x = solid.x;
+    box.y = solid.y;
+    box.z_min = solid.z_min;
+    box.z_max = solid.z_max;
+    if (solid.shape == camera::Solid::Shape::Box) {
+      box.yaw_deg = std::atan2(solid.sin_yaw, solid.cos_yaw) * 180 / M_PI;
+      box.size_x = 2 * solid.half_x;
+      box.size_y = 2 * solid.half_y;
+    } else {
+      box.size_x = box.size_y = 2 * solid.radius;
+    }
+    box.owner = solid.object_index;
+    box.absorption = room.default_absorption;
+    if (solid.object_index >= 0 && solid.object_index < static_cast<int>(scene.objects.size())) {
+      const auto found = room.absorption.find(scene.objects[static_cast<std::size_t>(solid.object_index)].id);
+      if (found != room.absorption.end()) box.absorption = found->second;
+    }
+    boxes.push_back(box);
+  }
+  return room.base.rebuilt(std::move(boxes));
 }
 
 binaural_block_t blockMessage(const hearing::StereoBlock& block, const hearing::BlockRequest& request,

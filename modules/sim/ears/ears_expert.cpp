@@ -5,6 +5,7 @@
 
 #include "lib/common/channels.hpp"
 #include "lib/common/log.hpp"
+#include "lib/scenario/load_scenario.hpp"
 #include "lib/scene/scene_geometry.hpp"
 
 namespace beft::ears {
@@ -13,7 +14,9 @@ std::string EarsExpert::description() const {
   return "The robot's two ears: every sounding object's sound (its WAV, looped from the run's start, resampled "
          "to the impulse responses' rate) rendered for the head's pose with head-related impulse responses (the "
          "KEMAR set of the SoundScape Renderer; a spherical-head model if it is missing), 1/r gain and "
-         "propagation delay, occluded sources muffled by O_a, a turning head cross-faded, seeded sensor noise. "
+         "propagation delay, occluded sources muffled by O_a, a turning head cross-faded, seeded sensor noise; "
+         "with the scenario's <acoustics>, early reflections off the scene's solids and the ground (image sources) "
+         "and a diffuse tail of its T60. "
          "Reads GT_OBJECTS and ROBOT_STATE of the fired tick (and ROBOT_STATE of the tick before), writes EARS: "
          "the samples from the previous tick's time to this one's. Started by ./beft run --acoustics binaural; "
          "./beft listen LOG --out ears.wav writes what it heard.";
@@ -40,6 +43,12 @@ void EarsExpert::onStartUp() {
       scenario_.empty() ? std::string(".") : std::filesystem::path(scenario_).parent_path().string();
   if (scenario_.empty()) log::warn("ears: no --param scenario=FILE: sounds are looked up from the current folder");
   sounds_ = std::make_unique<hearing::SoundBank>(folder.empty() ? "." : folder, rate, warn);
+  if (!scenario_.empty()) {
+    room_ = roomOfScenario(scenario::loadScenario(scenario_, nullptr), renderer_->hrirs(), rate);
+    if (room_)
+      log::info("ears: room acoustics, reflection order ", room_->base.settings().reflection_order, ", T60 ",
+                room_->base.settings().t60_s, " s, ground ", room_->base.settings().ground ? "reflecting" : "silent");
+  }
 }
 
 expert::Outcome EarsExpert::fire(const expert::Firing& firing, expert::Output& out) {
@@ -51,7 +60,12 @@ expert::Outcome EarsExpert::fire(const expert::Firing& firing, expert::Output& o
   const robot_state_t* previous = firing.tick > 0 ? robot_.ofTick(firing.tick - 1) : nullptr;
   const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(*scene);
   const double rate = renderer_->sampleRate();
-  const hearing::BlockRequest request = blockRequest(*scene, solids, *robot, previous, *sounds_, rate, config_);
+  hearing::BlockRequest request = blockRequest(*scene, solids, *robot, previous, *sounds_, rate, config_);
+  std::optional<hearing::RoomModel> room;
+  if (room_) {
+    room.emplace(roomOfTick(*room_, *scene, solids));
+    request.room = &*room;
+  }
   ears_out_.publish(out, blockMessage(renderer_->render(request), request, *robot, rate));
   return expert::Outcome::success();
 }

@@ -32,6 +32,7 @@ class EarsExpert : public expert::Expert {
   std::string scenario_;   // the scene objects' sounds are relative to its folder
   std::string hrirs_;      // "" = the KEMAR set (spherical head if missing), "spherical" = the model
   std::optional<hearing::BinauralRenderer> renderer_;
+  std::optional<EarsRoom> room_;  // the scenario's <acoustics>; none: the free field
   std::unique_ptr<hearing::SoundBank> sounds_;
   expert::SceneInput scene_{*this};
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};

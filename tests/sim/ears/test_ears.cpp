@@ -2,8 +2,14 @@
 // 16-bit message that carries them.
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <unistd.h>
 
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+#include "lib/scenario/load_scenario.hpp"
 #include "sim/ears/ear_signals.hpp"
 
 using namespace beft;
@@ -122,4 +128,98 @@ TEST(EarSignals, TheMessageCarriesTheSamplesTo16BitsOfTheBlocksPeak) {
   quiet.left.assign(10, 0.0f);
   quiet.right.assign(10, 0.0f);
   EXPECT_EQ(ears::blockMessage(quiet, request, robotAt(2), 44100).full_scale, 1.0);
+}
+
+namespace {
+
+// A scenario with a caller behind a wall, a second wall beside them, and
+// `acoustics` (an <acoustics .../> element, or nothing), written to a
+// temporary file; its path.
+std::string roomScenario(const std::string& acoustics) {
+  static int count = 0;
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("beft_ears_room_" + std::to_string(getpid()) + "_" + std::to_string(count++) + ".xml"))
+                               .string();
+  std::ofstream(path) << "<?xml version=\"1.0\"?>\n<scenario name=\"room\" seed=\"3\">\n"
+                         "  <world width=\"20\" height=\"12\"/>\n  <robot x=\"2\" y=\"5\"/>\n"
+                         "  <object id=\"wall\" label=\"wall\" x=\"5\" y=\"5\" yaw=\"90\">\n"
+                         "    <visual shape=\"box\" size=\"4 0.2 2.5\"/>\n  </object>\n"
+                         "  <object id=\"side\" label=\"wall\" x=\"5\" y=\"9.1\">\n"
+                         "    <visual shape=\"box\" size=\"12 0.2 3\" absorption=\"0.05\"/>\n  </object>\n"
+                         "  <object id=\"caller\" label=\"person\" x=\"8\" y=\"5\" activity=\"yelling\">\n"
+                         "    <visual shape=\"cylinder\" radius=\"0.3\" height=\"1.8\"/>\n"
+                         "    <acoustic sound=\"" BEFT_SOURCE_DIR "/scenarios/sounds/help.wav\"/>\n  </object>\n" +
+                             acoustics + "\n</scenario>\n";
+  return path;
+}
+
+struct RenderedTick {
+  hearing::StereoBlock block;
+  std::optional<ears::EarsRoom> room;
+};
+
+// Tick 10 of the scenario as beft-ears renders it (spherical head).
+RenderedTick renderTick(const std::string& acoustics) {
+  const scenario::Scenario scenario = scenario::loadScenario(roomScenario(acoustics), nullptr);
+  scene_objects_t message{};
+  for (const scenario::Object& object : scenario.objects) {
+    scene_object_t o = caller(object.id, object.x, object.y, object.acoustic ? object.acoustic->sound_path : "");
+    o.has_acoustic = o.sound_active = object.acoustic.has_value();
+    o.yaw = object.yaw;
+    o.shape = object.visual->shape == scenario::Visual::Shape::Box ? scene_object_t::SHAPE_BOX : scene_object_t::SHAPE_CYLINDER;
+    o.size_x = object.visual->shape == scenario::Visual::Shape::Box ? object.visual->size_x : 2 * object.visual->radius;
+    o.size_y = object.visual->shape == scenario::Visual::Shape::Box ? object.visual->size_y : 2 * object.visual->radius;
+    o.size_z = object.visual->shape == scenario::Visual::Shape::Box ? object.visual->size_z : object.visual->height;
+    o.radius = object.visual->radius;
+    message.objects.push_back(o);
+  }
+  message.num_objects = static_cast<int32_t>(message.objects.size());
+  const camera::SceneGeometry solids = camera::SceneGeometry::fromMessage(message);
+  static const hearing::BinauralRenderer renderer(hearing::HrirSet::sphericalHead(), 44100);
+  hearing::SoundBank sounds("/", 44100, [](const std::string&) {});
+  robot_state_t robot = robotAt(10), before = robotAt(9);
+  robot.x = before.x = 2;
+  robot.y = before.y = 5;
+  hearing::BlockRequest request = ears::blockRequest(message, solids, robot, &before, sounds, 44100, {});
+  RenderedTick tick;
+  tick.room = ears::roomOfScenario(scenario, renderer.hrirs(), 44100);
+  std::optional<hearing::RoomModel> room;
+  if (tick.room) {
+    room.emplace(ears::roomOfTick(*tick.room, message, solids));
+    request.room = &*room;
+  }
+  tick.block = renderer.render(request);
+  return tick;
+}
+
+double energy(const hearing::StereoBlock& block) {
+  double sum = 0;
+  for (float s : block.left) sum += static_cast<double>(s) * s;
+  for (float s : block.right) sum += static_cast<double>(s) * s;
+  return sum;
+}
+
+}  // namespace
+
+TEST(EarsRoom, WithoutAcousticsTheFreeFieldBitForBit) {
+  const RenderedTick free_field = renderTick("");
+  EXPECT_FALSE(free_field.room.has_value());
+  // An <acoustics> that asks for nothing (no reflections, no tail, no ground) changes no sample.
+  const RenderedTick nothing = renderTick("<acoustics reflection_order=\"0\" reverberation=\"0\" ground=\"0\"/>");
+  ASSERT_TRUE(nothing.room.has_value());
+  EXPECT_EQ(free_field.block.left, nothing.block.left);
+  EXPECT_EQ(free_field.block.right, nothing.block.right);
+  EXPECT_GT(energy(free_field.block), 0);
+}
+
+TEST(EarsRoom, TheScenariosAcousticsReachTheEars) {
+  const RenderedTick free_field = renderTick("");
+  const RenderedTick room = renderTick("<acoustics reflection_order=\"2\" reverberation=\"0.6\" absorption=\"0.3\"/>");
+  ASSERT_TRUE(room.room.has_value());
+  EXPECT_EQ(room.room->base.settings().reflection_order, 2);
+  EXPECT_DOUBLE_EQ(room.room->base.settings().t60_s, 0.6);
+  EXPECT_DOUBLE_EQ(room.room->absorption.at("side"), 0.05);
+  EXPECT_DOUBLE_EQ(room.room->absorption.at("wall"), 0.3);
+  // The caller behind the wall is heard louder through the side wall's reflections and the tail.
+  EXPECT_GT(energy(room.block), 1.5 * energy(free_field.block));
 }
