@@ -90,10 +90,21 @@ void readSource(const RenderedSource& source, const BlockRequest& request, bool 
   const SourceView before{0, gain, delays[0]}, after{0, gain, turning ? delays[1] : delays[0]};
   if (!turning) {
     readStill(source.signal->samples, before, advance, segment_first, segment_length, out);
-  } else {
-    readMoving(source.signal->samples, before, after, advance, segment_first, segment_length, request.first_sample,
-               request.num_samples, out);
+    return;
   }
+  // More than a block before the block, readMoving holds the motion at its
+  // value one block back (u = -1): read that stretch in one still run.
+  const int64_t first = request.first_sample;
+  const int total = request.num_samples;
+  const int held = static_cast<int>(std::clamp<int64_t>(first - total - segment_first, 0, segment_length));
+  if (held > 0) {
+    const double u = -1.0;
+    const SourceView back{0, std::max(0.0, before.gain + u * (after.gain - before.gain)),
+                          before.delay_samples + u * (after.delay_samples - before.delay_samples)};
+    readStill(source.signal->samples, back, advance, segment_first, held, out);
+  }
+  readMoving(source.signal->samples, before, after, advance, segment_first + held, segment_length - held, first, total,
+             out + held);
 }
 
 }  // namespace

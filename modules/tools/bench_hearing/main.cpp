@@ -27,6 +27,7 @@
 #include "lib/common/command_line.hpp"
 #include "lib/hearing/hrir_set.hpp"
 #include "lib/hearing/trials/localisation_trials.hpp"
+#include "lib/hearing/trials/room_trials.hpp"
 #include "lib/common/log.hpp"
 #include "lib/common/own_bin_dir.hpp"
 #include "lib/common/quiet_child.hpp"
@@ -48,6 +49,8 @@ struct Options {
   uint64_t seed = 1;
   std::string sounds_dir = trials::scenarioSoundsDir();
   bool missions = true;
+  bool rooms = true;
+  int room_trials = 100;
   bool json = false;
 };
 
@@ -102,24 +105,30 @@ StereoBlock leftSource(const Bench& bench) {
 // Four sources at 30, 120, -45 and -160 deg, 1.5 to 6 m, one partly
 // occluded; consecutive blocks rendered for about options.seconds of CPU
 // time. `moving`: the head turns at 90 deg/s and walks at 0.5 m/s (every
-// block cross-fades two poses); otherwise it stands still. Rendered audio
-// seconds per CPU second.
-double realtimeFactor(const Bench& bench, bool moving) {
+// block cross-fades two poses); otherwise it stands still. In a room, the
+// head starts at the trials' listener of the 16 x 12 x 4 m shoebox. Rendered
+// audio seconds per CPU second.
+double realtimeFactor(const Bench& bench, bool moving, const trials::TrialRoom* room = nullptr) {
   const std::vector<SourceSignal> signals = {whiteNoise(1.3, 1), whiteNoise(1.7, 2), whiteNoise(2.1, 3),
                                              whiteNoise(0.9, 4)};
   BlockRequest request;
   request.num_samples = kBlock;
   request.noise_seed = 5;
   const double azimuths[4] = {30, 120, -45, -160}, distances[4] = {1.5, 3, 4.5, 6}, occlusions[4] = {0, 0.4, 0, 1};
-  for (int i = 0; i < 4; ++i) request.sources.push_back({&signals[i], at(azimuths[i], distances[i]), 1.0, occlusions[i]});
+  const Eigen::Vector3d origin = room != nullptr ? trials::trialListener() : Eigen::Vector3d::Zero();
+  for (int i = 0; i < 4; ++i)
+    request.sources.push_back({&signals[i], origin + at(azimuths[i], distances[i]), 1.0, occlusions[i]});
+  if (room != nullptr) request.room = room->model.get();
   StereoBlock out;
   const auto setTick = [&](int64_t tick) {
     request.first_sample = tick * kBlock;
     const double step = moving ? 1.0 : 0.0;
     request.previous.yaw_deg = step * 9.0 * tick;
     request.current.yaw_deg = step * 9.0 * (tick + 1);
-    request.previous.centre = Eigen::Vector3d(step * 0.05 * tick, 0, 0);
-    request.current.centre = Eigen::Vector3d(step * 0.05 * (tick + 1), 0, 0);
+    // Back and forth over 2 m, so that a long measurement stays in the room.
+    const auto walked = [&](int64_t t) { return step * 0.05 * static_cast<double>(std::abs((t % 80) - 40)); };
+    request.previous.centre = origin + Eigen::Vector3d(walked(tick), 0, 0);
+    request.current.centre = origin + Eigen::Vector3d(walked(tick + 1), 0, 0);
   };
   setTick(0);
   bench.renderer.render(request, out);  // FFT plans and buffers
@@ -164,6 +173,12 @@ const std::vector<Figure>& figures() {
        [](const Bench& b) { return realtimeFactor(b, true); }},
       {"render_realtime_factor_4_sources_static", "x", "the same with the head standing still",
        [](const Bench& b) { return realtimeFactor(b, false); }},
+      {"render_realtime_factor_4_sources_reverberant", "x",
+       "the moving head's 4 sources in a 16 x 12 x 4 m room: image sources to order 2 and a 0.6 s tail",
+       [](const Bench& b) {
+         const trials::TrialRoom room = trials::trialRoom(0.6, b.renderer.hrirs(), 2);
+         return realtimeFactor(b, true, &room);
+       }},
   };
   return list;
 }
@@ -190,6 +205,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--sounds", o.sounds_dir, "folder of the scenario sounds")->capture_default_str()->check(
       CLI::ExistingDirectory);
   app.add_flag("!--no-missions", o.missions, "skip the missions (yard, peek, decoy with --acoustics binaural)");
+  app.add_flag("!--no-rooms", o.rooms, "skip the localiser's trials in rooms");
+  app.add_option("--room-trials", o.room_trials, "trials per room and number of talkers")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10000));
   app.add_flag("--json", o.json, "print one JSON object of the figures");
   return beft::parseCommandLine(app, argc, argv);
 }
@@ -266,6 +285,39 @@ nlohmann::json measureFigures(const Options& options, const HrirSet& hrirs) {
   return report;
 }
 
+// The localiser in rooms (trials/room_trials.hpp): one entry per T60 and
+// number of talkers, added to the report as "rooms" (and printed unless --json).
+void addRooms(const Options& options, const BinauralRenderer& renderer, nlohmann::json& report) {
+  report["rooms"] = nlohmann::json::array();
+  if (!options.json)
+    std::printf("rooms (16 x 12 x 4 m shoebox, talkers 1.5 m away over 360 deg, after one head turn):\n"
+                "  %6s %8s %7s %7s %9s %8s %8s %8s\n", "T60", "measured", "DRR dB", "talkers", "within 5", "median",
+                "fb still", "fb turn");
+  trials::RoomTrials room_trials(renderer, BlockLocaliser(InterauralTemplates::fromSofa()), options.sounds_dir);
+  for (double t60 : {0.0, 0.3, 0.6, 0.9}) {
+    const trials::TrialRoom room = trials::trialRoom(t60, renderer.hrirs(), 2);
+    for (int talkers = 1; talkers <= 3; ++talkers) {
+      const trials::RoomFigures f = room_trials.run(room, talkers, options.room_trials, options.seed + 100 * talkers);
+      nlohmann::json entry = {{"t60_s", f.t60_s},
+                              {"t60_measured_s", f.t60_measured_s},
+                              {"drr_db", f.drr_db ? nlohmann::json(*f.drr_db) : nlohmann::json(nullptr)},
+                              {"sources", f.sources},
+                              {"trials", f.trials},
+                              {"within_5deg", f.within_5deg},
+                              {"median_error_deg", f.median_error_deg},
+                              {"front_back_static", f.front_back_static},
+                              {"front_back_after_turn", f.front_back_after_turn}};
+      report["rooms"].push_back(entry);
+      if (!options.json) {
+        std::printf("  %6.1f %8.3f %7s %7d %9.3f %8.2f %8.3f %8.3f\n", f.t60_s, f.t60_measured_s,
+                    f.drr_db ? std::to_string(*f.drr_db).substr(0, 5).c_str() : "-", f.sources, f.within_5deg,
+                    f.median_error_deg, f.front_back_static, f.front_back_after_turn);
+        std::fflush(stdout);
+      }
+    }
+  }
+}
+
 // The missions that hear for real, added to the report (and printed unless --json).
 void addHearingMissions(const Options& options, nlohmann::json& report) {
   report["missions"] = nlohmann::json::array();
@@ -291,6 +343,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     nlohmann::json report = measureFigures(options, hrirs);
+    if (options.rooms) addRooms(options, BinauralRenderer(hrirs, kRate), report);
     if (options.missions) addHearingMissions(options, report);
     if (options.json) std::printf("%s\n", report.dump(2).c_str());
   } catch (const std::exception& e) {
