@@ -122,7 +122,7 @@ TEST_P(LossyLink, RunCompletesWithTheMessagesOfALocalRunAndACompleteLog) {
 // 10 % each way runs in `./beft bench faults`: there the recorder now and
 // then gives up on one message near the run's end (1 of 877 missed in one
 // clean-clone run), which leaves its log incomplete.
-INSTANTIATE_TEST_SUITE_P(LossEachWay, LossyLink, ::testing::Values(0.01, 0.05),
+INSTANTIATE_TEST_SUITE_P(LossEachWay, LossyLink, ::testing::Values(0.01, 0.05, 0.10),
                          [](const ::testing::TestParamInfo<double>& info) {
                            return std::to_string(static_cast<int>(info.param * 100 + 0.5)) + "Percent";
                          });

@@ -90,7 +90,9 @@ std::shared_ptr<Publisher> publisherOf(lcm::LCM& lcm) {
 
 class AttachedPublisher : public PublisherScope {
  public:
-  static constexpr int kLeaveQuietMs = 100, kLeaveLongestMs = 1000;
+  // Long enough that a receiver starved of the CPU for a moment (a recorder
+  // at lower priority on a busy machine) still asks in time.
+  static constexpr int kLeaveQuietMs = 250, kLeaveLongestMs = 2000;
 
   AttachedPublisher(lcm::LCM& lcm, const std::string& url, const std::string& process)
       : lcm_(lcm), publisher_(publisherOf(lcm)) {

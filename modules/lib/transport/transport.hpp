@@ -79,6 +79,7 @@ struct RepairStats {
   uint64_t unauthenticated = 0;  // refused in a run with a key: no valid tag
   uint64_t waiting = 0;          // messages held now behind a gap
   uint64_t outstanding = 0;      // messages missing now, still asked for
+  std::vector<std::string> lost_named;  // the first few given up: "CHANNEL #N of PROCESS (why)"
 };
 
 class Receiver {

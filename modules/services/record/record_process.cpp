@@ -72,6 +72,7 @@ void RecordProcess::reportEnd(const Recorder& recorder) const {
   if (repairs.lost + repairs.outstanding > 0 || repairs.joined_late > 0)
     log::error("the log is not complete: ", repairs.lost + repairs.outstanding, " message(s) lost, ",
                repairs.joined_late, " stream(s) first heard late");
+  for (const std::string& lost : repairs.lost_named) log::error("lost: ", lost);
 }
 
 void RecordProcess::onStartUp() {

@@ -4,6 +4,7 @@
 // falls silent.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -158,6 +159,44 @@ TEST_F(Tracker, AStreamBegunAfterTheReceiverStartedIsTakenFromItsFirstMessage) {
   new_stream.sender = static_cast<int64_t>(kSender + 3);
   tracker.onState(new_stream, 60, deliver);
   ASSERT_EQ(tracker.due(60, deliver).size(), 1u);
+}
+
+TEST_F(Tracker, ALeavingSenderIsAskedOftenEnoughThatItStillAnswers) {
+  receive(1, 0);
+  beft::sender_state_t leaving = state(2, 1);
+  leaving.leaving = true;
+  leaving.process = "vision";
+  tracker.onState(leaving, 0, deliver);
+  int64_t now = 0, longest_wait = 0, asks = 0;
+  while (now < 240'000) {  // within the time a leaving sender still answers (publisher.cpp: 250 ms quiet)
+    const int64_t next = tracker.nextDueUs();
+    longest_wait = std::max(longest_wait, next - now);
+    now = next;
+    tracker.onState(leaving, now, deliver);  // its states keep coming while it waits
+    asks += static_cast<int64_t>(tracker.due(now, deliver).size());
+  }
+  EXPECT_LE(longest_wait, 25'000) << "a leaving sender waits 250 ms for the next ask at most";
+  EXPECT_GE(asks, 9);
+  EXPECT_EQ(tracker.stats().lost, 0u);
+}
+
+TEST_F(Tracker, NamesWhatItGivesUp) {
+  receive(1, 0);
+  beft::sender_state_t leaving = state(3, 1);
+  leaving.leaving = true;
+  leaving.process = "tasks";
+  tracker.onState(leaving, 0, deliver);
+  tracker.due(0, deliver);
+  tracker.due(10'000'000, deliver);  // long silent: given up
+  EXPECT_EQ(tracker.stats().lost, 2u);
+  EXPECT_EQ(tracker.lostNamed(), (std::vector<std::string>{"VISION #2 of tasks (its sender left before it came)",
+                                                           "VISION #3 of tasks (its sender left before it came)"}));
+  receive(1, 0, 77);
+  beft::sender_state_t moved_on = state(9, 5);
+  moved_on.sender = 77;
+  tracker.onState(moved_on, 10'000'000, deliver);
+  ASSERT_EQ(tracker.lostNamed().size(), 5u);
+  EXPECT_EQ(tracker.lostNamed()[2], "VISION #2 of 77 (no longer kept by its sender)");
 }
 
 TEST_F(Tracker, StreamsAreKeptApartBySenderAndAChannelNotTrackedIsLeftAlone) {

@@ -157,6 +157,7 @@ struct ReliableSender::Loop {
 
   // How long to wait before the next state is due [ms]; -1: no state is due.
   int waitMs(int64_t now) const {
+    if (owner.leaving_) return static_cast<int>(std::max<int64_t>(0, (next_state_us - now + 999) / 1000));
     if (owner.dirty_) {
       const int64_t quiet_until = owner.last_publish_us_.load(std::memory_order_relaxed) + kQuietMs * 1000;
       return static_cast<int>(std::max<int64_t>(0, (quiet_until - now + 999) / 1000));
@@ -166,6 +167,12 @@ struct ReliableSender::Loop {
   }
 
   void sendDueState(int64_t now) {
+    if (owner.leaving_) {
+      if (now < next_state_us) return;
+      sendState();
+      next_state_us = now + int64_t{kLeavingStateMs} * 1000;
+      return;
+    }
     if (owner.dirty_) {
       if (now - owner.last_publish_us_.load(std::memory_order_relaxed) < kQuietMs * 1000) return;
       owner.dirty_ = false;
@@ -201,7 +208,7 @@ void ReliableSender::run() {
     if (stop_) break;
     loop.requests->drain([&](const Message& message) { loop.serve(message); });
     if (leaving_ && !told_leaving) {
-      loop.sendState();  // at once: receivers ask for what they miss now
+      loop.next_state_us = 0;  // at once: receivers ask for what they miss now
       told_leaving = true;
     }
     loop.sendDueState(steadyMicros());

@@ -38,6 +38,10 @@ class ReliableSender {
   static constexpr int kQuietMs = 1;
   // Heartbeat states: from kQuietMs doubling up to this [ms].
   static constexpr int kSlowestStateMs = 500;
+  // While leaving, the state goes out this often [ms]: a receiver that lost
+  // the leaving state (and with it news of a last message it missed) hears
+  // the next one while the sender still answers.
+  static constexpr int kLeavingStateMs = 20;
 
   // Null for a URL that is not udpm:// (nothing there is lost). Throws
   // std::runtime_error when the repair socket cannot be opened.

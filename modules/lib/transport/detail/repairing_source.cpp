@@ -116,6 +116,7 @@ class RepairingSource : public Receiver {
     repairs.unauthenticated = unauthenticated_;
     repairs.waiting = tracker_.heldMessages();
     repairs.outstanding = tracker_.missingMessages();
+    repairs.lost_named = tracker_.lostNamed();
     return repairs;
   }
 

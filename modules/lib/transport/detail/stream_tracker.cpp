@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "lib/wire/run_identity.hpp"
+
 namespace beft::transport::detail {
 
 namespace {
@@ -115,12 +117,27 @@ void StreamTracker::accept(const Message& message, const wire::Envelope& envelop
       stream.held[sequence] = Held{std::vector<uint8_t>(message.data, message.data + message.size), message.recv_utime};
     }
   }
-  advance(stream, false, deliver);
+  advance(envelope.sender, stream, false, deliver);
+}
+
+const char* StreamTracker::silentWhy(uint64_t sender) const {
+  const auto heard = senders_.find(sender);
+  return heard != senders_.end() && heard->second.leaving ? "its sender left before it came" : "its sender fell silent";
+}
+
+void StreamTracker::countLost(uint64_t sender, const Stream& stream, uint64_t sequence, const char* why) {
+  ++stats_.lost;
+  if (lost_named_.size() >= kMostLostNamed) return;
+  const auto heard = senders_.find(sender);
+  const std::string process =
+      heard != senders_.end() && !heard->second.process.empty() ? heard->second.process : std::to_string(sender);
+  lost_named_.push_back(std::string(wire::splitRunChannel(stream.channel).base) + " #" + std::to_string(sequence) +
+                        " of " + process + " (" + why + ")");
 }
 
 // Hands on what is held in order; skips what is given up (no longer kept,
 // or, when the sender is dead, anything before what is held).
-void StreamTracker::advance(Stream& stream, bool sender_dead, const Handler& deliver) {
+void StreamTracker::advance(uint64_t sender, Stream& stream, bool sender_dead, const Handler& deliver) {
   for (;;) {
     if (!stream.held.empty() && stream.held.begin()->first == stream.next && stream.held.begin()->second.handed) {
       stream.held.erase(stream.held.begin());
@@ -142,13 +159,14 @@ void StreamTracker::advance(Stream& stream, bool sender_dead, const Handler& del
       ++stream.next;
       continue;
     }
-    const bool given_up = stream.next < stream.gone_below || (sender_dead && !stream.held.empty());
-    if (!given_up) break;
-    if (stream.missing.erase(stream.next)) ++stats_.lost;
+    const bool no_longer_kept = stream.next < stream.gone_below;
+    if (!no_longer_kept && !(sender_dead && !stream.held.empty())) break;
+    if (stream.missing.erase(stream.next))
+      countLost(sender, stream, stream.next, no_longer_kept ? "no longer kept by its sender" : silentWhy(sender));
     ++stream.next;
   }
   if (sender_dead) {
-    stats_.lost += stream.missing.size();
+    for (const auto& [sequence, ask] : stream.missing) countLost(sender, stream, sequence, silentWhy(sender));
     stream.missing.clear();
   }
 }
@@ -157,6 +175,7 @@ void StreamTracker::onState(const beft::sender_state_t& state, int64_t now_us, c
   const auto sender = static_cast<uint64_t>(state.sender);
   hear(sender, now_us);
   senders_[sender].leaving = state.leaving;
+  senders_[sender].process = state.process;
   const std::size_t count = std::min({state.channels.size(), state.last_sequences.size(), state.first_kept.size(),
                                       state.stream_started.size()});
   for (std::size_t i = 0; i < count; ++i) {
@@ -174,7 +193,7 @@ void StreamTracker::onState(const beft::sender_state_t& state, int64_t now_us, c
     }
     if (last >= stream.next && last - stream.next <= options_.widest_gap) markMissing(stream, stream.next, last + 1, now_us);
     stream.gone_below = std::max<uint64_t>(stream.gone_below, static_cast<uint64_t>(std::max<int64_t>(0, state.first_kept[i])));
-    advance(stream, false, deliver);
+    advance(sender, stream, false, deliver);
   }
 }
 
@@ -185,7 +204,7 @@ std::vector<beft::repair_request_t> StreamTracker::due(int64_t now_us, const Han
     Sender& sender = senders_[key.first];
     if (now_us - sender.last_heard_us > silenceAllowed(sender)) {
       sender.dead = true;
-      advance(stream, true, deliver);
+      advance(key.first, stream, true, deliver);
       continue;
     }
     beft::repair_request_t request;
@@ -199,8 +218,9 @@ std::vector<beft::repair_request_t> StreamTracker::due(int64_t now_us, const Han
         ask.first_us = now_us;
         if (ask.awaited) ++stats_.gaps;  // awaited, and still not here: lost
       }
-      ask.next_us = now_us + ask.wait_us;
-      ask.wait_us = std::min(ask.wait_us * 2, options_.slowest_retry_us);
+      const int64_t slowest = sender.leaving ? options_.slowest_retry_of_leaving_us : options_.slowest_retry_us;
+      ask.next_us = now_us + std::min(ask.wait_us, slowest);
+      ask.wait_us = std::min(ask.wait_us * 2, slowest);
     }
     if (request.sequences.empty()) continue;
     request.count = static_cast<int32_t>(request.sequences.size());

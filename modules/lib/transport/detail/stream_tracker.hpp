@@ -41,6 +41,9 @@ class StreamTracker {
     int64_t first_retry_us = 1'000;       // shortest wait before asking again
     int64_t in_flight_us = 500;           // shortest wait for an awaited message before asking for it
     int64_t slowest_retry_us = 250'000;   // longest wait between asks
+    // Longest wait between asks of a sender that said it is leaving: well
+    // within the quiet time it still answers for (publisher.cpp).
+    int64_t slowest_retry_of_leaving_us = 25'000;
     // When this receiver started listening [us since the epoch]: a stream
     // that began after it is asked for from its first message; one that
     // began before is taken from where it is first heard (a late joiner).
@@ -89,7 +92,11 @@ class StreamTracker {
     uint64_t implausible = 0;  // envelopes whose number jumped too far, dropped
     uint64_t requests = 0;     // repair requests sent
   };
+  // The first kMostLostNamed messages given up, each as "CHANNEL #N of
+  // PROCESS (why)": what a log that is not complete lacks.
+  static constexpr std::size_t kMostLostNamed = 8;
   const Stats& stats() const { return stats_; }
+  const std::vector<std::string>& lostNamed() const { return lost_named_; }
   int64_t roundTripUs() const { return round_trip_us_; }
   std::size_t heldMessages() const;
   std::size_t missingMessages() const;
@@ -118,6 +125,7 @@ class StreamTracker {
     int64_t last_heard_us = 0;
     bool dead = false;
     bool leaving = false;  // said it is ending
+    std::string process;   // as its state names it
   };
   int64_t silenceAllowed(const Sender& sender) const {
     return sender.leaving ? options_.left_after_us : options_.dead_after_us;
@@ -128,8 +136,10 @@ class StreamTracker {
   void start(Stream& stream, uint64_t first_heard, int64_t stream_start_us, int64_t now_us);
   void markMissing(Stream& stream, uint64_t from, uint64_t to, int64_t now_us);
   void filled(Stream& stream, uint64_t sequence, int64_t now_us);
-  void advance(Stream& stream, bool sender_dead, const Handler& deliver);
+  void advance(uint64_t sender, Stream& stream, bool sender_dead, const Handler& deliver);
   void hear(uint64_t sender, int64_t now_us);
+  const char* silentWhy(uint64_t sender) const;
+  void countLost(uint64_t sender, const Stream& stream, uint64_t sequence, const char* why);
 
   Tracks tracks_;
   Options options_;
@@ -137,6 +147,7 @@ class StreamTracker {
   std::map<uint64_t, Sender> senders_;
   int64_t round_trip_us_ = 5'000;
   Stats stats_;
+  std::vector<std::string> lost_named_;
 };
 
 }  // namespace beft::transport::detail
