@@ -14,6 +14,8 @@ struct BlockLocaliser::FrameSpectra {
   std::vector<double> energy_left, energy_right;  // per band
   std::vector<std::complex<float>> cross;         // left times conjugate right, per bin with a phase template
   std::vector<float> level_db;                    // left over right power, per bin with a phase template [dB]
+  std::vector<float> power_left, power_right;     // per bin with a phase template
+  std::vector<float> coherence;                   // interaural coherence per bin with a phase template (1: none)
 
   static FrameSpectra reduced(const std::vector<std::complex<float>>& spectrum_left,
                               const std::vector<std::complex<float>>& spectrum_right, const FrequencyBands& bands,
@@ -83,9 +85,14 @@ BlockLocaliser::FrameSpectra BlockLocaliser::FrameSpectra::reduced(
     }
   frame.cross.resize(static_cast<std::size_t>(phase_bins));
   frame.level_db.resize(static_cast<std::size_t>(phase_bins));
+  frame.power_left.resize(static_cast<std::size_t>(phase_bins));
+  frame.power_right.resize(static_cast<std::size_t>(phase_bins));
+  frame.coherence.assign(static_cast<std::size_t>(phase_bins), 1.0f);
   for (int k = 0; k < phase_bins; ++k) {
     const auto i = static_cast<std::size_t>(k);
     frame.cross[i] = spectrum_left[i] * std::conj(spectrum_right[i]);
+    frame.power_left[i] = std::norm(spectrum_left[i]);
+    frame.power_right[i] = std::norm(spectrum_right[i]);
     frame.level_db[i] = static_cast<float>(
         10 * std::log10((std::norm(spectrum_left[i]) + 1e-30) / (std::norm(spectrum_right[i]) + 1e-30)));
   }
@@ -95,7 +102,8 @@ BlockLocaliser::FrameSpectra BlockLocaliser::FrameSpectra::reduced(
 void BlockLocaliser::addVotes(const std::vector<float>& left, const std::vector<float>& right, int shift, AzimuthVotes& votes,
                               int& voting_frames) const {
   checkEarSignals(left, right);
-  const std::vector<FrameSpectra> frames = loudFrameSpectra(left, right);
+  std::vector<FrameSpectra> frames = loudFrameSpectra(left, right);
+  if (config_.coherence_floor > 0) interauralCoherence(frames);
   voting_frames += static_cast<int>(frames.size());
   if (frames.empty()) return;
 
@@ -147,6 +155,32 @@ double BlockLocaliser::votingThreshold(const std::vector<FrameSpectra>& frames) 
                   config_.silence_rms * config_.silence_rms * window_power_);
 }
 
+// Faller and Merimaa's interaural coherence per frame and bin, the
+// expectations taken over the loud frames before and after and the bins
+// beside it (3 x 3).
+void BlockLocaliser::interauralCoherence(std::vector<FrameSpectra>& frames) {
+  const int count = static_cast<int>(frames.size());
+  for (int t = 0; t < count; ++t) {
+    auto& frame = frames[static_cast<std::size_t>(t)];
+    const int bins = static_cast<int>(frame.cross.size());
+    for (int k = 0; k < bins; ++k) {
+      std::complex<double> cross = 0;
+      double pl = 0, pr = 0;
+      for (int u = std::max(0, t - 1); u <= std::min(count - 1, t + 1); ++u) {
+        const auto& other = frames[static_cast<std::size_t>(u)];
+        for (int j = std::max(0, k - 1); j <= std::min(bins - 1, k + 1); ++j) {
+          const auto i = static_cast<std::size_t>(j);
+          cross += std::complex<double>(other.cross[i]);
+          pl += other.power_left[i];
+          pr += other.power_right[i];
+        }
+      }
+      const double norm = std::sqrt(pl * pr);
+      frame.coherence[static_cast<std::size_t>(k)] = norm > 0 ? static_cast<float>(std::abs(cross) / norm) : 0.0f;
+    }
+  }
+}
+
 // Time cues: each bin on its own, so a tone or a harmonic holds its bin even
 // where another sound holds the rest of the band. Its phase against each
 // azimuth's template phase, as a von Mises likelihood whose concentration
@@ -179,6 +213,12 @@ void BlockLocaliser::addPhaseVotes(const FrameSpectra& f, int b, int shift, Azim
     vote.band = b;
     vote.energy = 2.0 * magnitude;  // |L| |R| per ear
     vote.weight = std::pow(vote.energy, config_.weight_exponent);
+    if (config_.coherence_floor > 0) {
+      const double c = f.coherence[static_cast<std::size_t>(k)];
+      const double selected = std::clamp((c - config_.coherence_floor) / (1 - config_.coherence_floor), 0.0, 1.0);
+      vote.weight *= std::pow(selected, config_.coherence_exponent);
+      if (!(vote.weight > 0)) continue;
+    }
     votes.add(rotated(std::move(vote), shift));
   }
 }

@@ -51,9 +51,12 @@ double nearestPeak(const BlockLocalisation& found, int count, double azimuth_deg
   return best;
 }
 
-// Whether the peak nearest to a talker or its mirror image is nearer the mirror.
+// Whether a talker was heard at its mirror image: a peak nearer the mirror
+// than any is to the talker, and none within 10 degrees of the talker (so
+// that another talker standing near the mirror image is no confusion).
 bool confused(const BlockLocalisation& found, int count, double azimuth_deg) {
-  return nearestPeak(found, count, frontBackMirror(azimuth_deg)) < nearestPeak(found, count, azimuth_deg);
+  const double truth = nearestPeak(found, count, azimuth_deg);
+  return truth > 10 && nearestPeak(found, count, frontBackMirror(azimuth_deg)) < truth;
 }
 
 // Whole-degree azimuths at least 30 degrees apart.

@@ -34,7 +34,7 @@ struct RoomFigures {
   int trials = 0;
   double within_5deg = 0;     // share of talkers with one of the N strongest peaks within 5 deg, after the turn
   double median_error_deg = 0;  // median over talkers of the nearest of those peaks, after the turn
-  double front_back_static = 0;      // share of talkers nearer their mirror image, first block alone
+  double front_back_static = 0;      // share of talkers heard at their mirror image, none within 10 deg, first block alone
   double front_back_after_turn = 0;  // the same after the turn
 };
 
