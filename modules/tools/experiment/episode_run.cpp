@@ -1,9 +1,10 @@
 #include "tools/experiment/episode_run.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
 #include <fstream>
+#include <optional>
+
+#include <nlohmann/json.hpp>
 
 #include "tools/experiment/scenes.hpp"
 
@@ -42,11 +43,14 @@ std::vector<std::string> recordedCommand(const std::vector<std::string>& command
 
 namespace {
 
-bool reportReadable(const std::string& folder) {
+// The report's simulated time [s]; nullopt when report.json does not read.
+std::optional<double> reportedSimulatedS(const std::string& folder) {
   std::ifstream in(fs::path(folder) / "report.json");
-  if (!in) return false;
+  if (!in) return std::nullopt;
   const auto report = nlohmann::json::parse(in, nullptr, false);
-  return !report.is_discarded() && report.is_object();
+  if (report.is_discarded() || !report.is_object()) return std::nullopt;
+  const auto time = report.find("sim_time_s");
+  return time != report.end() && time->is_number() ? time->get<double>() : 0.0;
 }
 
 }  // namespace
@@ -60,9 +64,10 @@ EpisodeState readEpisodeState(const std::string& folder) {
   state.status = json.value("status", "") == "done" ? Status::done : Status::failed;
   state.exit_code = json.value("exit_code", 0);
   state.wall_s = json.value("wall_s", 0.0);
+  state.simulated_s = json.value("simulated_s", 0.0);
   state.reason = json.value("reason", "");
   state.command = json.value("command", std::vector<std::string>{});
-  if (state.status == Status::done && !reportReadable(folder)) return {};
+  if (state.status == Status::done && !reportedSimulatedS(folder)) return {};
   return state;
 }
 
@@ -70,6 +75,7 @@ void writeEpisodeState(const std::string& folder, const EpisodeState& state) {
   const nlohmann::json json = {{"status", state.status == Status::done ? "done" : "failed"},
                                {"exit_code", state.exit_code},
                                {"wall_s", state.wall_s},
+                               {"simulated_s", state.simulated_s},
                                {"reason", state.reason},
                                {"command", state.command}};
   const fs::path file = fs::path(folder) / kEpisodeFile, partial = fs::path(folder) / "episode.json.partial";
@@ -82,7 +88,11 @@ EpisodeState finishedState(const std::string& folder, int exit_code, double wall
   state.status = Status::done;
   state.exit_code = exit_code;
   state.wall_s = wall_s;
-  if (exit_code == 0 && reportReadable(folder)) return state;
+  const auto simulated_s = reportedSimulatedS(folder);
+  if (exit_code == 0 && simulated_s) {
+    state.simulated_s = *simulated_s;
+    return state;
+  }
   state.status = Status::failed;
   state.reason = lastLineOf((fs::path(folder) / kRunOutput).string(), "error");
   if (state.reason.empty()) state.reason = lastLineOf((fs::path(folder) / "processes.log").string(), "error");

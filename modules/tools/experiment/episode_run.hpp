@@ -19,6 +19,7 @@ struct EpisodeState {
   Status status = Status::missing;
   int exit_code = 0;
   double wall_s = 0;
+  double simulated_s = 0;  // of a done episode: its report's sim_time_s
   std::string reason;  // why it failed
   std::vector<std::string> command;  // the run's options as recordedCommand() wrote them
 };

@@ -92,16 +92,22 @@ void writeResults(const Experiment& x, const std::vector<EpisodeResult>& results
   say("wrote " + out_dir + "/episodes.csv, summary.csv, summary.json, success.png, time_to_find.png");
 }
 
-// Episodes per hour, and how much the pool overlapped them (the sum of their
-// times over the pool's; not a speed-up: episodes side by side slow each other).
-void sayPace(const PoolOutcome& pool) {
+// Episodes per hour, and the pool's speed-up over one job: simulated
+// seconds per wall second of the episodes run side by side, over those of
+// the first episode run alone in this same invocation (local_pool.hpp).
+void sayPace(const PoolOutcome& pool, int jobs) {
   if (pool.done == 0 || pool.wall_s <= 0) return;
-  char line[256];
+  char line[512];
+  const std::string where = jobs > 0 ? "with " + std::to_string(jobs) + " job(s)" : "on Slurm";
+  std::snprintf(line, sizeof(line), "%d episode(s) done in %.1f s: %.0f episodes per hour %s", pool.done, pool.wall_s,
+                pool.done * 3600 / pool.wall_s, where.c_str());
+  say(line);
+  if (!pool.hasSpeedUp()) return;
   std::snprintf(line, sizeof(line),
-                "%d episode(s) done in %.1f s: %.0f episodes per hour; their own times add up to %.1f s, %.2fx the "
-                "pool's",
-                pool.done, pool.wall_s, pool.done * 3600 / pool.wall_s, pool.episode_wall_s,
-                pool.episode_wall_s / pool.wall_s);
+                "speed-up of %d jobs over one: %.2fx (one job, %s alone: %.1f simulated s per wall s; %d jobs, the "
+                "other %d episode(s): %.1f)",
+                jobs, pool.pooled.rate() / pool.alone.rate(), pool.alone_id.c_str(), pool.alone.rate(), jobs,
+                pool.pooled.episodes, pool.pooled.rate());
   say(line);
 }
 
@@ -173,7 +179,7 @@ int runExperiment(const RunnerOptions& options) {
   if (const auto code = runJobs(x, episodes, options, pool)) return *code;
   const auto results = collect(x, episodes, options.out_dir);
   writeResults(x, results, options.out_dir);
-  sayPace(pool);
+  sayPace(pool, options.slurm ? 0 : options.jobs);
   if (pool.interrupted) say("interrupted: start it again to run what is missing");
   return exitCode(pool, results);
 }

@@ -36,8 +36,10 @@ pid_t start(const PoolJob& job) {
   return startProgram(job.command, (fs::path(job.folder) / kRunOutput).string());
 }
 
-// Records an ended episode (unless the pool is stopping: then it is left missing).
-void finish(const Running& run, int status, PoolOutcome& outcome, const std::function<void(const std::string&)>& say) {
+// Records an ended episode (unless the pool is stopping: then it is left
+// missing); its simulated time, when done, goes to `pace`.
+void finish(const Running& run, int status, PoolOutcome& outcome, Pace& pace,
+            const std::function<void(const std::string&)>& say) {
   const double wall_s = secondsSince(run.start);
   if (stopRequested()) return;
   EpisodeState state = finishedState(run.job->folder, exitCodeOf(status), wall_s);
@@ -48,6 +50,8 @@ void finish(const Running& run, int status, PoolOutcome& outcome, const std::fun
   std::snprintf(seconds, sizeof(seconds), "%.1f s", wall_s);
   if (state.status == Status::done) {
     ++outcome.done;
+    ++pace.episodes;
+    pace.simulated_s += state.simulated_s;
     say("done " + run.job->id + " (" + seconds + ")");
   } else {
     ++outcome.failed;
@@ -74,11 +78,16 @@ PoolOutcome runLocalPool(const std::vector<PoolJob>& jobs, int max_jobs,
   std::map<pid_t, Running> running;
   size_t next = 0;
   bool stopping = false;
+  // The first episode alone, for one job's pace, when a pool follows it.
+  bool alone_pending = max_jobs > 1 && jobs.size() > static_cast<size_t>(max_jobs);
+  auto stretch_start = pool_start;
   while (next < jobs.size() || !running.empty()) {
-    while (!stopRequested() && next < jobs.size() && static_cast<int>(running.size()) < max_jobs) {
+    const size_t room = static_cast<size_t>(alone_pending ? 1 : max_jobs);
+    while (!stopRequested() && next < jobs.size() && running.size() < room) {
       const pid_t pid = start(jobs[next]);
       if (pid > 0) running[pid] = {&jobs[next], Clock::now()};
       if (pid < 0) say("cannot start beft-run for " + jobs[next].id);
+      if (pid < 0 && next == 0) alone_pending = false;
       ++next;
     }
     if (stopRequested() && !stopping) {
@@ -93,11 +102,19 @@ PoolOutcome runLocalPool(const std::vector<PoolJob>& jobs, int max_jobs,
     if (pid < 0) continue;  // EINTR: a stop signal, seen above
     const auto it = running.find(pid);
     if (it == running.end()) continue;
-    finish(it->second, status, outcome, say);
+    const bool was_alone = alone_pending && it->second.job == &jobs[0];
+    finish(it->second, status, outcome, was_alone ? outcome.alone : outcome.pooled, say);
     running.erase(it);
+    if (was_alone) {
+      alone_pending = false;
+      outcome.alone_id = jobs[0].id;
+      outcome.alone.wall_s = secondsSince(stretch_start);
+      stretch_start = Clock::now();
+    }
   }
   outcome.interrupted = stopRequested();
   outcome.wall_s = secondsSince(pool_start);
+  if (!outcome.alone_id.empty()) outcome.pooled.wall_s = secondsSince(stretch_start);
   return outcome;
 }
 
