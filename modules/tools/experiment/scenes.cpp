@@ -19,20 +19,18 @@ std::string lastLineOf(const std::string& file, const std::string& containing) {
 
 namespace {
 
-// Generated beside its final name (the sounds' relative path holds) and renamed
-// when whole, so that an interrupted generation is never taken for a scene.
+// beft-generate writes the file whole or not at all (beside it first, then
+// renamed), so an interrupted generation is never taken for a scene.
 void generate(const Scene& scene, const std::string& bin_dir) {
   const Generation& g = *scene.generation;
-  const std::string partial = fs::path(scene.file).replace_extension(".partial.xml").string();
   const std::string output = fs::path(scene.file).replace_extension(".generate.txt").string();
   const int code = runProgram({bin_dir + "/beft-generate", g.kind, "--size", std::to_string(g.width),
                                std::to_string(g.height), "--objects", std::to_string(g.objects), "--seed",
-                               std::to_string(g.seed), "--out", partial},
+                               std::to_string(g.seed), "--out", scene.file},
                               output);
   if (code != 0)
     throw ExperimentError("cannot generate scene " + scene.name + ": " + lastLineOf(output) + " (exit code " +
                           std::to_string(code) + ")");
-  fs::rename(partial, scene.file);
 }
 
 }  // namespace

@@ -55,6 +55,12 @@ void writeObject(tinyxml2::XMLPrinter& out, const PlacedObject& object) {
   out.CloseElement();
 }
 
+// An XML comment may not hold "--" (XML 1.0, section 2.5).
+std::string withoutDoubleDashes(std::string text) {
+  for (auto at = text.find("--"); at != std::string::npos; at = text.find("--", at)) text.replace(at, 2, "-");
+  return text;
+}
+
 }  // namespace
 
 std::string districtXml(const District& district, const std::string& name, const std::string& how_made) {
@@ -69,7 +75,7 @@ std::string districtXml(const District& district, const std::string& name, const
       " radios that sound like a voice, rubble, cars, sirens and fires.\n"
       "  Streets 6 m wide run between the blocks; every person can be reached by\n"
       "  the robot's footprint (checked when the file was written).\n"
-      "  Made by: " + how_made + "\n";
+      "  Made by: " + withoutDoubleDashes(how_made) + "\n";
   out.PushComment(comment.c_str());
   out.OpenElement("scenario");
   out.PushAttribute("name", name.c_str());

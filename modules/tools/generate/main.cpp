@@ -39,10 +39,12 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   return std::nullopt;
 }
 
+// How the file was made, for its heading comment: the options by name
+// without their dashes, as an XML comment may not hold "--".
 std::string howMade(const Options& o) {
-  return "./beft generate district --size " + std::to_string(static_cast<int>(o.size[0])) + " " +
-         std::to_string(static_cast<int>(o.size[1])) + " --objects " + std::to_string(o.objects) + " --seed " +
-         std::to_string(o.seed) + " --out " + std::filesystem::path(o.out).filename().string();
+  return "./beft generate district, size " + std::to_string(static_cast<int>(o.size[0])) + " " +
+         std::to_string(static_cast<int>(o.size[1])) + ", objects " + std::to_string(o.objects) + ", seed " +
+         std::to_string(o.seed);
 }
 
 }  // namespace

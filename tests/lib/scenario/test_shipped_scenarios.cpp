@@ -226,6 +226,26 @@ TEST(ShippedScenarios, AllLoadWithoutWarningsAndDescribeThemselves) {
   }
 }
 
+// An XML comment may not hold "--" (XML 1.0, section 2.5): tinyxml2 reads
+// such a file, but Python's, libxml2's and most other parsers refuse it.
+TEST(ShippedScenarios, EveryXmlFileHasWellFormedComments) {
+  int files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(kScenarios)) {
+    const std::string extension = entry.path().extension().string();
+    if (extension != ".xml" && extension != ".pnml") continue;
+    ++files;
+    std::ifstream in(entry.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (auto open = text.find("<!--"); open != std::string::npos; open = text.find("<!--", open + 4)) {
+      const auto close = text.find("-->", open + 4);
+      ASSERT_NE(close, std::string::npos) << entry.path().filename() << ": a comment is not closed";
+      EXPECT_EQ(text.substr(open + 4, close - open - 4).find("--"), std::string::npos)
+          << entry.path().filename() << ": \"--\" inside a comment, at byte " << open;
+    }
+  }
+  EXPECT_GE(files, 8);
+}
+
 TEST(ShippedSounds, AreShortMono16kHz16BitWavFiles) {
   int count = 0;
   for (const auto& entry : fs::directory_iterator(kScenarios / "sounds")) {

@@ -93,9 +93,9 @@ TEST_F(GenerateTest, TheShippedDistrictsAreWhatTheirCommandWrites) {
     ASSERT_FALSE(header.empty()) << shipped_path;
     DistrictParameters p = parameters(shipped.w, shipped.h, shipped.objects, 1);
     p.sounds_dir = "sounds";
-    const std::string how = std::string("./beft generate district --size ") + std::to_string(int(shipped.w)) + " " +
-                            std::to_string(int(shipped.h)) + " --objects " + std::to_string(shipped.objects) +
-                            " --seed 1 --out " + shipped.name + ".xml";
+    const std::string how = std::string("./beft generate district, size ") + std::to_string(int(shipped.w)) + " " +
+                            std::to_string(int(shipped.h)) + ", objects " + std::to_string(shipped.objects) +
+                            ", seed 1";
     const District district = layDistrict(p);
     // Written into the scenarios folder's neighbour would need the sounds; compare the XML text instead.
     const std::string regenerated_path = path(std::string(shipped.name) + ".xml");
