@@ -293,6 +293,12 @@ void Explorer::revalidate(const Observation& o, Decision& d) {
   endJob(o, d, job.kind == JobKind::Explore, why, true);
 }
 
+ViewpointParameters Explorer::viewpointsFor(const HypothesisView& h) const {
+  ViewpointParameters viewpoints = parameters_.viewpoints;
+  if (h.best_category == "car") viewpoints.own_extent_m = std::max(viewpoints.own_extent_m, parameters_.car_extent_m);
+  return viewpoints;
+}
+
 bool Explorer::jobStillValid(const Observation& o, std::string& why) {
   const Job& job = *job_;
   const KnownMap* map = knownMap(o);
@@ -316,7 +322,9 @@ bool Explorer::jobStillValid(const Observation& o, std::string& why) {
     why = "the viewpoint " + at(job.x, job.y) + " is blocked on the map";
     return false;
   }
-  if (!inLineOfSight(*map, job.x, job.y, h->x, h->y, parameters_.viewpoints)) {
+  const ViewpointParameters viewpoints = viewpointsFor(*h);
+  const TargetCells own = targetCells(*map, h->x, h->y, viewpoints);
+  if (!inLineOfSight(*map, job.x, job.y, h->x, h->y, viewpoints, nullptr, &own)) {
     why = "an obstacle now blocks the view of " + job.object_id + " from " + at(job.x, job.y);
     return false;
   }
@@ -479,7 +487,7 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
     const HypothesisView& h = *c.hypothesis;
     TargetMemory& memory = targets_[h.object_id];
     c.viewpoint =
-        chooseViewpoint(*map, travel, h.x, h.y, memory.tried, parameters_.viewpoints, limit + c.gain, &c.sights);
+        chooseViewpoint(*map, travel, h.x, h.y, memory.tried, viewpointsFor(h), limit + c.gain, &c.sights);
     if (!c.viewpoint) {
       if (std::isinf(limit)) {
         if (!memory.no_viewpoint) d.log.push_back(h.object_id + ": no reachable viewpoint on the known map");

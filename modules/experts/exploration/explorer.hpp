@@ -113,6 +113,9 @@ struct ExplorerParameters {
   double frontier_check_radius_m = 1.0;  // an explore goal ends when no frontier is this near it
   bool stop_when_done = true;          // request the stop when nothing is left (else at the duration)
   double idle_recheck_s = 2.0;         // when done and watching, look for work again this often
+  // Half a car's diagonal and a margin [m]: its occupied cells this close are
+  // its own body, not obstacles in front of it (target_cells.hpp).
+  double car_extent_m = 2.8;
   ViewpointParameters viewpoints;
   FrontierParameters frontiers;
 };
@@ -163,6 +166,8 @@ class Explorer {
   // A hypothesis to verify or inspect that has not been tried in vain yet.
   bool hasFreshTarget(const Observation& o) const;
   const HypothesisView* findHypothesis(const Observation& o, const std::string& id) const;
+  // The viewpoint parameters for one target: a car's body reaches car_extent_m.
+  ViewpointParameters viewpointsFor(const HypothesisView& h) const;
 
   void followJob(const Observation& o, Decision& d);
   void awaitCompositeId(const Observation& o, Decision& d);

@@ -1,5 +1,7 @@
 #include "experts/exploration/known_map.hpp"
 
+#include "experts/exploration/target_cells.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -98,7 +100,8 @@ bool KnownMap::cellOf(double wx, double wy, Cell& cell) const {
   return inside(cell.x, cell.y);
 }
 
-SightLine KnownMap::sight(double ax, double ay, double bx, double by, double ignore_near_b) const {
+SightLine KnownMap::sight(double ax, double ay, double bx, double by, double ignore_near_b,
+                          const TargetCells* own) const {
   // Every cell the segment crosses, in order (Amanatides & Woo's grid walk).
   SightLine line;
   const double length = std::hypot(bx - ax, by - ay);
@@ -116,7 +119,10 @@ SightLine KnownMap::sight(double ax, double ay, double bx, double by, double ign
     if ((1.0 - t_enter) * length < ignore_near_b) break;  // the target's own footprint from here on
     if (!inside(x, y)) return line;                       // leaves the map: no sight
     const uint8_t value = cells_.at(x, y);
-    if (value == obstacle_map_t::CELL_OCCUPIED) return line;
+    if (value == obstacle_map_t::CELL_OCCUPIED) {
+      if (own != nullptr && own->contains(x, y)) break;  // the target's near side
+      return line;
+    }
     const double t_exit = std::min({t_max_x, t_max_y, 1.0});
     if (value == obstacle_map_t::CELL_UNKNOWN) line.unknown_m += (t_exit - t_enter) * length;
     if (t_max_x < t_max_y) {

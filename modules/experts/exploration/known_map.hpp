@@ -15,6 +15,8 @@
 
 namespace beft::exploration {
 
+class TargetCells;
+
 struct Cell {
   int x = 0, y = 0;  // column along +x, row along +y
 };
@@ -52,8 +54,10 @@ class KnownMap {
   const planners::GridMap& standing() const;
 
   // Straight line from (ax, ay) to (bx, by); occupied cells closer than
-  // ignore_near_b to b (the target's own footprint) do not block it.
-  SightLine sight(double ax, double ay, double bx, double by, double ignore_near_b) const;
+  // ignore_near_b to b (the target's own footprint) do not block it, and
+  // reaching one of `own` (the target's body, target_cells.hpp) is reaching b.
+  SightLine sight(double ax, double ay, double bx, double by, double ignore_near_b,
+                  const TargetCells* own = nullptr) const;
 
  private:
   planners::GridMap inflatedAgain(const planners::GridMap& occupied) const;

@@ -9,8 +9,16 @@ double bearingDeg(double x0, double y0, double x1, double y1) {
   return std::atan2(y1 - y0, x1 - x0) * 180.0 / M_PI;
 }
 
+TargetCells targetCells(const KnownMap& map, double target_x, double target_y, const ViewpointParameters& parameters) {
+  if (parameters.own_extent_m <= parameters.target_clearance_m) return {};
+  // Seeded from half its extent: a car seen from one side only has its near
+  // side, not its centre, on the map.
+  const double seed = std::max(parameters.target_clearance_m, 0.5 * parameters.own_extent_m);
+  return TargetCells(map, target_x, target_y, seed, parameters.own_extent_m);
+}
+
 bool inLineOfSight(const KnownMap& map, double x, double y, double target_x, double target_y,
-                   const ViewpointParameters& parameters, double* unknown_m) {
+                   const ViewpointParameters& parameters, double* unknown_m, const TargetCells* own) {
   const double dx = target_x - x, dy = target_y - y;
   const double length = std::hypot(dx, dy);
   if (length < 1e-9) return true;
@@ -20,7 +28,7 @@ bool inLineOfSight(const KnownMap& map, double x, double y, double target_x, dou
   for (double side : {0.0, 1.0, -1.0}) {
     const double tx = target_x + side * parameters.target_radius_m * nx;
     const double ty = target_y + side * parameters.target_radius_m * ny;
-    const SightLine line = map.sight(x, y, tx, ty, parameters.target_clearance_m);
+    const SightLine line = map.sight(x, y, tx, ty, parameters.target_clearance_m, own);
     if (!line.clear) return false;
     if (side == 0.0) unknown = line.unknown_m;
   }
@@ -69,6 +77,7 @@ std::optional<Viewpoint> chooseViewpoint(const KnownMap& map, const TravelField&
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& a, const Candidate& b) { return a.base_cost < b.base_cost; });
   std::optional<Viewpoint> best;
+  std::optional<TargetCells> own;  // found at the first line of sight asked
   for (const auto& c : candidates) {
     if ((best && c.base_cost >= best->cost) || c.base_cost > max_cost) break;
     double unknown_m = 0;
@@ -76,7 +85,8 @@ std::optional<Viewpoint> chooseViewpoint(const KnownMap& map, const TravelField&
       if (sights->clear[c.slot] == 0) continue;
       unknown_m = sights->unknown_m[c.slot];
     } else {
-      const bool clear = inLineOfSight(map, c.x, c.y, target_x, target_y, parameters, &unknown_m);
+      if (!own) own = targetCells(map, target_x, target_y, parameters);
+      const bool clear = inLineOfSight(map, c.x, c.y, target_x, target_y, parameters, &unknown_m, &*own);
       if (sights != nullptr) {
         sights->clear[c.slot] = clear ? 1 : 0;
         sights->unknown_m[c.slot] = unknown_m;

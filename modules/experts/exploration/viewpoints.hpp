@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "experts/exploration/known_map.hpp"
+#include "experts/exploration/target_cells.hpp"
 
 namespace beft::exploration {
 
@@ -22,6 +23,10 @@ struct ViewpointParameters {
   double target_radius_m = 0.3;    // half width of the target: the sight lines to its
                                    // two sides must be clear too
   double target_clearance_m = 0.5; // occupied cells this close to the target are its own
+  // How far from its position a target's body may reach [m]: beyond
+  // target_clearance_m, the occupied cells connected to it this close are its
+  // own too (target_cells.hpp). The explorer sets a car's.
+  double own_extent_m = 0.5;
   double unknown_cost = 2.0;       // [m of travel per m of sight line through unknown cells]
   double tried_radius_m = 1.0;     // a viewpoint this close to a tried one is not tried again
 };
@@ -40,7 +45,12 @@ struct Point {
 // True when the target would be in line of sight from (x, y): the centre line
 // and the lines to both sides of the target cross no occupied cell.
 bool inLineOfSight(const KnownMap& map, double x, double y, double target_x, double target_y,
-                   const ViewpointParameters& parameters, double* unknown_m = nullptr);
+                   const ViewpointParameters& parameters, double* unknown_m = nullptr,
+                   const TargetCells* own = nullptr);
+
+// The target's own cells as `parameters` say how far they reach; none when
+// own_extent_m is within target_clearance_m.
+TargetCells targetCells(const KnownMap& map, double target_x, double target_y, const ViewpointParameters& parameters);
 
 // What the lines of sight from one target's candidate viewpoints showed, for
 // asking about the same target on the same map again (a search with a

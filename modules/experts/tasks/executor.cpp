@@ -242,35 +242,44 @@ void Executor::requestPlan(const Task& task, Run& run, int64_t utime, TickOutput
                     fmt(task.x) + ", " + fmt(task.y) + ")");
 }
 
+// Blocked: a newly mapped obstacle closer to the path than the robot's
+// radius and a margin (a stale path that grazes a wall by less than its
+// tracking error touches it). Within near_robot_m of where the robot stands,
+// where it may stand close to an obstacle it is leaving, only what is nearer
+// than 0.9 radius counts.
 bool Executor::pathBlocked(const Run& run) const {
   if (!map_ || run.path.empty() || map_->width <= 0 || map_->height <= 0) return false;
   const auto& r = *robot_;
   const auto& map = *map_;
-  const double clearance = std::max(0.9 * r.radius, map.resolution);
+  const double clearance = std::max(r.radius + parameters_.path_clearance_margin_m, map.resolution);
+  const double near_clearance = std::max(0.9 * r.radius, map.resolution);
+  constexpr double near_robot_m = 0.5;
   const int reach = static_cast<int>(std::ceil(clearance / map.resolution));
   const double step = map.resolution / 2;
   const auto& goal = run.path.back();
-  // The cells within the clearance, once for every sample.
-  std::vector<std::pair<int, int>> disc;
+  // The cells within the clearance, once for every sample, with their distance.
+  struct Offset {
+    int dx, dy;
+    double distance;
+  };
+  std::vector<Offset> disc;
   for (int dy = -reach; dy <= reach; ++dy)
-    for (int dx = -reach; dx <= reach; ++dx)
-      if (!((dx * dx + dy * dy) * map.resolution * map.resolution > clearance * clearance)) disc.emplace_back(dx, dy);
-  const auto occupiedNear = [&](double px, double py) {
-    const int cx = static_cast<int>(std::floor((px - map.origin_x) / map.resolution));
-    const int cy = static_cast<int>(std::floor((py - map.origin_y) / map.resolution));
-    bool occupied = false;
-    for (const auto& [dx, dy] : disc) {
-      const int x = cx + dx, y = cy + dy;
-      if (x < 0 || y < 0 || x >= map.width || y >= map.height) continue;
-      if (map.at(x, y) == beft::obstacle_map_t::CELL_OCCUPIED) {
-        occupied = true;
-        break;
-      }
+    for (int dx = -reach; dx <= reach; ++dx) {
+      const double distance = std::hypot(dx, dy) * map.resolution;
+      if (distance <= clearance) disc.push_back({dx, dy, distance});
     }
-    if (!occupied) return false;
+  const auto occupiedNear = [&](double px, double py) {
     if (std::hypot(px - r.x, py - r.y) < 0.15) return false;  // where it stands now
     if (std::hypot(px - goal.x, py - goal.y) < r.radius) return false;  // the goal's own surroundings
-    return true;
+    const double allowed = std::hypot(px - r.x, py - r.y) < near_robot_m ? near_clearance : clearance;
+    const int cx = static_cast<int>(std::floor((px - map.origin_x) / map.resolution));
+    const int cy = static_cast<int>(std::floor((py - map.origin_y) / map.resolution));
+    for (const auto& offset : disc) {
+      const int x = cx + offset.dx, y = cy + offset.dy;
+      if (offset.distance > allowed || x < 0 || y < 0 || x >= map.width || y >= map.height) continue;
+      if (map.at(x, y) == beft::obstacle_map_t::CELL_OCCUPIED) return true;
+    }
+    return false;
   };
   double ax = r.x, ay = r.y;
   for (std::size_t i = run.next_waypoint; i < run.path.size(); ++i) {

@@ -39,6 +39,7 @@ struct ExecutorParameters {
   int max_failed_plans = 3;           // goto fails after this many failed plans in a row
   int max_replans = 10;               // goto fails after this many collisions or stalls
   double backoff_m = 0.3;             // after a collision, back away this far before replanning
+  double path_clearance_margin_m = 0.1;   // a path nearer a mapped obstacle than the radius and this is blocked [m]
   double stall_s = 5;                 // no progress for this long: replan (goto) or fail
   double look_timeout_s = 20;         // look_at fails after this long
   double owned_idle_s = 10;           // an owned task with no sub-task for this long fails

@@ -42,6 +42,8 @@ void TasksExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("max_failed_plans", e.max_failed_plans, 1, 1000000, "goto fails after this many failed plans in a row");
   parameters.declare("max_replans", e.max_replans, 0, 1000000, "goto fails after this many collisions or stalls");
   parameters.declare("backoff_m", e.backoff_m, 0, 5, "after a collision, goto backs away this far before replanning [m]");
+  parameters.declare("path_clearance_margin_m", e.path_clearance_margin_m, 0, 1,
+                     "a path nearer a newly mapped obstacle than the robot radius and this is replanned [m]");
   positive("stall_s", e.stall_s, "no progress for this long: goto replans, turns fail [s]");
   positive("look_timeout_s", e.look_timeout_s, "look_at fails after this long [s]");
   positive("owned_idle_s", e.owned_idle_s, "an owned task on top with no sub-task for this long fails [s]");

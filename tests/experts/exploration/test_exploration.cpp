@@ -176,6 +176,37 @@ TEST(Viewpoints, NoneWhenTheTargetIsWalledIn) {
   EXPECT_FALSE(chooseViewpoint(map, travel, 12, 10, {}, ViewpointParameters{}).has_value());
 }
 
+// A car seen whole fills its footprint on the map: a line of sight that
+// reaches its near side reaches the car. A wall beside it, across free
+// space, still blocks.
+TEST(Viewpoints, ACarsOwnBodyDoesNotHideItButAWallBesideItDoes) {
+  auto cells = makeCells(20, 20, kFree);
+  fillRect(cells, 9.1, 7.75, 10.9, 12.25, kOccupied);   // a 1.8 x 4.5 m car centred on (10, 10)
+  fillRect(cells, 12.0, 6.0, 12.2, 14.0, kOccupied);    // a wall 1.1 m east of its side
+  const KnownMap map(cells, 0.45);
+  const TravelField travel(map, 3.0, 10.0, 0.6);
+  ViewpointParameters person;  // a target no wider than target_clearance_m
+  EXPECT_FALSE(chooseViewpoint(map, travel, 10, 10, {}, person).has_value())
+      << "the car's own cells hide the car's centre from everywhere";
+  ViewpointParameters car;
+  car.own_extent_m = 2.8;
+  const TargetCells own = targetCells(map, 10, 10, car);
+  EXPECT_TRUE(own.size() > 700 && own.size() < 900) << own.size() << " cells: the car's 18 x 45, not the wall's";
+  const auto viewpoint = chooseViewpoint(map, travel, 10, 10, {}, car);
+  ASSERT_TRUE(viewpoint.has_value());
+  EXPECT_LT(viewpoint->x, 9.1) << "seen from the open west side";
+  EXPECT_TRUE(inLineOfSight(map, 6.0, 10.0, 10, 10, car, nullptr, &own));
+  EXPECT_FALSE(inLineOfSight(map, 14.0, 10.0, 10, 10, car, nullptr, &own)) << "through the wall";
+  // A car seen from one side only: its near side is its own too.
+  auto side_only = makeCells(20, 20, kFree);
+  fillRect(side_only, 9.1, 7.75, 9.2, 12.25, kOccupied);
+  fillRect(side_only, 9.25, 7.75, 10.9, 12.25, kUnknown);
+  const KnownMap seen_from_west(side_only, 0.45);
+  const TargetCells near_side = targetCells(seen_from_west, 10, 10, car);
+  EXPECT_GT(near_side.size(), 40u);
+  EXPECT_TRUE(inLineOfSight(seen_from_west, 6.0, 10.0, 10, 10, car, nullptr, &near_side));
+}
+
 TEST(TravelField, GoesAroundWallsAndTreatsUnknownAsFree) {
   auto cells = makeCells(20, 20, kUnknown);
   fillRect(cells, 9.9, 0.0, 10.1, 15.0, kOccupied);  // a wall with a gap at the top

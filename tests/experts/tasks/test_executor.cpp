@@ -326,6 +326,34 @@ TEST(Executor, GotoReplansWhenANewlyMappedObstacleBlocksThePath) {
   EXPECT_EQ(h.robot.state.collisions, 0);
 }
 
+// A path planned before a wall was seen that passes it closer than the
+// robot's radius (with a margin) is replanned, not followed into contact; one
+// that keeps clear of it is followed.
+TEST(Executor, GotoReplansAPathThatGrazesANewlyMappedWall) {
+  for (const int rows_away : {4, 5}) {  // the wall's cells from the path's, 0.1 m each: 0.4 m, 0.5 m
+    SCOPED_TRACE(rows_away);
+    Harness h;
+    h.robot.state.radius = 0.35;  // the margin 0.1 m: 0.45 m kept clear
+    h.planner = [&](const beft::plan_request_t& r) { return answer(r, {{r.start_x, r.start_y, 0}, {8, 0, 0}}); };
+    h.stack.push(gotoTask(8, 0, 0));
+    h.run(5);
+    ASSERT_EQ(h.requests.size(), 1u);
+    // A wall along the path, rows_away cells beside it, from x = 4 to 6.
+    planners::ObstacleCells map;
+    map.width = 100;
+    map.height = 40;
+    map.resolution = 0.1;
+    map.origin_x = 0;
+    map.origin_y = -2;
+    map.cells.assign(static_cast<size_t>(map.width * map.height), beft::obstacle_map_t::CELL_FREE);
+    const int row = 20 + rows_away;  // row 20 holds y = 0, the path
+    for (int x = 40; x < 60; ++x) map.cells[static_cast<size_t>(row * map.width + x)] = beft::obstacle_map_t::CELL_OCCUPIED;
+    h.executor.setObstacleMap(map);
+    h.step();
+    EXPECT_EQ(h.requests.size(), rows_away == 4 ? 2u : 1u);
+  }
+}
+
 TEST(Executor, GotoFailsCleanlyWithoutAPlanner) {
   Harness h;  // no planner: requests go unanswered
   const int64_t id = h.stack.push(gotoTask(5, 5, 0));
