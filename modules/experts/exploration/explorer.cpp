@@ -340,8 +340,10 @@ void Explorer::recordFailedAttempt(const std::string& object_id, const Point& vi
   const int limit = job != nullptr && job->kind == JobKind::Inspect ? parameters_.inspect_attempts
                                                                     : parameters_.verify_attempts;
   d.log.push_back(object_id + ": attempt " + std::to_string(memory.attempts) + " failed (" + why + ")");
+  memory.why = "attempt " + std::to_string(memory.attempts) + " failed (" + why + ")";
   if (memory.attempts >= limit) {
     memory.given_up = true;
+    memory.why = "given up after " + std::to_string(memory.attempts) + " viewpoints, the last: " + why;
     d.log.push_back(object_id + ": given up after " + std::to_string(memory.attempts) + " viewpoints");
   }
 }
@@ -352,8 +354,10 @@ void Explorer::recordRuledOut(const std::string& object_id, const Point& viewpoi
   ++memory.ruled_out;
   memory.tried.push_back(viewpoint);
   d.log.push_back(object_id + ": viewpoint " + at(viewpoint.x, viewpoint.y) + " ruled out (" + why + ")");
+  memory.why = "viewpoint " + at(viewpoint.x, viewpoint.y) + " ruled out (" + why + ")";
   if (memory.ruled_out >= parameters_.ruled_out_viewpoints) {
     memory.given_up = true;
+    memory.why = "given up after " + std::to_string(memory.ruled_out) + " viewpoints ruled out, the last: " + why;
     d.log.push_back(object_id + ": given up after " + std::to_string(memory.ruled_out) + " viewpoints ruled out");
   }
 }
@@ -427,11 +431,15 @@ void Explorer::decide(const Observation& o, Decision& d) {
     return;
   }
   int waiting = 0, no_viewpoint = 0, verified = 0, falsified = 0, given_up = 0;
+  std::string unsettled;  // "; ID: why" for the first few left unsettled
+  constexpr int kMostNamed = 10;
   for (const auto& h : o.hypotheses) {
     verified += h.verified ? 1 : 0;
     falsified += h.falsified ? 1 : 0;
     if (!wantsVerify(h) && !wantsInspect(h)) continue;
     const auto it = targets_.find(h.object_id);
+    const bool left = it != targets_.end() && (it->second.given_up || it->second.no_viewpoint);
+    if (left && given_up + no_viewpoint < kMostNamed) unsettled += "; " + h.object_id + ": " + it->second.why;
     if (it != targets_.end() && it->second.given_up) ++given_up;
     else if (it != targets_.end() && it->second.no_viewpoint) ++no_viewpoint;
     else ++waiting;
@@ -441,7 +449,7 @@ void Explorer::decide(const Observation& o, Decision& d) {
                        std::to_string(verified) + " verified, " + std::to_string(falsified) + " falsified";
   if (given_up > 0) reason += ", " + std::to_string(given_up) + " given up";
   if (no_viewpoint > 0) reason += ", " + std::to_string(no_viewpoint) + " without a reachable viewpoint";
-  reason += "), no reachable frontier left";
+  reason += "), no reachable frontier left" + unsettled;
   if (parameters_.stop_when_done) {
     stop(reason, d);
     return;
@@ -491,6 +499,7 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
     if (!c.viewpoint) {
       if (std::isinf(limit)) {
         if (!memory.no_viewpoint) d.log.push_back(h.object_id + ": no reachable viewpoint on the known map");
+        memory.why = "no reachable viewpoint on the known map";
         memory.no_viewpoint = true;
         memory.retry_t = o.t + parameters_.retry_after_s;
       }

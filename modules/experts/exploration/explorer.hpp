@@ -158,6 +158,7 @@ class Explorer {
     bool given_up = false;
     bool no_viewpoint = false;       // the last search found no viewpoint
     double retry_t = -1;             // not reconsidered before this sim time
+    std::string why;                 // why it is not settled yet, as the log said last
   };
 
   void updateTrail(const Observation& o);

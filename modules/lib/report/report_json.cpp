@@ -94,6 +94,8 @@ nlohmann::json toJson(const RunReport& report) {
                                     {"reason", a.reason}});
   json["hypotheses"] = report.hypotheses;
   json["unsettled"] = report.unsettled;
+  json["unsettled_why"] = nlohmann::json::object();
+  for (const auto& [object, why] : report.unsettled_why) json["unsettled_why"][object] = why;
   json["end_reason"] = report.end_reason;
   json["rejected_messages"] = nlohmann::json::object();
   int64_t rejected_total = 0;
@@ -146,6 +148,7 @@ void printSummary(const RunReport& report, std::ostream& out) {
     out << "  false alarm: " << a.hypothesis << " at (" << a.x << ", " << a.y << "): " << a.reason << "\n";
   out << "  missed:      " << joined(report.missed) << "\n";
   if (!report.unsettled.empty()) out << "  unsettled:   " << joined(report.unsettled) << "\n";
+  for (const auto& [object, why] : report.unsettled_why) out << "    " << object << ": " << why << "\n";
   if (!report.end_reason.empty()) out << "  ended:       " << report.end_reason << "\n";
   if (const int64_t refused = unauthenticatedTotal(report); refused > 0)
     out << "  refused:     " << refused << " message(s) without a valid tag of the run's key ("

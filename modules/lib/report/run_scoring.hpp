@@ -97,6 +97,7 @@ struct RunReport {
   std::optional<double> path_efficiency_mean;
   std::vector<FalseAlarm> false_alarms;
   std::vector<std::string> unsettled;   // heard, neither verified nor falsified
+  std::map<std::string, std::string> unsettled_why;  // per unsettled hypothesis, when known: why
   int hypotheses = 0;
   std::string end_reason;
   std::map<std::string, int64_t> rejected_messages;  // per channel: malformed or of another type

@@ -74,7 +74,8 @@ std::string districtXml(const District& district, const std::string& name, const
       std::to_string(district.calling_persons) + " calling for help), " + std::to_string(district.radios) +
       " radios that sound like a voice, rubble, cars, sirens and fires.\n"
       "  Streets 6 m wide run between the blocks; every person can be reached by\n"
-      "  the robot's footprint (checked when the file was written).\n"
+      "  the robot's footprint, and every object but the walls seen from a place\n"
+      "  it reaches (checked when the file was written).\n"
       "  Made by: " + withoutDoubleDashes(how_made) + "\n";
   out.PushComment(comment.c_str());
   out.OpenElement("scenario");

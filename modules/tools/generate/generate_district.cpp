@@ -7,6 +7,7 @@
 #include "tools/generate/district_xml.hpp"
 #include "lib/scenario/load_scenario.hpp"
 #include "lib/scenario/reachability.hpp"
+#include "lib/scenario/sight_lines.hpp"
 #include "lib/common/whole_file.hpp"
 
 namespace beft::generate {
@@ -23,14 +24,19 @@ GeneratedScenario generateDistrict(const DistrictParameters& parameters, const s
     // Loaded back from beside the output, so sound paths resolve as they will.
     const scenario::Scenario loaded = scenario::loadScenario(partial);
     const auto unreachable = scenario::unreachablePersons(loaded);
-    if (unreachable.empty()) {
+    const auto unseeable = unreachable.empty() ? scenario::unseeableObjects(loaded) : std::vector<std::string>{};
+    if (unreachable.empty() && unseeable.empty()) {
       commitPartial(partial, out_path);
       return result;
     }
-    last_problem = std::to_string(unreachable.size()) + " person(s) unreachable, first " + unreachable.front();
+    last_problem = !unreachable.empty()
+                       ? std::to_string(unreachable.size()) + " person(s) unreachable, first " + unreachable.front()
+                       : std::to_string(unseeable.size()) + " object(s) no reachable place sees, first " +
+                             unseeable.front();
   }
   std::remove(partial.c_str());
-  throw std::runtime_error("no layout in " + std::to_string(max_attempts) + " attempts had every person reachable (" +
+  throw std::runtime_error("no layout in " + std::to_string(max_attempts) +
+                           " attempts had every person reachable and every object seen from somewhere (" +
                            last_problem + ")");
 }
 

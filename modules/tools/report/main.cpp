@@ -12,6 +12,7 @@
 #include "lib/report/run_record.hpp"
 #include "lib/report/run_scoring.hpp"
 #include "tools/report/path_efficiency.hpp"
+#include "tools/report/unsettled_reasons.hpp"
 
 namespace {
 
@@ -94,6 +95,7 @@ int report(const Options& o) {
     auto report = beft::report::scoreRun(record, o.scoring);
     // Shortest paths need the ground truth's obstacles: the scenario's.
     if (scenario) beft::report::scorePathEfficiency(record, *scenario, o.paths, report);
+    if (scenario) beft::report::explainUnsettled(*scenario, report);
     beft::report::writeReportFiles(record, report, o.out_dir);
     if (!o.quiet) beft::report::printSummary(report, std::cout);
     return 0;

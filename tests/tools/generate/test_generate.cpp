@@ -12,6 +12,7 @@
 #include "tools/generate/generate_district.hpp"
 #include "lib/scenario/load_scenario.hpp"
 #include "lib/scenario/reachability.hpp"
+#include "lib/scenario/sight_lines.hpp"
 
 namespace beft::generate {
 namespace {
@@ -52,7 +53,7 @@ int countLabel(const scenario::Scenario& s, const std::string& label) {
   return n;
 }
 
-TEST_F(GenerateTest, EverySeedPassesTheContractWithEveryPersonReachable) {
+TEST_F(GenerateTest, EverySeedPassesTheContractWithEveryPersonReachableAndEveryObjectSeen) {
   struct Size { double w, h; int objects; };
   const Size sizes[] = {{80, 60, 114}, {50, 40, 40}, {120, 45, 200}, {160, 120, 450}};
   int checked = 0;
@@ -68,6 +69,7 @@ TEST_F(GenerateTest, EverySeedPassesTheContractWithEveryPersonReachable) {
       EXPECT_GT(countLabel(loaded, "person"), 0);
       EXPECT_GT(countLabel(loaded, "wall"), 0);
       EXPECT_TRUE(scenario::unreachablePersons(loaded).empty());
+      EXPECT_TRUE(scenario::unseeableObjects(loaded).empty());
       ++checked;
     }
   }
