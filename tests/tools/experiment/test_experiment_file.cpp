@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include <unistd.h>
 
@@ -165,6 +166,30 @@ TEST(ExperimentValueLists, SeedLists) {
   EXPECT_EQ(*parseSeedList("1-3 7"), (std::vector<uint64_t>{1, 2, 3, 7}));
   EXPECT_EQ(*parseSeedList(" 5 "), (std::vector<uint64_t>{5}));
   for (const char* bad : {"", "3-1", "-2", "1-", "x", "1.5", "1-2-3"}) EXPECT_FALSE(parseSeedList(bad)) << bad;
+}
+
+}  // namespace
+}  // namespace beft::experiment
+
+namespace beft::experiment {
+namespace {
+
+// The examples in scenarios/experiments/ read, and are the episodes their comments promise.
+TEST(ShippedExperiments, ReadAndExpandToTheirEpisodes) {
+  const std::filesystem::path folder = std::filesystem::path(BEFT_SOURCE_DIR) / "scenarios" / "experiments";
+  const std::map<std::string, size_t> expected = {
+      {"districts.xml", 80}, {"large_districts.xml", 3}, {"yard_planners.xml", 6}};
+  int read = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    SCOPED_TRACE(entry.path().filename().string());
+    const auto episodes = expandEpisodes(readExperiment(entry.path().string()));
+    EXPECT_FALSE(episodes.empty());
+    const auto known = expected.find(entry.path().filename().string());
+    ASSERT_NE(known, expected.end()) << "an example this test does not know: add its episode count";
+    EXPECT_EQ(episodes.size(), known->second);
+    ++read;
+  }
+  EXPECT_GE(read, 3);
 }
 
 }  // namespace
