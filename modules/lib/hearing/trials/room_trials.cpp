@@ -51,12 +51,23 @@ double nearestPeak(const BlockLocalisation& found, int count, double azimuth_deg
   return best;
 }
 
-// Whether a talker was heard at its mirror image: a peak nearer the mirror
-// than any is to the talker, and none within 10 degrees of the talker (so
-// that another talker standing near the mirror image is no confusion).
-bool confused(const BlockLocalisation& found, int count, double azimuth_deg) {
-  const double truth = nearestPeak(found, count, azimuth_deg);
-  return truth > 10 && nearestPeak(found, count, frontBackMirror(azimuth_deg)) < truth;
+// Whether a talker was heard at its mirror image: none of the peaks within
+// 10 degrees of it, and one within 10 degrees of its mirror image that no
+// other talker accounts for (none of them within 10 degrees of that peak).
+// A peak of another talker who happens to stand near the mirror image is
+// that talker found, not this one confused; a talker missed with no peak
+// near its mirror image is missed, not confused.
+bool confused(const BlockLocalisation& found, int count, double azimuth_deg, const std::vector<double>& talkers_deg) {
+  if (nearestPeak(found, count, azimuth_deg) <= 10) return false;
+  const double mirror = frontBackMirror(azimuth_deg);
+  for (int p = 0; p < std::min<int>(count, static_cast<int>(found.peaks.size())); ++p) {
+    const double peak = found.peaks[static_cast<std::size_t>(p)].azimuth_deg;
+    if (angularDistance(peak, mirror) > 10) continue;
+    if (std::none_of(talkers_deg.begin(), talkers_deg.end(),
+                     [&](double other) { return other != azimuth_deg && angularDistance(peak, other) <= 10; }))
+      return true;
+  }
+  return false;
 }
 
 // Whole-degree azimuths at least 30 degrees apart.
@@ -149,6 +160,8 @@ RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint
     const BlockLocalisation heard_before = localiser_.localise(before.left, before.right);
     const BlockLocalisation heard_after =
         localiser_.localise({EarBlock{before.left, before.right, turn}, EarBlock{after.left, after.right, 0.0}});
+    std::vector<double> azimuths_now;
+    for (double azimuth : azimuths) azimuths_now.push_back(wrapDegrees(azimuth - turn));
     for (double azimuth : azimuths) {
       const double now = wrapDegrees(azimuth - turn);
       const double error = nearestPeak(heard_after, sources, now);
@@ -156,8 +169,8 @@ RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint
       within += error <= 5;
       if (angularDistance(azimuth, frontBackMirror(azimuth)) > 20 && angularDistance(now, frontBackMirror(now)) > 20) {
         ++counted;
-        static_confusions += confused(heard_before, sources, azimuth);
-        turned_confusions += confused(heard_after, sources, now);
+        static_confusions += confused(heard_before, sources, azimuth, azimuths);
+        turned_confusions += confused(heard_after, sources, now, azimuths_now);
       }
     }
   }

@@ -34,7 +34,10 @@ struct RoomFigures {
   int trials = 0;
   double within_5deg = 0;     // share of talkers with one of the N strongest peaks within 5 deg, after the turn
   double median_error_deg = 0;  // median over talkers of the nearest of those peaks, after the turn
-  double front_back_static = 0;      // share of talkers heard at their mirror image, none within 10 deg, first block alone
+  // Share of talkers heard at their mirror image: no peak within 10 deg of
+  // the talker, one within 10 deg of its mirror image that no other talker
+  // accounts for (none within 10 deg of that peak); the first block alone.
+  double front_back_static = 0;
   double front_back_after_turn = 0;  // the same after the turn
 };
 
