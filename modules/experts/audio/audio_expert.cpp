@@ -8,6 +8,7 @@
 #include "lib/common/channels.hpp"
 #include "experts/audio/heard_percepts.hpp"
 #include "lib/common/log.hpp"
+#include "lib/scenario/load_scenario.hpp"
 #include "lib/scene/object_geometry.hpp"
 #include "lib/task/task_commands.hpp"
 
@@ -40,6 +41,12 @@ void AudioExpert::declareParameters(DeclaredParameters& parameters) {
                            {{"ground_truth", Acoustics::GroundTruth}, {"binaural", Acoustics::Binaural}},
                            "p_hat from ground truth (the paper's experiments) or from the ear signals on EARS");
   parameters.declare("scenario", scenario_, "scenario file; binaural: the objects' sounds are relative to its folder");
+  parameters.declareChoice("localiser", profile_,
+                           {{"place", Profile::Place}, {"free_field", Profile::FreeField},
+                            {"reverberant", Profile::Reverberant}},
+                           "binaural: the localiser's profile: free_field (its defaults), reverberant (onset "
+                           "weighting, interaural-coherence selection, every bin alike), or place: reverberant "
+                           "when the scenario has <acoustics>");
   parameters.declare("default_distance_m", hearing_config_.default_distance_m, 0.5, 50,
                      "binaural: distance of an estimate before the bearings cross [m]");
   parameters.declare("turn_deg", hearing_config_.turn_deg, 5, 60,
@@ -54,13 +61,23 @@ void AudioExpert::onStartUp() {
   if (acoustics_ != Acoustics::Binaural) return;
   auto templates = hearing::InterauralTemplates::fromSofa();
   const double rate = templates.layout().sample_rate;
-  localiser_.emplace(std::move(templates));
+  bool reverberant = profile_ == Profile::Reverberant;
+  if (profile_ == Profile::Place && !scenario_.empty()) {
+    try {
+      reverberant = scenario::loadScenario(scenario_, nullptr).acoustics.has_value();
+    } catch (const std::exception& e) {
+      log::warn("audio: cannot read ", scenario_, " for its <acoustics> (", e.what(), "): the free-field localiser");
+    }
+  }
+  localiser_.emplace(std::move(templates),
+                     reverberant ? hearing::LocaliserConfig::reverberant() : hearing::LocaliserConfig{});
   const std::string folder = std::filesystem::path(scenario_).parent_path().string();
   if (scenario_.empty()) log::warn("audio: no --param scenario=FILE: sounds are looked up from the current folder");
   sounds_ = std::make_unique<hearing::SoundBank>(folder.empty() ? "." : folder, rate,
                                                  [](const std::string& text) { log::warn(text); });
   heard_.emplace(hearing_config_);
-  log::info("audio: localising the ear signals (templates of the MIT KEMAR head)");
+  log::info("audio: localising the ear signals (templates of the MIT KEMAR head, ",
+            reverberant ? "reverberant" : "free-field", " profile)");
 }
 
 bool AudioExpert::admitBlock(binaural_block_t& block, std::string* why) {

@@ -38,6 +38,10 @@ class AudioExpert : public expert::Expert {
 
  private:
   enum class Acoustics { GroundTruth, Binaural };
+  // Which of the localiser's profiles hears (binaural): the defaults, the
+  // reverberant one (hearing::LocaliserConfig::reverberant), or whichever
+  // the place calls for (the scenario's <acoustics>: reverberant).
+  enum class Profile { Place, FreeField, Reverberant };
   expert::Outcome fireHearing(const expert::Firing& firing, const scene_objects_t& scene,
                               const robot_state_t& robot, expert::Output& out);
   const hearing::BandSignature* signatureOf(const std::string& sound);
@@ -47,6 +51,7 @@ class AudioExpert : public expert::Expert {
   int64_t seed_ = 0;  // of the position noise
   Acoustics acoustics_ = Acoustics::GroundTruth;
   std::string scenario_;  // the sounds' folder (binaural)
+  Profile profile_ = Profile::Place;
   HearingConfig hearing_config_;
   double head_yaw_limit_deg_ = 80;
   int64_t turn_priority_ = 90;

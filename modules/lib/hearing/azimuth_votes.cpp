@@ -7,6 +7,10 @@ namespace beft::hearing {
 
 namespace {
 constexpr int kBins = AzimuthPosterior::kBins;
+// Added to each block's residual, normalised to sum 1, as this share of the
+// flat value before the geometric mean: a direction one block gives nothing
+// is weakened, not vetoed (a source may fall quiet in one block).
+constexpr double kJointFloor = 0.05;
 
 std::array<double, kBins> weightedSum(const std::vector<AzimuthVote>& votes, const std::vector<double>& weights) {
   std::array<double, kBins> sum{};
@@ -19,11 +23,36 @@ std::array<double, kBins> weightedSum(const std::vector<AzimuthVote>& votes, con
 }
 }  // namespace
 
+// The geometric mean over the blocks of each block's residual, normalised.
+std::array<double, kBins> AzimuthVotes::jointResidual(const std::vector<double>& weights) const {
+  std::array<double, kBins> joint;
+  joint.fill(0.0);
+  const int count = blocks();
+  for (int b = 0; b < count; ++b) {
+    std::array<double, kBins> sum{};
+    double total = 0;
+    for (std::size_t v = 0; v < votes_.size(); ++v) {
+      if (votes_[v].block != b || !(weights[v] > 0)) continue;
+      total += weights[v];
+      for (int a = 0; a < kBins; ++a)
+        sum[static_cast<std::size_t>(a)] += weights[v] * votes_[v].likelihood[static_cast<std::size_t>(a)];
+    }
+    // A block with nothing left says nothing (flat); a floor keeps one empty direction from vetoing all.
+    for (int a = 0; a < kBins; ++a) {
+      const double p = total > 0 ? sum[static_cast<std::size_t>(a)] / total : 1.0 / kBins;
+      joint[static_cast<std::size_t>(a)] += std::log(p + kJointFloor / kBins) / count;
+    }
+  }
+  for (double& j : joint) j = std::exp(j);
+  return joint;
+}
+
 void AzimuthVotes::add(AzimuthVote vote) {
   double total = 0;
   for (float l : vote.likelihood) total += l;
   if (!(total > 0) || !std::isfinite(total) || !(vote.weight > 0) || !std::isfinite(vote.weight)) return;
   for (float& l : vote.likelihood) l = static_cast<float>(l / total);
+  vote.block = block_;
   votes_.push_back(std::move(vote));
 }
 
@@ -34,7 +63,7 @@ AzimuthPosterior AzimuthVotes::posterior() const {
 }
 
 std::vector<FoundSource> AzimuthVotes::separateSources(int max_sources, double min_separation_deg,
-                                                       double min_relative_weight) const {
+                                                       double min_relative_weight, bool jointly) const {
   std::vector<FoundSource> found;
   std::vector<double> weights(votes_.size());
   double total_weight = 0;
@@ -47,7 +76,7 @@ std::vector<FoundSource> AzimuthVotes::separateSources(int max_sources, double m
   if (!(total_weight > 0)) return found;
 
   while (static_cast<int>(found.size()) < max_sources) {
-    const AzimuthPosterior residual(weightedSum(votes_, weights));
+    const AzimuthPosterior residual(jointly && blocks() > 1 ? jointResidual(weights) : weightedSum(votes_, weights));
     if (residual.isFlat()) break;
     // The heaviest peak of what is left that is not one already found.
     const auto candidates = residual.peaks(min_separation_deg, 0);

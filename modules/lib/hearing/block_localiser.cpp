@@ -16,6 +16,9 @@ struct BlockLocaliser::FrameSpectra {
   std::vector<float> level_db;                    // left over right power, per bin with a phase template [dB]
   std::vector<float> power_left, power_right;     // per bin with a phase template
   std::vector<float> coherence;                   // interaural coherence per bin with a phase template (1: none)
+  std::vector<float> onset;                       // onset weight per bin with a phase template (1: none)
+  std::vector<float> band_onset;                  // onset weight per band (1: none)
+  long start = 0;                                 // first sample
 
   static FrameSpectra reduced(const std::vector<std::complex<float>>& spectrum_left,
                               const std::vector<std::complex<float>>& spectrum_right, const FrequencyBands& bands,
@@ -26,6 +29,15 @@ struct BlockLocaliser::FrameSpectra {
     return 0.5 * (energy_left[i] + energy_right[i]) / (bands[b].end_bin - bands[b].first_bin);
   }
 };
+
+LocaliserConfig LocaliserConfig::reverberant() {
+  LocaliserConfig config;
+  config.onset_exponent = 2;
+  config.coherence_floor = 0.3;
+  config.weight_exponent = 0;
+  config.joint_blocks = true;
+  return config;
+}
 
 namespace {
 
@@ -88,6 +100,8 @@ BlockLocaliser::FrameSpectra BlockLocaliser::FrameSpectra::reduced(
   frame.power_left.resize(static_cast<std::size_t>(phase_bins));
   frame.power_right.resize(static_cast<std::size_t>(phase_bins));
   frame.coherence.assign(static_cast<std::size_t>(phase_bins), 1.0f);
+  frame.onset.assign(static_cast<std::size_t>(phase_bins), 1.0f);
+  frame.band_onset.assign(static_cast<std::size_t>(band_count), 1.0f);
   for (int k = 0; k < phase_bins; ++k) {
     const auto i = static_cast<std::size_t>(k);
     frame.cross[i] = spectrum_left[i] * std::conj(spectrum_right[i]);
@@ -104,6 +118,7 @@ void BlockLocaliser::addVotes(const std::vector<float>& left, const std::vector<
   checkEarSignals(left, right);
   std::vector<FrameSpectra> frames = loudFrameSpectra(left, right);
   if (config_.coherence_floor > 0) interauralCoherence(frames);
+  if (config_.onset_exponent > 0) onsetWeights(frames);
   voting_frames += static_cast<int>(frames.size());
   if (frames.empty()) return;
 
@@ -140,6 +155,7 @@ std::vector<BlockLocaliser::FrameSpectra> BlockLocaliser::loudFrameSpectra(const
     fft_.forward(windowed_left, spectrum_left);
     fft_.forward(windowed_right, spectrum_right);
     frames.push_back(FrameSpectra::reduced(spectrum_left, spectrum_right, templates_.bands(), templates_.phaseBins()));
+    frames.back().start = start;
   }
   return frames;
 }
@@ -153,6 +169,39 @@ double BlockLocaliser::votingThreshold(const std::vector<FrameSpectra>& frames) 
     for (int b = 0; b < bands.size(); ++b) loudest = std::max(loudest, f.density(bands, b));
   return std::max(loudest * std::pow(10.0, -config_.band_range_db / 10),
                   config_.silence_rms * config_.silence_rms * window_power_);
+}
+
+// The onset weights (LocaliserConfig::onset_exponent) per frame, bin and band.
+void BlockLocaliser::onsetWeights(std::vector<FrameSpectra>& frames) const {
+  const int hop = templates_.layout().hop;
+  const double decay = std::pow(10.0, -config_.onset_decay_db / 10);
+  const auto weight = [&](double reference, double power) {
+    if (!(power > 0)) return 0.0f;
+    return static_cast<float>(std::pow(std::max(0.0, 1 - reference / power), config_.onset_exponent));
+  };
+  const std::size_t bins = frames.empty() ? 0 : frames.front().cross.size();
+  const std::size_t bands = frames.empty() ? 0 : frames.front().energy_left.size();
+  std::vector<double> reference(bins, 0.0), band_reference(bands, 0.0);
+  for (std::size_t t = 0; t < frames.size(); ++t) {
+    FrameSpectra& f = frames[t];
+    const bool first = f.start == 0;
+    const bool after_silence = t == 0 ? !first : f.start != frames[t - 1].start + hop;
+    if (after_silence) {
+      std::fill(reference.begin(), reference.end(), 0.0);
+      std::fill(band_reference.begin(), band_reference.end(), 0.0);
+    }
+    for (std::size_t k = 0; k < bins; ++k) {
+      const double power = 0.5 * (f.power_left[k] + f.power_right[k]);
+      f.onset[k] = first ? static_cast<float>(config_.onset_first_frame_weight) : weight(reference[k], power);
+      reference[k] = std::max(reference[k] * decay, power);
+    }
+    for (std::size_t b = 0; b < bands; ++b) {
+      const double power = 0.5 * (f.energy_left[b] + f.energy_right[b]);
+      f.band_onset[b] =
+          first ? static_cast<float>(config_.onset_first_frame_weight) : weight(band_reference[b], power);
+      band_reference[b] = std::max(band_reference[b] * decay, power);
+    }
+  }
 }
 
 // Faller and Merimaa's interaural coherence per frame and bin, the
@@ -213,6 +262,10 @@ void BlockLocaliser::addPhaseVotes(const FrameSpectra& f, int b, int shift, Azim
     vote.band = b;
     vote.energy = 2.0 * magnitude;  // |L| |R| per ear
     vote.weight = std::pow(vote.energy, config_.weight_exponent);
+    if (config_.onset_exponent > 0) {
+      vote.weight *= f.onset[static_cast<std::size_t>(k)];
+      if (!(vote.weight > 0)) continue;
+    }
     if (config_.coherence_floor > 0) {
       const double c = f.coherence[static_cast<std::size_t>(k)];
       const double selected = std::clamp((c - config_.coherence_floor) / (1 - config_.coherence_floor), 0.0, 1.0);
@@ -236,6 +289,7 @@ void BlockLocaliser::addLevelVote(const FrameSpectra& f, int b, int shift, Azimu
   vote.band = b;
   vote.energy = f.energy_left[i] + f.energy_right[i];
   vote.weight = config_.level_cue_weight * std::pow(vote.energy, config_.weight_exponent);
+  if (config_.onset_exponent > 0) vote.weight *= f.band_onset[i];
   votes.add(rotated(std::move(vote), shift));
 }
 
@@ -246,14 +300,17 @@ BlockLocalisation BlockLocaliser::localise(const std::vector<float>& left, const
 BlockLocalisation BlockLocaliser::localise(const std::vector<EarBlock>& blocks) const {
   AzimuthVotes votes(templates_.bands().size());
   BlockLocalisation result;
-  for (const EarBlock& block : blocks)
+  for (const EarBlock& block : blocks) {
+    votes.beginBlock();
     addVotes(block.left, block.right, static_cast<int>(std::lround(block.turned_since_deg)), votes, result.voting_frames);
+  }
   if (result.voting_frames == 0) return result;
   result.posterior = votes.posterior();
 
   // 4. The sources, one after the other, with the band energy of the votes each explained.
-  for (FoundSource& source : votes.separateSources(config_.max_peaks, config_.min_peak_separation_deg,
-                                                   config_.min_peak_relative_weight)) {
+  std::vector<FoundSource> sources = votes.separateSources(
+      config_.max_peaks, config_.min_peak_separation_deg, config_.min_peak_relative_weight, config_.joint_blocks);
+  for (FoundSource& source : sources) {
     LocalisedPeak peak;
     peak.azimuth_deg = source.azimuth_deg;
     peak.weight = source.weight;

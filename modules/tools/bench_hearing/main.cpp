@@ -51,6 +51,7 @@ struct Options {
   bool missions = true;
   bool rooms = true;
   int room_trials = 100;
+  std::vector<double> room_t60s = {0.0, 0.3, 0.6, 0.9};
   bool json = false;
 };
 
@@ -209,6 +210,9 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--room-trials", o.room_trials, "trials per room and number of talkers")
       ->capture_default_str()
       ->check(CLI::Range(1, 10000));
+  app.add_option("--room-t60", o.room_t60s, "the rooms' T60s [s] (0: the free field)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 3.0));
   app.add_flag("--json", o.json, "print one JSON object of the figures");
   return beft::parseCommandLine(app, argc, argv);
 }
@@ -290,17 +294,23 @@ nlohmann::json measureFigures(const Options& options, const HrirSet& hrirs) {
 void addRooms(const Options& options, const BinauralRenderer& renderer, nlohmann::json& report) {
   report["rooms"] = nlohmann::json::array();
   if (!options.json)
-    std::printf("rooms (16 x 12 x 4 m shoebox, talkers 1.5 m away over 360 deg, after one head turn):\n"
+    std::printf("rooms (16 x 12 x 4 m shoebox, talkers 1.5 m away over 360 deg, after one head turn; the free field "
+                "with the localiser's defaults, the rooms with LocaliserConfig::reverberant()):\n"
                 "  %6s %8s %7s %7s %9s %8s %8s %8s\n", "T60", "measured", "DRR dB", "talkers", "within 5", "median",
                 "fb still", "fb turn");
-  trials::RoomTrials room_trials(renderer, BlockLocaliser(InterauralTemplates::fromSofa()), options.sounds_dir);
-  for (double t60 : {0.0, 0.3, 0.6, 0.9}) {
+  // The free field with the localiser's defaults, the rooms with its reverberant profile (the place is known).
+  trials::RoomTrials free_field(renderer, BlockLocaliser(InterauralTemplates::fromSofa()), options.sounds_dir);
+  trials::RoomTrials rooms(renderer, BlockLocaliser(InterauralTemplates::fromSofa(), LocaliserConfig::reverberant()),
+                           options.sounds_dir);
+  for (double t60 : options.room_t60s) {
     const trials::TrialRoom room = trials::trialRoom(t60, renderer.hrirs(), 2);
     for (int talkers = 1; talkers <= 3; ++talkers) {
-      const trials::RoomFigures f = room_trials.run(room, talkers, options.room_trials, options.seed + 100 * talkers);
+      trials::RoomTrials& trials = t60 > 0 ? rooms : free_field;
+      const trials::RoomFigures f = trials.run(room, talkers, options.room_trials, options.seed + 100 * talkers);
       nlohmann::json entry = {{"t60_s", f.t60_s},
                               {"t60_measured_s", f.t60_measured_s},
                               {"drr_db", f.drr_db ? nlohmann::json(*f.drr_db) : nlohmann::json(nullptr)},
+                              {"localiser", t60 > 0 ? "reverberant" : "default"},
                               {"sources", f.sources},
                               {"trials", f.trials},
                               {"within_5deg", f.within_5deg},
