@@ -114,13 +114,15 @@ RoomTrials::RoomTrials(const BinauralRenderer& renderer, BlockLocaliser localise
   }
 }
 
-RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint64_t seed) {
+RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint64_t seed, int turns) {
   if (sources < 1 || sources > static_cast<int>(signals_.size()))
     throw std::invalid_argument("RoomTrials: 1 to 3 talkers");
+  if (turns < 1 || turns > 8) throw std::invalid_argument("RoomTrials: 1 to 8 head turns");
   RoomFigures figures;
   figures.t60_s = room.t60_s;
   figures.sources = sources;
   figures.trials = trials;
+  figures.turns = turns;
   std::mt19937_64 random(seed);
   std::uniform_int_distribution<int64_t> start(static_cast<int64_t>(2 * kRate), static_cast<int64_t>(60 * kRate));
   std::vector<double> errors;
@@ -132,14 +134,14 @@ RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint
     std::iota(talkers.begin(), talkers.end(), 0);
     std::shuffle(talkers.begin(), talkers.end(), random);
     if (sources == 1) talkers[0] = trial % static_cast<int>(signals_.size());
-    // A moment at which every talker speaks through both blocks.
+    // A moment at which every talker speaks through every block.
     int64_t first = start(random);
     for (int attempt = 0; attempt < 200; ++attempt, first = start(random)) {
       bool speaking = true;
       for (int s = 0; s < sources; ++s) {
         const auto& signal = signals_[static_cast<std::size_t>(talkers[static_cast<std::size_t>(s)])].samples;
-        speaking = speaking && loopedRms(signal, static_cast<long>(first), kBlock) > 0.05 &&
-                   loopedRms(signal, static_cast<long>(first + kBlock), kBlock) > 0.05;
+        for (int b = 0; b <= turns; ++b)
+          speaking = speaking && loopedRms(signal, static_cast<long>(first + b * kBlock), kBlock) > 0.05;
       }
       if (speaking) break;
     }
@@ -152,18 +154,24 @@ RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint
     for (int s = 0; s < sources; ++s)
       request.sources.push_back({&signals_[static_cast<std::size_t>(talkers[static_cast<std::size_t>(s)])],
                                  talkerAt(azimuths[static_cast<std::size_t>(s)]), 1.0, 0.0});
-    request.first_sample = first;
-    const StereoBlock before = renderer_.render(request);
-    request.first_sample = first + kBlock;
-    request.previous.yaw_deg = request.current.yaw_deg = turn;
-    const StereoBlock after = renderer_.render(request);
+    // One block with the head still, then one after each turn of kDefaultResolvingTurnDeg CCW.
+    std::vector<StereoBlock> heard_blocks;
+    for (int b = 0; b <= turns; ++b) {
+      request.first_sample = first + b * kBlock;
+      request.previous.yaw_deg = request.current.yaw_deg = b * turn;
+      heard_blocks.push_back(renderer_.render(request));
+    }
+    const StereoBlock& before = heard_blocks.front();
+    std::vector<EarBlock> pooled;
+    for (int b = 0; b <= turns; ++b)
+      pooled.push_back(EarBlock{heard_blocks[static_cast<std::size_t>(b)].left,
+                                heard_blocks[static_cast<std::size_t>(b)].right, (turns - b) * turn});
     const BlockLocalisation heard_before = localiser_.localise(before.left, before.right);
-    const BlockLocalisation heard_after =
-        localiser_.localise({EarBlock{before.left, before.right, turn}, EarBlock{after.left, after.right, 0.0}});
+    const BlockLocalisation heard_after = localiser_.localise(pooled);
     std::vector<double> azimuths_now;
-    for (double azimuth : azimuths) azimuths_now.push_back(wrapDegrees(azimuth - turn));
+    for (double azimuth : azimuths) azimuths_now.push_back(wrapDegrees(azimuth - turns * turn));
     for (double azimuth : azimuths) {
-      const double now = wrapDegrees(azimuth - turn);
+      const double now = wrapDegrees(azimuth - turns * turn);
       const double error = nearestPeak(heard_after, sources, now);
       errors.push_back(error);
       within += error <= 5;

@@ -32,6 +32,7 @@ struct RoomFigures {
   std::optional<double> drr_db;  // direct (to 2.5 ms after it) over the rest; none in the free field
   int sources = 0;            // simultaneous talkers
   int trials = 0;
+  int turns = 1;              // head turns heard (blocks: one more)
   double within_5deg = 0;     // share of talkers with one of the N strongest peaks within 5 deg, after the turn
   double median_error_deg = 0;  // median over talkers of the nearest of those peaks, after the turn
   // Share of talkers heard at their mirror image: no peak within 10 deg of
@@ -58,7 +59,9 @@ class RoomTrials {
   RoomTrials(const BinauralRenderer& renderer, BlockLocaliser localiser,
              const std::string& sounds_dir = scenarioSoundsDir());
 
-  RoomFigures run(const TrialRoom& room, int sources, int trials, uint64_t seed);
+  // `turns` head turns of kDefaultResolvingTurnDeg, all CCW: a block before
+  // them and one after each, pooled (the figures after the turn are after the last).
+  RoomFigures run(const TrialRoom& room, int sources, int trials, uint64_t seed, int turns = 1);
 
  private:
   const BinauralRenderer& renderer_;
