@@ -71,6 +71,19 @@ TEST(HearingMissions, YardPeekAndDecoyFindEveryPersonFromWhatTheEarsHeard) {
   EXPECT_TRUE(radio_falsified) << hearingRun("decoy").report.dump(2);
 }
 
+TEST(HearingMissions, DecoyInAReverberantYardFindsTheCallerInTheHouse) {
+  // decoy_reverb: <acoustics> T60 0.6 s, so the audio expert localises with
+  // the reverberant profile; with the free-field one the caller is missed.
+  const auto& run = hearingRun("decoy_reverb");
+  ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
+  EXPECT_TRUE(run.report["missed"].empty()) << run.report.dump(2);
+  EXPECT_EQ(victimsOf(run.report), (std::set<std::string>{"victim", "caller"})) << run.report.dump(2);
+  EXPECT_EQ(run.report["collisions"], 0);
+  bool radio_falsified = false;
+  for (const auto& f : run.report["falsified"]) radio_falsified |= f["object"] == "radio";
+  EXPECT_TRUE(radio_falsified) << run.report.dump(2);
+}
+
 TEST(HearingMissions, EstimatesComeFromTheEarsNotFromGroundTruth) {
   const auto& run = hearingRun("yard");
   ASSERT_EQ(run.result.exit_code, 0) << run.result.output;
