@@ -294,6 +294,18 @@ TEST(Executor, GotoLooksAlongThePathAndDrivesOnlyWhileItSeesTheWay) {
   EXPECT_GT(looks_ahead, moves / 2);
 }
 
+// A free 10 x 4 m map, x in [0, 10], y in [-2, 2], at 0.1 m: row 20 holds y = 0.
+planners::ObstacleCells freeMap() {
+  planners::ObstacleCells map;
+  map.width = 100;
+  map.height = 40;
+  map.resolution = 0.1;
+  map.origin_x = 0;
+  map.origin_y = -2;
+  map.cells.assign(static_cast<size_t>(map.width * map.height), beft::obstacle_map_t::CELL_FREE);
+  return map;
+}
+
 TEST(Executor, GotoReplansWhenANewlyMappedObstacleBlocksThePath) {
   ExecutorParameters p;
   p.max_replans = 0;  // map changes are not failures: they do not count
@@ -306,13 +318,7 @@ TEST(Executor, GotoReplansWhenANewlyMappedObstacleBlocksThePath) {
   h.run(5);
   EXPECT_EQ(h.requests.size(), 1u);
   // A wall appears on the map across the path at x = 5.
-  planners::ObstacleCells map;
-  map.width = 100;
-  map.height = 40;
-  map.resolution = 0.1;
-  map.origin_x = 0;
-  map.origin_y = -2;
-  map.cells.assign(static_cast<size_t>(map.width * map.height), beft::obstacle_map_t::CELL_FREE);
+  planners::ObstacleCells map = freeMap();
   for (int y = 10; y < 30; ++y) map.cells[static_cast<size_t>(y * map.width + 50)] = beft::obstacle_map_t::CELL_OCCUPIED;
   h.executor.setObstacleMap(map);
   h.step();
@@ -339,13 +345,7 @@ TEST(Executor, GotoReplansAPathThatGrazesANewlyMappedWall) {
     h.run(5);
     ASSERT_EQ(h.requests.size(), 1u);
     // A wall along the path, rows_away cells beside it, from x = 4 to 6.
-    planners::ObstacleCells map;
-    map.width = 100;
-    map.height = 40;
-    map.resolution = 0.1;
-    map.origin_x = 0;
-    map.origin_y = -2;
-    map.cells.assign(static_cast<size_t>(map.width * map.height), beft::obstacle_map_t::CELL_FREE);
+    planners::ObstacleCells map = freeMap();
     const int row = 20 + rows_away;  // row 20 holds y = 0, the path
     for (int x = 40; x < 60; ++x) map.cells[static_cast<size_t>(row * map.width + x)] = beft::obstacle_map_t::CELL_OCCUPIED;
     h.executor.setObstacleMap(map);
