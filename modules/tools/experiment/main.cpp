@@ -38,11 +38,12 @@ std::optional<int> parseOptions(int argc, char** argv, beft::experiment::RunnerO
       "included, seeds, planners, acoustics, nets and --set parameters), each an ordinary beft-run in "
       "OUT/episodes/ID/, at most --jobs at once. Resumable: an episode already done is not run again, one that "
       "failed is reported with its reason and run again only with --retry-failed, one run with other options "
-      "(the file changed) runs again; interrupted (Ctrl-C), it runs what is missing when started again. Writes OUT/episodes.csv (one row per episode), OUT/summary.csv and "
-      "OUT/summary.json (per condition: success rate with its 95 % Wilson interval, quartiles of time to find, "
+      "(the file changed) runs again; interrupted (Ctrl-C), it runs what is missing when started again. Writes "
+      "OUT/episodes.csv (one row per episode), OUT/summary.csv and OUT/summary.json (per condition: success rate with its 95 % Wilson interval, quartiles of time to find, "
       "collisions; paired comparisons: McNemar's exact test on success, Wilcoxon's signed-rank test on time to "
-      "find), OUT/success.png and OUT/time_to_find.png, and prints the summary and the episodes per hour. The "
-      "file's format: modules/tools/README.md. With --slurm, the episodes run as an sbatch array job.",
+      "find), OUT/success.png and OUT/time_to_find.png, and prints the summary, the episodes per hour and, with "
+      "more than one job, the pool's speed-up over one job (its first episode runs alone). The file's format: "
+      "modules/tools/README.md. With --slurm, the episodes run as an sbatch array job.",
       "beft-experiment");
   app.add_option("file", o.file, "experiment XML file")->required()->check(CLI::ExistingFile);
   app.add_option("--out", o.out_dir, "the experiment's folder (default logs/experiment-<file name>/)");
