@@ -114,6 +114,22 @@ RoomTrials::RoomTrials(const BinauralRenderer& renderer, BlockLocaliser localise
   }
 }
 
+int64_t RoomTrials::momentAllSpeak(const std::vector<int>& talkers, int sources, int turns,
+                                   std::mt19937_64& random) const {
+  std::uniform_int_distribution<int64_t> start(static_cast<int64_t>(2 * kRate), static_cast<int64_t>(60 * kRate));
+  int64_t first = start(random);
+  for (int attempt = 0; attempt < 200; ++attempt, first = start(random)) {
+    bool speaking = true;
+    for (int s = 0; s < sources; ++s) {
+      const auto& signal = signals_[static_cast<std::size_t>(talkers[static_cast<std::size_t>(s)])].samples;
+      for (int b = 0; b <= turns; ++b)
+        speaking = speaking && loopedRms(signal, static_cast<long>(first + b * kBlock), kBlock) > 0.05;
+    }
+    if (speaking) break;
+  }
+  return first;
+}
+
 RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint64_t seed, int turns) {
   if (sources < 1 || sources > static_cast<int>(signals_.size()))
     throw std::invalid_argument("RoomTrials: 1 to 3 talkers");
@@ -124,7 +140,6 @@ RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint
   figures.trials = trials;
   figures.turns = turns;
   std::mt19937_64 random(seed);
-  std::uniform_int_distribution<int64_t> start(static_cast<int64_t>(2 * kRate), static_cast<int64_t>(60 * kRate));
   std::vector<double> errors;
   int within = 0, counted = 0, static_confusions = 0, turned_confusions = 0;
   const double turn = kDefaultResolvingTurnDeg;
@@ -134,17 +149,7 @@ RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint
     std::iota(talkers.begin(), talkers.end(), 0);
     std::shuffle(talkers.begin(), talkers.end(), random);
     if (sources == 1) talkers[0] = trial % static_cast<int>(signals_.size());
-    // A moment at which every talker speaks through every block.
-    int64_t first = start(random);
-    for (int attempt = 0; attempt < 200; ++attempt, first = start(random)) {
-      bool speaking = true;
-      for (int s = 0; s < sources; ++s) {
-        const auto& signal = signals_[static_cast<std::size_t>(talkers[static_cast<std::size_t>(s)])].samples;
-        for (int b = 0; b <= turns; ++b)
-          speaking = speaking && loopedRms(signal, static_cast<long>(first + b * kBlock), kBlock) > 0.05;
-      }
-      if (speaking) break;
-    }
+    const int64_t first = momentAllSpeak(talkers, sources, turns, random);
     BlockRequest request;
     request.num_samples = kBlock;
     request.noise_rms = 1e-4;

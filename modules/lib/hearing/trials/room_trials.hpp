@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,8 @@ class RoomTrials {
   RoomFigures run(const TrialRoom& room, int sources, int trials, uint64_t seed, int turns = 1);
 
  private:
+  // A first sample from which every talker speaks through all turns + 1 blocks.
+  int64_t momentAllSpeak(const std::vector<int>& talkers, int sources, int turns, std::mt19937_64& random) const;
   const BinauralRenderer& renderer_;
   BlockLocaliser localiser_;
   std::vector<std::vector<float>> talkers_;
