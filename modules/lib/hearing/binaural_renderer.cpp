@@ -20,11 +20,9 @@ using detail::progressAt;
 using detail::readMoving;
 using detail::readStill;
 using detail::SourceView;
+using detail::kMaxChunk;
+using detail::kPi;
 
-constexpr double kPi = 3.14159265358979323846;
-// Output samples per FFT: a 0.1 s block is one chunk; a long span is cut
-// into chunks so the transforms stay small (overlap-save).
-constexpr int kMaxChunk = 16384;
 // Absolute sample indices beyond this lose precision as doubles.
 constexpr int64_t kMaxAbsoluteSample = int64_t{1} << 52;
 
@@ -93,22 +91,6 @@ void viewSources(const BlockRequest& request, int poses, double sample_rate, Scr
       s.views[p][i] = {BinauralRenderer::headAzimuthDeg(*pose_of[p], source.position), source.level / distance,
                        distance / BinauralRenderer::kSpeedOfSound * sample_rate};
     }
-  }
-}
-
-// The chunk of a turning head, from absolute sample chunk_first: the ears of
-// the previous pose blended into those of the current one by a raised cosine
-// w = (1 - cos(pi u)) / 2, u = (j + 1) / total, from 0 to 1; the cosine by
-// rotating a phasor, one step per sample.
-void blendPoses(const Scratch& s, int history, int chunk, int64_t chunk_first, int64_t first, int total,
-                float* const ears[2]) {
-  const std::complex<double> step = std::polar(1.0, kPi / total);
-  std::complex<double> phasor = std::polar(1.0, kPi * progressAt(chunk_first, first, total));
-  for (int j = 0; j < chunk; ++j) {
-    const float w = static_cast<float>(0.5 - 0.5 * phasor.real());
-    phasor *= step;
-    for (int ear = 0; ear < 2; ++ear)
-      ears[ear][j] = (1 - w) * s.outputs[0][ear][history + j] + w * s.outputs[1][ear][history + j];
   }
 }
 
@@ -227,7 +209,7 @@ void BinauralRenderer::renderChunk(const BlockRequest& request, bool turning, in
     }
     return;
   }
-  blendPoses(s, history, chunk, first + chunk_start, first, total, ears);
+  detail::blendPoses(s.outputs, history, chunk, first + chunk_start, first, total, ears, false);
 }
 
 }  // namespace beft::hearing

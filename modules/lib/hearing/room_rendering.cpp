@@ -18,9 +18,8 @@ using detail::progressAt;
 using detail::readMoving;
 using detail::readStill;
 using detail::SourceView;
+using detail::kMaxChunk;
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr int kMaxChunk = 16384;
 // Taps before an image's arrival in its response: the cubic fractional
 // delay reaches two samples back.
 constexpr int kLead = 2;
@@ -73,14 +72,7 @@ void addBlended(const Samples (&outputs)[2][2], int history, int chunk, int64_t 
       for (int j = 0; j < chunk; ++j) ears[ear][j] += outputs[0][ear][history + j];
     return;
   }
-  const std::complex<double> step = std::polar(1.0, kPi / total);
-  std::complex<double> phasor = std::polar(1.0, kPi * progressAt(chunk_first, first, total));
-  for (int j = 0; j < chunk; ++j) {
-    const float w = static_cast<float>(0.5 - 0.5 * phasor.real());
-    phasor *= step;
-    for (int ear = 0; ear < 2; ++ear)
-      ears[ear][j] += (1 - w) * outputs[0][ear][history + j] + w * outputs[1][ear][history + j];
-  }
+  detail::blendPoses(outputs, history, chunk, chunk_first, first, total, ears, true);
 }
 
 // The source read over a segment at a delay (moving from the previous

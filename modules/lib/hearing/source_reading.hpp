@@ -5,12 +5,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdint>
 #include <vector>
 
+#include "lib/hearing/fft_convolver.hpp"
 #include "lib/hearing/looped_signal.hpp"
 
 namespace beft::hearing::detail {
+
+constexpr double kPi = 3.14159265358979323846;
+// Output samples per FFT: a 0.1 s block is one chunk; a long span is cut
+// into chunks so the transforms stay small (overlap-save).
+constexpr int kMaxChunk = 16384;
 
 // Where and how loud a source is for one head pose.
 struct SourceView {
@@ -74,6 +81,25 @@ inline void readMoving(const std::vector<float>& signal, const SourceView& befor
     }
     index = next;
     segment[j] = static_cast<float>(gain) * readLoopedWrapped(signal, cursor, read.fraction);
+  }
+}
+
+// The chunk of a turning head, from absolute sample chunk_first: the ears of
+// the previous pose blended into those of the current one by a raised cosine
+// w = (1 - cos(pi u)) / 2, u = (j + 1) / total, from 0 to 1, the cosine by
+// rotating a phasor, one step per sample; written into the ears (the direct
+// sound) or added to them (the room's part).
+inline void blendPoses(const Samples (&outputs)[2][2], int history, int chunk, int64_t chunk_first, int64_t first,
+                       int total, float* const ears[2], bool add) {
+  const std::complex<double> step = std::polar(1.0, kPi / total);
+  std::complex<double> phasor = std::polar(1.0, kPi * progressAt(chunk_first, first, total));
+  for (int j = 0; j < chunk; ++j) {
+    const float w = static_cast<float>(0.5 - 0.5 * phasor.real());
+    phasor *= step;
+    for (int ear = 0; ear < 2; ++ear) {
+      const float blended = (1 - w) * outputs[0][ear][history + j] + w * outputs[1][ear][history + j];
+      ears[ear][j] = add ? ears[ear][j] + blended : blended;
+    }
   }
 }
 
