@@ -7,31 +7,15 @@
 #include <gtest/gtest.h>
 
 #include "lib/scenario/sight_lines.hpp"
+#include "tests/lib/scenario/solid_objects.hpp"
 
 namespace beft::scenario {
 namespace {
 
-Object solid(const std::string& id, const std::string& label, double x, double y, double sx, double sy, double sz,
-             double z = 0) {
-  Object object;
-  object.id = id;
-  object.label = label;
-  object.x = x;
-  object.y = y;
-  object.z = z;
-  object.visual = Visual{};
-  object.visual->size_x = sx;
-  object.visual->size_y = sy;
-  object.visual->size_z = sz;
-  return object;
-}
+using test_objects::solid;
 
 Object pole(const std::string& id, double x, double y, double radius, double height) {
-  Object object = solid(id, "wall", x, y, 0, 0, 0);
-  object.visual->shape = Visual::Shape::Cylinder;
-  object.visual->radius = radius;
-  object.visual->height = height;
-  return object;
+  return test_objects::cylinder(id, "wall", x, y, radius, height);
 }
 
 // A 20 x 20 m world, the robot at (2, 2), a person at (15, 15).

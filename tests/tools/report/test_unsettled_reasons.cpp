@@ -6,24 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/lib/scenario/solid_objects.hpp"
 #include "tools/report/unsettled_reasons.hpp"
 
 namespace beft::report {
 namespace {
 
-scenario::Object solid(const std::string& id, const std::string& label, double x, double y, double sx, double sy,
-                       double sz) {
-  scenario::Object object;
-  object.id = id;
-  object.label = label;
-  object.x = x;
-  object.y = y;
-  object.visual = scenario::Visual{};
-  object.visual->size_x = sx;
-  object.visual->size_y = sy;
-  object.visual->size_z = sz;
-  return object;
-}
+using scenario::test_objects::solid;
 
 TEST(UnsettledReasons, WhetherAnyPlaceSeesItAndWhatTheExplorationSaid) {
   scenario::Scenario s;
