@@ -126,6 +126,27 @@ async function livePage(checks, browser) {
     const text = await page.$eval("#tooltip", (e) => e.textContent);
     assert.match(text, /^b: person .*verified/);
   });
+  await checks.run("a flood of log lines and task stacks is drawn in batches: the last 500 lines, the last stack", async () => {
+    const before = await pageState(page);
+    for (let i = 0; i < 1200; i++) {
+      bridge.publish("/log", { timestamp: { sec: 5 + i, nsec: 0 }, level: 2, message: `line ${i}`, name: "flood" });
+      bridge.publish("TASK_STACK", { tick: 43 + i, tasks: [{ kind: "goto", x: i, y: 6, status: 1, priority: 1, origin: "user", object_id: "" }] });
+    }
+    await waitForState(page, (s, expected) => s.logLines === expected, before.logLines + 1200);
+    await page.waitForFunction(() => {
+      const lines = document.querySelectorAll("#log li");
+      return lines.length === 500 && lines[lines.length - 1].textContent.endsWith("line 1199") &&
+        document.querySelector("#tasks li").textContent.includes("(1199.0, 6.0)");
+    }, { timeout: 20000 });
+    const first = await page.$eval("#log li", (e) => e.textContent);
+    assert.ok(first.endsWith("line 700"), first);
+  });
+  await checks.run("WebGL drawn in software (SwiftShader here) is told and drawn without multisampling", async () => {
+    const state = await pageState(page);
+    assert.equal(state.webGlInSoftware, true);
+    const antialias = await page.evaluate(() => document.querySelector("#scene canvas").getContext("webgl2").getContextAttributes().antialias);
+    assert.equal(antialias, false);
+  });
   await checks.run("the page runs without errors and counts its frames", async () => {
     const state = await waitForState(page, (s) => s.frameTimeMs > 0);
     console.log(`frame time with 450 objects: ${state.frameTimeMs.toFixed(1)} ms`);

@@ -11,7 +11,7 @@ import { HypothesisLayer, HypothesisList, HYPOTHESIS_STATES } from "./hypothesis
 import { AudioLayer } from "./audio_layer.js";
 import { WeightsPlot } from "./weights_plot.js";
 import { CameraView } from "./camera_view.js";
-import { LogList, showMarking, showTaskStack } from "./panels.js";
+import { LatestMessagePanel, LogList, showMarking, showTaskStack } from "./panels.js";
 import { NetDrawing } from "./net_drawing.js";
 import { Controls, wireButtons } from "./controls.js";
 import { Pointer } from "./pointer.js";
@@ -26,6 +26,11 @@ const byId = (id) => document.getElementById(id);
 // LATEST_ONLY_MS, so that a page on a slow machine keeps up with the rest.
 const LATEST_ONLY = new Set(["/camera/color", "/camera/depth"]);
 const LATEST_ONLY_MS = 250;
+
+// The text panels, the weights plot and the status line are drawn at most
+// this often [ms]: each drawing lays out and paints the page, which at a
+// run's full speed (a hundred messages a second) would take a core.
+const PANEL_MS = 250;
 
 // Hands `text` to the topic's handler; a malformed message costs itself only.
 function handleText(handle, topic, text) {
@@ -71,12 +76,9 @@ function createParts(state) {
     colour: new CameraView(byId("camera-colour"), byId("camera-colour-caption")),
     depth: new CameraView(byId("camera-depth"), byId("camera-depth-caption")),
     log: new LogList(byId("log")),
-    showTasks: (message) => showTaskStack(byId("tasks"), message),
+    tasks: new LatestMessagePanel((message) => showTaskStack(byId("tasks"), message)),
     // On the drawn net when there is one; the marking is listed as well.
-    showMarking: (message) => {
-      net.show(message);
-      showMarking(byId("marking"), message);
-    },
+    marking: new LatestMessagePanel((message) => showMarking(byId("marking"), message)),
   };
 }
 
@@ -94,6 +96,7 @@ function showLegend() {
 function start() {
   const state = createPageState();
   const parts = createParts(state);
+  state.webGlInSoftware = parts.view.software;
   const timeline = new Timeline(state, byId("seek"));
   const handlers = topicHandlers(state, parts);
   const latest = new LatestOnly();
@@ -137,17 +140,29 @@ function start() {
 
 function animate(state, parts, pointer, timeline, latest) {
   const clock = new FrameClock(state);
+  let lastPanelMs = -Infinity;
   const frame = (now) => {
     clock.tick(now);
     latest.drain(now);
     pointer.update();
-    parts.weights.draw();
     if (parts.view.render(now)) state.renders++;
-    timeline.draw();
-    mirrorIntoDom(state);
+    if (now - lastPanelMs >= PANEL_MS) {
+      lastPanelMs = now;
+      drawPanels(state, parts, timeline);
+    }
     requestAnimationFrame(frame);
   };
   requestAnimationFrame(frame);
+}
+
+function drawPanels(state, parts, timeline) {
+  parts.weights.draw();
+  parts.tasks.draw();
+  parts.marking.draw();
+  parts.net.draw();
+  parts.log.draw();
+  timeline.draw();
+  mirrorIntoDom(state);
 }
 
 start();

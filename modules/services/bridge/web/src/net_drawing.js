@@ -36,6 +36,13 @@ function tokenLabel(group) {
   return label;
 }
 
+// Place id -> tokens of a MARKING.
+function placeTokens(message) {
+  const tokens = new Map();
+  (message.place_ids || []).forEach((id, i) => tokens.set(id, (message.tokens || [])[i] || 0));
+  return tokens;
+}
+
 export class NetDrawing {
   constructor(box, state) {
     this.box = box;
@@ -43,6 +50,7 @@ export class NetDrawing {
     this.places = new Map();  // place id -> <g>
     this.transitions = [];    // [{group, expert}]
     this.lastMarking = null;
+    this.markingDrawn = false;
     box.addEventListener("click", () => box.classList.toggle("expanded"));
   }
 
@@ -64,15 +72,31 @@ export class NetDrawing {
     this.box.replaceChildren(drawing);
     this.state.netDrawn = true;
     if (this.lastMarking) this.show(this.lastMarking);
+    this.draw();
     return true;
   }
 
-  // Lights a MARKING on the drawing; false when there is no drawing yet.
+  // Takes a MARKING: the page's state (what is lit and marked) follows every
+  // one; the drawing is lit by draw(), on the page's panel cadence.
   show(message) {
     this.lastMarking = message;
+    this.markingDrawn = false;
     if (!this.state.netDrawn) return false;
-    const tokens = new Map();
-    (message.place_ids || []).forEach((id, i) => tokens.set(id, (message.tokens || [])[i] || 0));
+    const running = new Set(message.running || []);
+    const lit = this.transitions.filter(({ expert }) => expert !== "" && running.has(expert)).map((t) => t.expert);
+    this.state.netLit = lit;
+    for (const expert of lit) if (!this.state.netLitSeen.includes(expert)) this.state.netLitSeen.push(expert);
+    const tokens = placeTokens(message);
+    this.state.netMarked = [...this.places.keys()].filter((id) => (tokens.get(id) || 0) > 0);
+    return true;
+  }
+
+  // Lights the last MARKING on the drawing, once.
+  draw() {
+    const message = this.lastMarking;
+    if (!message || this.markingDrawn || !this.state.netDrawn) return;
+    this.markingDrawn = true;
+    const tokens = placeTokens(message);
     for (const [id, group] of this.places) {
       const count = tokens.get(id) || 0;
       group.classList.toggle("marked", count > 0);
@@ -80,15 +104,6 @@ export class NetDrawing {
       if (label) label.textContent = count > 0 ? (count > 4 ? String(count) : "\u25CF".repeat(count)) : "";
     }
     const running = new Set(message.running || []);
-    const lit = [];
-    for (const { group, expert } of this.transitions) {
-      const firing = expert !== "" && running.has(expert);
-      group.classList.toggle("lit", firing);
-      if (firing) lit.push(expert);
-    }
-    this.state.netLit = lit;
-    for (const expert of lit) if (!this.state.netLitSeen.includes(expert)) this.state.netLitSeen.push(expert);
-    this.state.netMarked = [...this.places.keys()].filter((id) => (tokens.get(id) || 0) > 0);
-    return true;
+    for (const { group, expert } of this.transitions) group.classList.toggle("lit", expert !== "" && running.has(expert));
   }
 }

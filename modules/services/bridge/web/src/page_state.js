@@ -38,6 +38,7 @@ export function createPageState() {
     frameTimeMs: 0,          // rolling mean of requestAnimationFrame intervals
     frames: 0,               // animation frames
     renders: 0,              // of them, those that drew the 3-D view
+    webGlInSoftware: false,  // WebGL drawn on the CPU: fewer, cheaper 3-D frames
     logTimeNs: "0",          // the server's time (Time frames), or the last receive time
     logStartNs: "0",
     logEndNs: "0",

@@ -38,22 +38,59 @@ export function showTaskStack(list, message) {
 }
 
 // foxglove.Log: {timestamp: {sec, nsec}, level, message, name, file, line}.
+// Lines are taken as they come and put on the page by draw(), in one batch:
+// a run at full speed logs hundreds of lines a second, and laying the page
+// out for each would take a core from the run beside it.
 export class LogList {
   constructor(list) {
     this.list = list;
     this.count = 0;
+    this.pending = [];
   }
 
   add(entry) {
-    const stick = this.list.scrollTop + this.list.clientHeight >= this.list.scrollHeight - 4;
-    const level = LOG_LEVEL[entry.level] || "info";
-    const seconds = entry.timestamp ? Number(entry.timestamp.sec) + Number(entry.timestamp.nsec) / 1e9 : NaN;
-    const line = element("li", `log ${level}`);
-    line.append(element("span", "when", when(seconds)), element("span", "who", entry.name || ""), element("span", "what", entry.message || ""));
-    this.list.append(line);
-    while (this.list.childElementCount > MAX_LOG_LINES) this.list.firstElementChild.remove();
+    this.pending.push(entry);
+    if (this.pending.length > 2 * MAX_LOG_LINES) this.pending.splice(0, this.pending.length - MAX_LOG_LINES);
     this.count++;
+  }
+
+  draw() {
+    if (!this.pending.length) return;
+    const stick = this.list.scrollTop + this.list.clientHeight >= this.list.scrollHeight - 4;
+    const lines = document.createDocumentFragment();
+    for (const entry of this.pending.slice(-MAX_LOG_LINES)) lines.append(logLine(entry));
+    this.pending = [];
+    this.list.append(lines);
+    while (this.list.childElementCount > MAX_LOG_LINES) this.list.firstElementChild.remove();
     if (stick) this.list.scrollTop = this.list.scrollHeight;
+  }
+}
+
+function logLine(entry) {
+  const level = LOG_LEVEL[entry.level] || "info";
+  const seconds = entry.timestamp ? Number(entry.timestamp.sec) + Number(entry.timestamp.nsec) / 1e9 : NaN;
+  const line = element("li", `log ${level}`);
+  line.append(element("span", "when", when(seconds)), element("span", "who", entry.name || ""), element("span", "what", entry.message || ""));
+  return line;
+}
+
+// A panel drawn from the newest message it was given (the task stack, the
+// marking: each message holds the whole state), once, when the page draws.
+export class LatestMessagePanel {
+  constructor(drawMessage) {
+    this.drawMessage = drawMessage;
+    this.pending = null;
+  }
+
+  set(message) {
+    this.pending = message;
+  }
+
+  draw() {
+    if (this.pending === null) return;
+    const message = this.pending;
+    this.pending = null;
+    this.drawMessage(message);
   }
 }
 

@@ -3,16 +3,37 @@
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 
-// The shortest time between two frames drawn for the run's changes [ms].
+// The shortest time between two frames drawn for the run's changes [ms]:
+// with a GPU, and when WebGL is drawn in software on the CPU (SwiftShader,
+// llvmpipe: a frame of the full view costs tens of milliseconds of a core
+// that the run beside the page needs).
 const DATA_FRAME_MS = 100;
+const SOFTWARE_DATA_FRAME_MS = 250;
+
+// Whether this browser draws WebGL in software, asked of a context of its own
+// (the renderer's antialiasing is chosen before its context exists).
+function webGlInSoftware() {
+  const canvas = document.createElement("canvas");
+  const gl = canvas.getContext("webgl2") || canvas.getContext("webgl");
+  if (!gl) return false;
+  const info = gl.getExtension("WEBGL_debug_renderer_info");
+  const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  const lose = gl.getExtension("WEBGL_lose_context");
+  if (lose) lose.loseContext();
+  return /swiftshader|llvmpipe|softpipe|software/i.test(name);
+}
 
 THREE.Object3D.DEFAULT_UP.set(0, 0, 1);
 
 export class SceneView {
   constructor(container) {
     this.container = container;
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+    // In software: no multisampling and one pixel per CSS pixel, a quarter
+    // of the work or less, and fewer frames.
+    this.software = webGlInSoftware();
+    this.dataFrameMs = this.software ? SOFTWARE_DATA_FRAME_MS : DATA_FRAME_MS;
+    this.renderer = new THREE.WebGLRenderer({ antialias: !this.software, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(this.software ? 1 : Math.min(window.devicePixelRatio || 1, 2));
     container.appendChild(this.renderer.domElement);
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(0x1b1f24);
@@ -92,7 +113,7 @@ export class SceneView {
   }
 
   // What a person does (orbit, zoom, resize) is drawn on the next frame;
-  // what the run changes (fromData) at most every DATA_FRAME_MS: a run at
+  // what the run changes (fromData) at most every dataFrameMs: a run at
   // full speed changes the scene a hundred times a second, and drawing each
   // would take a core from the run beside it.
   invalidate(fromData = false) {
@@ -102,7 +123,7 @@ export class SceneView {
 
   render(nowMs) {
     this.controls.update();
-    if (this.dataChanged && nowMs - this.lastRenderMs >= DATA_FRAME_MS) {
+    if (this.dataChanged && nowMs - this.lastRenderMs >= this.dataFrameMs) {
       this.needsRender = true;
       this.dataChanged = false;
     }

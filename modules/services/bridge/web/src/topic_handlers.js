@@ -37,7 +37,7 @@ export function topicHandlers(state, parts) {
   });
   on("DYNAMIC_WEIGHTS", (m) => parts.weights.add(m));
   on("TASK_STACK", (m) => {
-    parts.showTasks(m);
+    parts.tasks.set(m);
     state.taskCount = (m.tasks || []).length;
   });
   on("PLAN_RESULT", (m) => {
@@ -47,7 +47,8 @@ export function topicHandlers(state, parts) {
   on("OBSTACLE_MAP", (m) => parts.map.keyframe(m));
   on("OBSTACLE_MAP_CHANGES", (m) => parts.map.changes(m));
   on("MARKING", (m) => {
-    parts.showMarking(m);
+    parts.net.show(m);
+    parts.marking.set(m);
     state.markingStep = m.step;
   });
   on("RUN_STATUS", (m) => {
