@@ -78,6 +78,16 @@ void checkUnique(std::set<uint32_t>& seen, uint32_t id, const std::string& where
 
 std::string at(const std::string& list, std::size_t index) { return list + "[" + std::to_string(index) + "]"; }
 
+// The optional throttleMs of a subscription (protocol.hpp), 0..kMaxThrottleMs.
+uint32_t throttleOf(const json& entry, const std::string& where) {
+  if (!entry.contains("throttleMs")) return 0;
+  const uint32_t ms = idValue(entry.at("throttleMs"), where + ".throttleMs");
+  if (ms > kMaxThrottleMs)
+    refuse(where + ".throttleMs = " + std::to_string(ms) + " is more than the " + std::to_string(kMaxThrottleMs) +
+           " allowed");
+  return ms;
+}
+
 Subscribe parseSubscribe(const json& message) {
   const json& list = listOf(message, "subscriptions", "subscribe");
   Subscribe subscribe;
@@ -86,6 +96,7 @@ Subscribe parseSubscribe(const json& message) {
     const std::string where = at("subscribe.subscriptions", i);
     const json& entry = entryOf(list, i, where);
     SubscriptionRequest request{idOf(entry, "id", where), idOf(entry, "channelId", where)};
+    request.throttle_ms = throttleOf(entry, where);
     checkUnique(ids, request.id, where + ".id");
     checkUnique(channels, request.channel_id, where + ".channelId");
     subscribe.subscriptions.push_back(request);

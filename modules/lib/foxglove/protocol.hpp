@@ -75,9 +75,18 @@ std::string timeFrame(uint64_t time_ns);
 
 // --- client messages ---
 
+// At most this long a subscription may ask its messages to be held [ms].
+constexpr uint32_t kMaxThrottleMs = 10000;
+
 struct SubscriptionRequest {
   uint32_t id = 0;          // chosen by the client
   uint32_t channel_id = 0;  // a channel the server advertised
+  // BEFT's extension, after rosbridge's throttle_rate: the shortest time
+  // between two messages sent on this subscription [ms], the newest held
+  // meanwhile and sent when the time is up; 0 (or absent, as from any other
+  // Foxglove client): every message. Meant for channels whose message holds
+  // the whole state (a viewer drawing at 10 Hz needs no more).
+  uint32_t throttle_ms = 0;
 };
 struct Subscribe {
   std::vector<SubscriptionRequest> subscriptions;

@@ -235,6 +235,7 @@ void BridgeProcess::onTimer(service::Context& context) {
     if (!lines.empty()) hub_->publishLogLines(lines, static_cast<uint64_t>(wallMicros()) * 1000);
   }
   hub_->publishDerived();
+  hub_->sendThrottled();
   if (now >= next_drop_report_) {
     next_drop_report_ = now + std::chrono::seconds(1);
     hub_->reportDrops();

@@ -167,8 +167,38 @@ void FoxgloveHub::sendData(Topic& topic, const std::string& payload, uint64_t re
     if (found == clients_.end()) continue;
     foxglove::Frame frame{foxglove::messageDataFrame(subscription, receive_ns, payload), true, std::nullopt};
     if (topic.latest_wins) frame.latest_wins_key = topic.channel.id;
+    if (holdForThrottle(*found->second, topic.channel.id, frame)) continue;
     found->second->queue.push(std::move(frame));
     wake(client_id);
+  }
+}
+
+// True when the client's subscription to the channel is throttled and sent
+// too recently: the frame is held (replacing any held before it) instead.
+bool FoxgloveHub::holdForThrottle(Client& client, uint32_t channel_id, foxglove::Frame& frame) {
+  const auto found = client.throttles.find(channel_id);
+  if (found == client.throttles.end()) return false;
+  Throttle& throttle = found->second;
+  const auto now = std::chrono::steady_clock::now();
+  if (now < throttle.next_send) {
+    throttle.held = std::move(frame);
+    return true;
+  }
+  throttle.next_send = now + throttle.interval;
+  return false;
+}
+
+void FoxgloveHub::sendThrottled(std::chrono::steady_clock::time_point now) {
+  for (auto& [id, client] : clients_) {
+    bool sent = false;
+    for (auto& [channel_id, throttle] : client->throttles) {
+      if (!throttle.held || now < throttle.next_send) continue;
+      client->queue.push(std::move(*throttle.held));
+      throttle.held.reset();
+      throttle.next_send = now + throttle.interval;
+      sent = true;
+    }
+    if (sent) wake(id);
   }
 }
 
@@ -265,6 +295,7 @@ void FoxgloveHub::subscribe(Client& client, const foxglove::Subscribe& request) 
     }
     client.subscriptions[wanted.id] = wanted.channel_id;
     topic->second.subscribers[client.info.id] = wanted.id;
+    if (wanted.throttle_ms > 0) client.throttles[wanted.channel_id].interval = std::chrono::milliseconds(wanted.throttle_ms);
     sendKept(client, topic->second, wanted.id);
   }
 }
@@ -309,6 +340,7 @@ void FoxgloveHub::unsubscribe(Client& client, const foxglove::Unsubscribe& reque
       continue;
     }
     topics_.at(found->second).subscribers.erase(client.info.id);
+    client.throttles.erase(found->second);
     client.subscriptions.erase(found);
   }
 }

@@ -10,10 +10,12 @@
 // untrusted: anything wrong is answered with a status message.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <deque>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -68,6 +70,9 @@ class FoxgloveHub : public SessionHandler {
   void broadcastStatus(int level, const std::string& message, const std::string& id = "");
   // Tells clients who lost frames since the last call; call about once a second.
   void reportDrops();
+  // Sends what throttled subscriptions (throttleMs, protocol.hpp) held and
+  // whose time is up at `now`; call every few tens of milliseconds.
+  void sendThrottled(std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now());
   // Forgets the kept messages (a seek): what a new subscriber is sent first.
   void forgetKept() { kept_.clear(); }
 
@@ -93,11 +98,18 @@ class FoxgloveHub : public SessionHandler {
     bool latest_wins = false;
     std::map<uint32_t, uint32_t> subscribers;  // client -> its subscription id
   };
+  // A subscription's throttleMs: the newest message held until next_send.
+  struct Throttle {
+    std::chrono::milliseconds interval{0};
+    std::chrono::steady_clock::time_point next_send{};
+    std::optional<foxglove::Frame> held;
+  };
   struct Client {
     ClientInfo info;
     foxglove::SendQueue queue;
     std::map<uint32_t, uint32_t> subscriptions;      // subscription id -> channel id
     std::map<uint32_t, std::string> published;       // client channel id -> control topic
+    std::map<uint32_t, Throttle> throttles;          // channel id -> its subscription's throttle
     std::size_t queued_text = 0;
     uint64_t dropped = 0;                            // not yet told
     bool dropping = false;                           // closed for not reading: nothing more is queued
@@ -115,6 +127,7 @@ class FoxgloveHub : public SessionHandler {
   void sendText(Client& client, const std::string& text);
   void sendStatus(Client& client, int level, const std::string& message, const std::string& id = "");
   void sendData(Topic& topic, const std::string& payload, uint64_t receive_ns);
+  bool holdForThrottle(Client& client, uint32_t channel_id, foxglove::Frame& frame);
   void sendKept(Client& client, Topic& topic, uint32_t subscription);
   void wake(uint32_t client);
 

@@ -89,6 +89,13 @@ TEST(FoxgloveClientMessages, ValidMessagesOfEveryKind) {
   ASSERT_EQ(requests.size(), 2u);
   EXPECT_EQ(requests[1].id, 4294967295u);
   EXPECT_EQ(requests[1].channel_id, 5u);
+  EXPECT_EQ(requests[1].throttle_ms, 0u);  // every message, as any Foxglove client expects
+
+  const ClientMessage throttled = parseClientText(
+      R"({"op":"subscribe","subscriptions":[{"id":1,"channelId":3,"throttleMs":50},{"id":2,"channelId":4,"throttleMs":10000}]})");
+  ASSERT_TRUE(std::holds_alternative<Subscribe>(throttled)) << reasonOf(throttled);
+  EXPECT_EQ(std::get<Subscribe>(throttled).subscriptions[0].throttle_ms, 50u);
+  EXPECT_EQ(std::get<Subscribe>(throttled).subscriptions[1].throttle_ms, 10000u);
 
   const ClientMessage unsubscribe = parseClientText(R"({"op":"unsubscribe","subscriptionIds":[0,1]})");
   ASSERT_TRUE(std::holds_alternative<Unsubscribe>(unsubscribe));
@@ -141,6 +148,12 @@ TEST(FoxgloveClientMessages, EveryTextRefusalSaysWhy) {
                 "subscriptions[1].id = 1 repeats an earlier entry");
   expectRefused(R"({"op":"subscribe","subscriptions":[{"id":1,"channelId":1},{"id":2,"channelId":1}]})",
                 "subscriptions[1].channelId = 1 repeats");
+  expectRefused(R"({"op":"subscribe","subscriptions":[{"id":1,"channelId":1,"throttleMs":10001}]})",
+                "subscriptions[0].throttleMs = 10001 is more than the 10000 allowed");
+  expectRefused(R"({"op":"subscribe","subscriptions":[{"id":1,"channelId":1,"throttleMs":-5}]})",
+                "subscriptions[0].throttleMs = -5 is outside");
+  expectRefused(R"({"op":"subscribe","subscriptions":[{"id":1,"channelId":1,"throttleMs":"50"}]})",
+                "subscriptions[0].throttleMs is not an integer");
   expectRefused(R"({"op":"unsubscribe","subscriptionIds":[1,true]})",
                 "unsubscribe.subscriptionIds[1] is not an integer");
   expectRefused(R"({"op":"unadvertise","channelIds":[3,3]})", "unadvertise.channelIds[1] = 3 repeats");

@@ -15,6 +15,7 @@ export class FakeBridge {
     this.channels = topics.map((topic, i) => ({ id: i + 1, topic, encoding: "json", schemaName: topic, schema: "{}", schemaEncoding: "jsonschema" }));
     this.info = info;
     this.subscriptions = new Map();  // channel id -> subscription id
+    this.throttles = new Map();      // topic -> the throttleMs its subscription asked for (0: none)
     this.clientChannels = new Map(); // client channel id -> topic
     this.received = [];              // {topic, message} the page published
     this.sockets = new Set();
@@ -50,7 +51,12 @@ export class FakeBridge {
   }
 
   clientText(message) {
-    if (message.op === "subscribe") for (const s of message.subscriptions) this.subscriptions.set(s.channelId, s.id);
+    if (message.op === "subscribe")
+      for (const s of message.subscriptions) {
+        this.subscriptions.set(s.channelId, s.id);
+        const channel = this.channels.find((c) => c.id === s.channelId);
+        if (channel) this.throttles.set(channel.topic, s.throttleMs || 0);
+      }
     if (message.op === "advertise") for (const c of message.channels) this.clientChannels.set(c.id, c.topic);
   }
 

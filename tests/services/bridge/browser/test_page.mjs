@@ -78,6 +78,12 @@ async function livePage(checks, browser) {
     for (let i = 0; i < 50 && !TOPICS.every((t) => bridge.subscribed(t)); i++) await sleep(100);
     assert.deepEqual(TOPICS.filter((t) => !bridge.subscribed(t)), []);
   });
+  await checks.run("asks the bridge to throttle whole-state topics only, never keyframes, weights or log lines", async () => {
+    for (const topic of ["ROBOT_STATE", "MARKING", "TASK_STACK", "HYPOTHESIS_CHANGES", "OBSTACLE_MAP_CHANGES"])
+      assert.ok(bridge.throttles.get(topic) > 0 && bridge.throttles.get(topic) <= 100, `${topic}: ${bridge.throttles.get(topic)}`);
+    for (const topic of ["GT_OBJECTS", "HYPOTHESES", "OBSTACLE_MAP", "DYNAMIC_WEIGHTS", "/log", "/camera/color"])
+      assert.equal(bridge.throttles.get(topic), 0, topic);
+  });
   sendScene(bridge);
   await checks.run("draws the 450 objects, the robot and the hypotheses", async () => {
     const state = await waitForState(page, (s) => s.objectCount === 450 && s.robot && s.hypothesisCount === 4);

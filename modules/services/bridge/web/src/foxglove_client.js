@@ -17,7 +17,7 @@ export class FoxgloveClient {
     this.handlers = handlers;
     this.channelsById = new Map();   // server channel id -> channel
     this.subscriptions = new Map();  // subscription id -> channel
-    this.wantedTopics = new Set();
+    this.wantedTopics = new Map();   // topic -> throttleMs (0: every message)
     this.clientChannels = new Map(); // topic -> client channel id
     this.nextSubscriptionId = 1;
     this.nextClientChannelId = 1;
@@ -46,9 +46,12 @@ export class FoxgloveClient {
     setTimeout(() => this.connect(), RECONNECT_MS);
   }
 
-  // Topics to subscribe whenever the server advertises them.
-  want(topics) {
-    for (const topic of topics) this.wantedTopics.add(topic);
+  // Topics to subscribe whenever the server advertises them. With
+  // throttleMs (BEFT's extension of subscribe, after rosbridge's
+  // throttle_rate) the bridge sends at most one message per throttleMs, the
+  // newest: for topics whose message holds the whole state.
+  want(topics, throttleMs = 0) {
+    for (const topic of topics) this.wantedTopics.set(topic, throttleMs);
   }
 
   received(data) {
@@ -82,7 +85,8 @@ export class FoxgloveClient {
       if (!this.wantedTopics.has(channel.topic)) continue;
       const id = this.nextSubscriptionId++;
       this.subscriptions.set(id, channel);
-      subscribe.push({ id, channelId: channel.id });
+      const throttleMs = this.wantedTopics.get(channel.topic);
+      subscribe.push(throttleMs > 0 ? { id, channelId: channel.id, throttleMs } : { id, channelId: channel.id });
     }
     if (subscribe.length) this.sendJson({ op: "subscribe", subscriptions: subscribe });
     this.handlers.onAdvertise?.(channels);

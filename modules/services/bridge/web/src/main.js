@@ -27,6 +27,15 @@ const byId = (id) => document.getElementById(id);
 const LATEST_ONLY = new Set(["/camera/color", "/camera/depth"]);
 const LATEST_ONLY_MS = 250;
 
+// Topics whose every message holds the whole of what it shows (changes are
+// relative to the last keyframe): the bridge need send only the newest every
+// WHOLE_STATE_THROTTLE_MS (a run at full speed sends the marking ten times a
+// tick). The keyframes, the weights (a plot over time) and the log lines
+// come whole.
+const WHOLE_STATE = new Set(["ROBOT_STATE", "GT_VERSION", "MARKING", "TASK_STACK", "AUDIO", "PLAN_RESULT",
+  "HYPOTHESIS_CHANGES", "OBSTACLE_MAP_CHANGES", "RUN_STATUS", "RUN_CONTROL_STATE"]);
+const WHOLE_STATE_THROTTLE_MS = 50;
+
 // The text panels, the weights plot and the status line are drawn at most
 // this often [ms]: each drawing lays out and paints the page, which at a
 // run's full speed (a hundred messages a second) would take a core.
@@ -125,7 +134,9 @@ function start() {
     },
     onTime: (ns) => timeline.time(ns),
   });
-  client.want([...handlers.keys()].flatMap((topic) => [topic, `/${topic}`]));
+  const withSlash = (topics) => topics.flatMap((topic) => [topic, `/${topic}`]);
+  client.want(withSlash([...handlers.keys()].filter((topic) => !WHOLE_STATE.has(topic))));
+  client.want(withSlash([...WHOLE_STATE]), WHOLE_STATE_THROTTLE_MS);
   const controls = new Controls(client);
   wireButtons(controls, timeline);
   const pointer = new Pointer(parts.view, parts, controls, byId("tooltip"));
