@@ -61,8 +61,7 @@ export class CameraView {
   showRaw(image, bytes) {
     const rgba = rawToRgba(image, bytes);
     if (!rgba) return this.say(`${image.encoding}: not shown`);
-    this.canvas.width = image.width;
-    this.canvas.height = image.height;
+    this.fitCanvas(image.width, image.height);
     this.canvas.getContext("2d").putImageData(new ImageData(rgba, image.width, image.height), 0, 0);
     this.shown(`${image.width}×${image.height} ${image.encoding}`);
   }
@@ -72,13 +71,19 @@ export class CameraView {
     const type = image.format.includes("png") ? "image/png" : "image/jpeg";
     createImageBitmap(new Blob([bytes], { type }))
       .then((bitmap) => {
-        this.canvas.width = bitmap.width;
-        this.canvas.height = bitmap.height;
+        this.fitCanvas(bitmap.width, bitmap.height);
         this.canvas.getContext("2d").drawImage(bitmap, 0, 0);
         this.shown(`${bitmap.width}×${bitmap.height} ${image.format}`);
       })
       .catch(() => this.say(`${image.format}: cannot decode`))
       .finally(() => (this.busy = false));
+  }
+
+  // Setting a canvas's size, even to the size it has, reallocates its
+  // pixels (on the GPU, or in software WebGL's memory): only when it changes.
+  fitCanvas(width, height) {
+    if (this.canvas.width !== width) this.canvas.width = width;
+    if (this.canvas.height !== height) this.canvas.height = height;
   }
 
   shown(text) {

@@ -106,6 +106,10 @@ export class SceneView {
   resize() {
     const width = Math.max(1, this.container.clientWidth);
     const height = Math.max(1, this.container.clientHeight);
+    // A new size reallocates the drawing buffer: only when it changed.
+    if (width === this.width && height === this.height) return;
+    this.width = width;
+    this.height = height;
     this.renderer.setSize(width, height, false);
     this.camera.aspect = width / height;
     this.camera.updateProjectionMatrix();

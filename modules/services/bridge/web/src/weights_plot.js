@@ -37,8 +37,11 @@ export class WeightsPlot {
     if (!this.dirty) return;
     this.dirty = false;
     const canvas = this.canvas;
-    const width = (canvas.width = canvas.clientWidth || 300);
-    const height = (canvas.height = canvas.clientHeight || 150);
+    const width = canvas.clientWidth || 300;
+    const height = canvas.clientHeight || 150;
+    // A new size reallocates the canvas: set only when the layout changed it.
+    if (canvas.width !== width) canvas.width = width;
+    if (canvas.height !== height) canvas.height = height;
     const g = canvas.getContext("2d");
     const pad = { left: 30, right: 90, top: 6, bottom: 16 };
     const plotW = width - pad.left - pad.right;
