@@ -103,8 +103,9 @@ void FoxgloveHub::onRunMessage(const std::string& channel, const uint8_t* data, 
   kept.receive_ns = receive_ns;
   if (topic.subscribers.empty()) return;
   try {
-    const auto json = foxglove::lcmToJson(foxglove::beftTypeSet(), *topic.type, data, size);
-    sendData(topic, foxglove::dumpJson(json), receive_ns);
+    // Converted only if some subscriber is sent it now (not held by its throttle).
+    sendData(topic, [&] { return foxglove::dumpJson(foxglove::lcmToJson(foxglove::beftTypeSet(), *topic.type, data, size)); },
+             receive_ns);
   } catch (const std::exception&) {
     // A message that does not decode as its channel's type: the guard counts such refusals for the run.
   }
@@ -116,7 +117,8 @@ void FoxgloveHub::publishDerived() {
     Topic& topic = topics_.at(by_derived_.at(spec.topic));
     if (topic.subscribers.empty()) continue;  // built when someone subscribes
     scene_.clearChanged(spec.topic);
-    if (const auto message = scene_.build(spec.topic)) sendData(topic, foxglove::dumpJson(*message), last_receive_ns_);
+    if (const auto message = scene_.build(spec.topic))
+      sendData(topic, [&] { return foxglove::dumpJson(*message); }, last_receive_ns_);
   }
 }
 
@@ -129,7 +131,7 @@ void FoxgloveHub::publishLogLines(const std::vector<std::string>& lines, uint64_
     // Kept for viewers that come later: a log's processes.log is written before any of them connects.
     recent_log_lines_.push_back({foxglove::dumpJson(message), receive_ns});
     if (recent_log_lines_.size() > kRecentLogLines) recent_log_lines_.pop_front();
-    if (!topic.subscribers.empty()) sendData(topic, recent_log_lines_.back().payload, receive_ns);
+    if (!topic.subscribers.empty()) sendData(topic, [&] { return recent_log_lines_.back().payload; }, receive_ns);
   }
 }
 
@@ -161,44 +163,47 @@ void FoxgloveHub::reportDrops() {
   }
 }
 
-void FoxgloveHub::sendData(Topic& topic, const std::string& payload, uint64_t receive_ns) {
+void FoxgloveHub::sendData(Topic& topic, const std::function<std::string()>& make_payload, uint64_t receive_ns) {
+  std::optional<std::string> payload;
   for (const auto& [client_id, subscription] : topic.subscribers) {
     const auto found = clients_.find(client_id);
     if (found == clients_.end()) continue;
-    foxglove::Frame frame{foxglove::messageDataFrame(subscription, receive_ns, payload), true, std::nullopt};
+    if (topic.source != Source::kLog && holdForThrottle(*found->second, topic.channel.id)) continue;
+    if (!payload) payload = make_payload();
+    foxglove::Frame frame{foxglove::messageDataFrame(subscription, receive_ns, *payload), true, std::nullopt};
     if (topic.latest_wins) frame.latest_wins_key = topic.channel.id;
-    if (holdForThrottle(*found->second, topic.channel.id, frame)) continue;
     found->second->queue.push(std::move(frame));
     wake(client_id);
   }
 }
 
-// True when the client's subscription to the channel is throttled and sent
-// too recently: the frame is held (replacing any held before it) instead.
-bool FoxgloveHub::holdForThrottle(Client& client, uint32_t channel_id, foxglove::Frame& frame) {
+// True when the client's subscription to the channel is throttled and was
+// sent too recently: it is marked to be sent the channel's newest message
+// when its time is up (sendThrottled), and nothing is converted now.
+bool FoxgloveHub::holdForThrottle(Client& client, uint32_t channel_id) {
   const auto found = client.throttles.find(channel_id);
   if (found == client.throttles.end()) return false;
   Throttle& throttle = found->second;
   const auto now = std::chrono::steady_clock::now();
   if (now < throttle.next_send) {
-    throttle.held = std::move(frame);
+    throttle.pending = true;
     return true;
   }
   throttle.next_send = now + throttle.interval;
+  throttle.pending = false;
   return false;
 }
 
 void FoxgloveHub::sendThrottled(std::chrono::steady_clock::time_point now) {
-  for (auto& [id, client] : clients_) {
-    bool sent = false;
+  for (auto& [client_id, client] : clients_) {
     for (auto& [channel_id, throttle] : client->throttles) {
-      if (!throttle.held || now < throttle.next_send) continue;
-      client->queue.push(std::move(*throttle.held));
-      throttle.held.reset();
+      if (!throttle.pending || now < throttle.next_send) continue;
+      throttle.pending = false;
       throttle.next_send = now + throttle.interval;
-      sent = true;
+      Topic& topic = topics_.at(channel_id);
+      const auto subscription = topic.subscribers.find(client_id);
+      if (subscription != topic.subscribers.end()) sendKept(*client, topic, subscription->second);
     }
-    if (sent) wake(id);
   }
 }
 

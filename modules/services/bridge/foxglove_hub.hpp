@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -98,11 +99,12 @@ class FoxgloveHub : public SessionHandler {
     bool latest_wins = false;
     std::map<uint32_t, uint32_t> subscribers;  // client -> its subscription id
   };
-  // A subscription's throttleMs: the newest message held until next_send.
+  // A subscription's throttleMs: nothing sent before next_send; pending when
+  // a message came meanwhile (the channel's newest is sent then).
   struct Throttle {
     std::chrono::milliseconds interval{0};
     std::chrono::steady_clock::time_point next_send{};
-    std::optional<foxglove::Frame> held;
+    bool pending = false;
   };
   struct Client {
     ClientInfo info;
@@ -126,8 +128,9 @@ class FoxgloveHub : public SessionHandler {
   std::string carryOut(const ControlRequest& request);
   void sendText(Client& client, const std::string& text);
   void sendStatus(Client& client, int level, const std::string& message, const std::string& id = "");
-  void sendData(Topic& topic, const std::string& payload, uint64_t receive_ns);
-  bool holdForThrottle(Client& client, uint32_t channel_id, foxglove::Frame& frame);
+  // make_payload: the message as JSON, made at most once and only if a subscriber is sent it now.
+  void sendData(Topic& topic, const std::function<std::string()>& make_payload, uint64_t receive_ns);
+  bool holdForThrottle(Client& client, uint32_t channel_id);
   void sendKept(Client& client, Topic& topic, uint32_t subscription);
   void wake(uint32_t client);
 
