@@ -53,6 +53,7 @@ struct Options {
   int room_trials = 100;
   std::vector<double> room_t60s = {0.0, 0.3, 0.6, 0.9};
   std::vector<int> room_turns = {1, 2};
+  int room_listen_blocks = 1;  // 0.1 s blocks heard at each pose (the audio expert's: one)
   bool json = false;
 };
 
@@ -217,6 +218,10 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
   app.add_option("--room-turns", o.room_turns, "head turns of 20 deg heard in the rooms (1: the protocol's one)")
       ->capture_default_str()
       ->check(CLI::Range(1, 8));
+  app.add_option("--room-listen-blocks", o.room_listen_blocks,
+                 "consecutive 0.1 s blocks heard at each pose of the head in the rooms (1: what the audio expert localises)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10));
   app.add_flag("--json", o.json, "print one JSON object of the figures");
   return beft::parseCommandLine(app, argc, argv);
 }
@@ -299,9 +304,11 @@ void addRooms(const Options& options, const BinauralRenderer& renderer, nlohmann
   report["rooms"] = nlohmann::json::array();
   if (!options.json)
     std::printf("rooms (16 x 12 x 4 m shoebox, talkers 1.5 m away over 360 deg, after one head turn of 20 deg or "
-                "more; the free field with the localiser's defaults, the rooms with LocaliserConfig::reverberant()):\n"
-                "  %6s %8s %7s %5s %7s %9s %8s %8s %8s\n", "T60", "measured", "DRR dB", "turns", "talkers", "within 5",
-                "median", "fb still", "fb turn");
+                "more, listening %.1f s at each pose; the free field with the localiser's defaults, the rooms with "
+                "LocaliserConfig::reverberant()):\n"
+                "  %6s %8s %7s %5s %7s %9s %8s %8s %8s\n",
+                options.room_listen_blocks * trials::kBlock / trials::kRate, "T60", "measured", "DRR dB", "turns",
+                "talkers", "within 5", "median", "fb still", "fb turn");
   // The free field with the localiser's defaults, the rooms with its reverberant profile (the place is known).
   trials::RoomTrials free_field(renderer, BlockLocaliser(InterauralTemplates::fromSofa()), options.sounds_dir);
   trials::RoomTrials rooms(renderer, BlockLocaliser(InterauralTemplates::fromSofa(), LocaliserConfig::reverberant()),
@@ -312,12 +319,14 @@ void addRooms(const Options& options, const BinauralRenderer& renderer, nlohmann
       for (int talkers = 1; talkers <= 3; ++talkers) {
         trials::RoomTrials& trials = t60 > 0 ? rooms : free_field;
         const trials::RoomFigures f =
-            trials.run(room, talkers, options.room_trials, options.seed + 100 * talkers, turns);
+            trials.run(room, talkers, options.room_trials, options.seed + 100 * talkers, turns,
+                       options.room_listen_blocks);
         nlohmann::json entry = {{"t60_s", f.t60_s},
                                 {"t60_measured_s", f.t60_measured_s},
                                 {"drr_db", f.drr_db ? nlohmann::json(*f.drr_db) : nlohmann::json(nullptr)},
                                 {"localiser", t60 > 0 ? "reverberant" : "default"},
                                 {"turns", f.turns},
+                                {"listening_s", f.blocks_per_pose * trials::kBlock / trials::kRate},
                                 {"sources", f.sources},
                                 {"trials", f.trials},
                                 {"within_5deg", f.within_5deg},

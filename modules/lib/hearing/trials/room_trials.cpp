@@ -114,31 +114,51 @@ RoomTrials::RoomTrials(const BinauralRenderer& renderer, BlockLocaliser localise
   }
 }
 
-int64_t RoomTrials::momentAllSpeak(const std::vector<int>& talkers, int sources, int turns,
+int64_t RoomTrials::momentAllSpeak(const std::vector<int>& talkers, int sources, int turns, int blocks_per_pose,
                                    std::mt19937_64& random) const {
   std::uniform_int_distribution<int64_t> start(static_cast<int64_t>(2 * kRate), static_cast<int64_t>(60 * kRate));
+  const int listening = blocks_per_pose * kBlock;
   int64_t first = start(random);
   for (int attempt = 0; attempt < 200; ++attempt, first = start(random)) {
     bool speaking = true;
     for (int s = 0; s < sources; ++s) {
       const auto& signal = signals_[static_cast<std::size_t>(talkers[static_cast<std::size_t>(s)])].samples;
-      for (int b = 0; b <= turns; ++b)
-        speaking = speaking && loopedRms(signal, static_cast<long>(first + b * kBlock), kBlock) > 0.05;
+      for (int pose = 0; pose <= turns; ++pose)
+        speaking = speaking && loopedRms(signal, static_cast<long>(first + pose * listening), listening) > 0.05;
     }
     if (speaking) break;
   }
   return first;
 }
 
-RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint64_t seed, int turns) {
+std::vector<StereoBlock> RoomTrials::hearPoses(BlockRequest request, int64_t first, int turns,
+                                               int blocks_per_pose) const {
+  std::vector<StereoBlock> poses(static_cast<std::size_t>(turns + 1));
+  for (int pose = 0; pose <= turns; ++pose) {
+    StereoBlock& heard = poses[static_cast<std::size_t>(pose)];
+    request.previous.yaw_deg = request.current.yaw_deg = pose * kDefaultResolvingTurnDeg;
+    for (int b = 0; b < blocks_per_pose; ++b) {
+      request.first_sample = first + (pose * blocks_per_pose + b) * kBlock;
+      const StereoBlock block = renderer_.render(request);
+      heard.left.insert(heard.left.end(), block.left.begin(), block.left.end());
+      heard.right.insert(heard.right.end(), block.right.begin(), block.right.end());
+    }
+  }
+  return poses;
+}
+
+RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint64_t seed, int turns,
+                            int blocks_per_pose) {
   if (sources < 1 || sources > static_cast<int>(signals_.size()))
     throw std::invalid_argument("RoomTrials: 1 to 3 talkers");
   if (turns < 1 || turns > 8) throw std::invalid_argument("RoomTrials: 1 to 8 head turns");
+  if (blocks_per_pose < 1 || blocks_per_pose > 10) throw std::invalid_argument("RoomTrials: 1 to 10 blocks per pose");
   RoomFigures figures;
   figures.t60_s = room.t60_s;
   figures.sources = sources;
   figures.trials = trials;
   figures.turns = turns;
+  figures.blocks_per_pose = blocks_per_pose;
   std::mt19937_64 random(seed);
   std::vector<double> errors;
   int within = 0, counted = 0, static_confusions = 0, turned_confusions = 0;
@@ -149,7 +169,7 @@ RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint
     std::iota(talkers.begin(), talkers.end(), 0);
     std::shuffle(talkers.begin(), talkers.end(), random);
     if (sources == 1) talkers[0] = trial % static_cast<int>(signals_.size());
-    const int64_t first = momentAllSpeak(talkers, sources, turns, random);
+    const int64_t first = momentAllSpeak(talkers, sources, turns, blocks_per_pose, random);
     BlockRequest request;
     request.num_samples = kBlock;
     request.noise_rms = 1e-4;
@@ -159,18 +179,12 @@ RoomFigures RoomTrials::run(const TrialRoom& room, int sources, int trials, uint
     for (int s = 0; s < sources; ++s)
       request.sources.push_back({&signals_[static_cast<std::size_t>(talkers[static_cast<std::size_t>(s)])],
                                  talkerAt(azimuths[static_cast<std::size_t>(s)]), 1.0, 0.0});
-    // One block with the head still, then one after each turn of kDefaultResolvingTurnDeg CCW.
-    std::vector<StereoBlock> heard_blocks;
-    for (int b = 0; b <= turns; ++b) {
-      request.first_sample = first + b * kBlock;
-      request.previous.yaw_deg = request.current.yaw_deg = b * turn;
-      heard_blocks.push_back(renderer_.render(request));
-    }
-    const StereoBlock& before = heard_blocks.front();
+    const std::vector<StereoBlock> heard_poses = hearPoses(request, first, turns, blocks_per_pose);
+    const StereoBlock& before = heard_poses.front();
     std::vector<EarBlock> pooled;
-    for (int b = 0; b <= turns; ++b)
-      pooled.push_back(EarBlock{heard_blocks[static_cast<std::size_t>(b)].left,
-                                heard_blocks[static_cast<std::size_t>(b)].right, (turns - b) * turn});
+    for (int pose = 0; pose <= turns; ++pose)
+      pooled.push_back(EarBlock{heard_poses[static_cast<std::size_t>(pose)].left,
+                                heard_poses[static_cast<std::size_t>(pose)].right, (turns - pose) * turn});
     const BlockLocalisation heard_before = localiser_.localise(before.left, before.right);
     const BlockLocalisation heard_after = localiser_.localise(pooled);
     std::vector<double> azimuths_now;

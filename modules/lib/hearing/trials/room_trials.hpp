@@ -10,7 +10,9 @@
 // absorption gives Eyring's T60 the T60 asked for, rendered by
 // BinauralRenderer with image sources up to order 2 and the diffuse tail;
 // the free field (T60 0) is the renderer without a room. Each trial hears
-// two 0.1 s blocks: the head still, then turned by kDefaultResolvingTurnDeg.
+// the head still, then turned by kDefaultResolvingTurnDeg: at each pose one
+// block of 0.1 s, as the audio expert localises each block, or (to measure
+// what listening longer would give) several consecutive ones.
 #pragma once
 
 #include <cstdint>
@@ -33,7 +35,8 @@ struct RoomFigures {
   std::optional<double> drr_db;  // direct (to 2.5 ms after it) over the rest; none in the free field
   int sources = 0;            // simultaneous talkers
   int trials = 0;
-  int turns = 1;              // head turns heard (blocks: one more)
+  int turns = 1;              // head turns heard (poses: one more)
+  int blocks_per_pose = 1;    // consecutive 0.1 s blocks heard at each pose
   double within_5deg = 0;     // share of talkers with one of the N strongest peaks within 5 deg, after the turn
   double median_error_deg = 0;  // median over talkers of the nearest of those peaks, after the turn
   // Share of talkers heard at their mirror image: no peak within 10 deg of
@@ -60,13 +63,21 @@ class RoomTrials {
   RoomTrials(const BinauralRenderer& renderer, BlockLocaliser localiser,
              const std::string& sounds_dir = scenarioSoundsDir());
 
-  // `turns` head turns of kDefaultResolvingTurnDeg, all CCW: a block before
-  // them and one after each, pooled (the figures after the turn are after the last).
-  RoomFigures run(const TrialRoom& room, int sources, int trials, uint64_t seed, int turns = 1);
+  // `turns` head turns of kDefaultResolvingTurnDeg, all CCW: blocks_per_pose
+  // consecutive blocks heard before them and as many after each, the blocks
+  // of one pose localised as one signal, the poses pooled (the figures after
+  // the turn are after the last).
+  RoomFigures run(const TrialRoom& room, int sources, int trials, uint64_t seed, int turns = 1,
+                  int blocks_per_pose = 1);
 
  private:
-  // A first sample from which every talker speaks through all turns + 1 blocks.
-  int64_t momentAllSpeak(const std::vector<int>& talkers, int sources, int turns, std::mt19937_64& random) const;
+  // A first sample from which every talker speaks at every pose: the RMS of
+  // what it says while the head listens there (blocks_per_pose blocks) above 0.05.
+  int64_t momentAllSpeak(const std::vector<int>& talkers, int sources, int turns, int blocks_per_pose,
+                         std::mt19937_64& random) const;
+  // What the ears hear at each pose (the head still, then after each turn),
+  // blocks_per_pose consecutive blocks each, one after the other.
+  std::vector<StereoBlock> hearPoses(BlockRequest request, int64_t first, int turns, int blocks_per_pose) const;
   const BinauralRenderer& renderer_;
   BlockLocaliser localiser_;
   std::vector<std::vector<float>> talkers_;
