@@ -40,6 +40,9 @@ const WHOLE_STATE_THROTTLE_MS = 50;
 // this often [ms]: each drawing lays out and paints the page, which at a
 // run's full speed (a hundred messages a second) would take a core.
 const PANEL_MS = 250;
+// When the browser draws in software (scene_view.js), every drawing is
+// composited on the CPU, beside the run: half as often.
+const SOFTWARE_PANEL_MS = 500;
 
 // Hands `text` to the topic's handler; a malformed message costs itself only.
 function handleText(handle, topic, text) {
@@ -52,7 +55,8 @@ function handleText(handle, topic, text) {
 
 // The newest message of each LATEST_ONLY topic, handled by drain(now).
 class LatestOnly {
-  constructor() {
+  constructor(intervalMs) {
+    this.intervalMs = intervalMs;
     this.pending = new Map();
     this.lastDrainMs = -Infinity;
   }
@@ -60,7 +64,7 @@ class LatestOnly {
     this.pending.set(topic, { handle, text });
   }
   drain(nowMs) {
-    if (this.pending.size === 0 || nowMs - this.lastDrainMs < LATEST_ONLY_MS) return false;
+    if (this.pending.size === 0 || nowMs - this.lastDrainMs < this.intervalMs) return false;
     this.lastDrainMs = nowMs;
     for (const [topic, { handle, text }] of this.pending) handleText(handle, topic, text);
     this.pending.clear();
@@ -108,7 +112,7 @@ function start() {
   state.webGlInSoftware = parts.view.software;
   const timeline = new Timeline(state, byId("seek"));
   const handlers = topicHandlers(state, parts);
-  const latest = new LatestOnly();
+  const latest = new LatestOnly(state.webGlInSoftware ? SOFTWARE_PANEL_MS : LATEST_ONLY_MS);
   // A viewer on another host sends controls with the bridge's token, given
   // to the page as ?token=... and passed on to the WebSocket.
   const token = new URLSearchParams(location.search).get("token");
@@ -152,12 +156,13 @@ function start() {
 function animate(state, parts, pointer, timeline, latest) {
   const clock = new FrameClock(state);
   let lastPanelMs = -Infinity;
+  const panelMs = state.webGlInSoftware ? SOFTWARE_PANEL_MS : PANEL_MS;
   const frame = (now) => {
     clock.tick(now);
     latest.drain(now);
     pointer.update();
     if (parts.view.render(now)) state.renders++;
-    if (now - lastPanelMs >= PANEL_MS) {
+    if (now - lastPanelMs >= panelMs) {
       lastPanelMs = now;
       drawPanels(state, parts, timeline);
     }
