@@ -82,12 +82,7 @@ void ExplorationExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("explore_priority", e.explore_priority, 0, 1000000, "priority of explore tasks (look around, frontiers)");
   parameters.declare("safety_margin_m", e.safety_margin_m, 0, kNoLimit, "added to the robot radius for where it may stand [m]");
   parameters.declare("look_around", e.look_around, "turn a full circle at the start");
-  parameters.declare("verify_attempts", e.verify_attempts, 1, 1000,
-                     "viewpoints tried per heard hypothesis and estimate before giving up");
-  parameters.declare("new_estimate_m", e.new_estimate_m, 0, 1000,
-                     "a heard estimate moved this far from those looked for in vain starts a new count [m]");
-  parameters.declare("verify_attempts_total", e.verify_attempts_total, 1, 1000,
-                     "viewpoints tried per heard hypothesis in all before giving up");
+  parameters.declare("verify_attempts", e.verify_attempts, 1, 1000, "viewpoints tried per heard hypothesis before giving up");
   parameters.declare("inspect_attempts", e.inspect_attempts, 1, 1000, "viewpoints tried per glimpsed hypothesis");
   parameters.declare("ruled_out_viewpoints", e.ruled_out_viewpoints, 1, 1000,
                      "viewpoints of a hypothesis the map rules out on the way (a wall mapped in the line of sight) "

@@ -125,7 +125,6 @@ Decision Explorer::step(const Observation& o) {
   }
   if (!o.robot_known) return d;  // nothing sensible to decide yet
   updateTrail(o);
-  reviveMovedEstimates(o, d);
   finishStrayComposites(o, d);
   if (o.duration > 0 && o.t >= o.duration) {
     if (job_) endJob(o, d, false, "the scenario's duration ended", true);
@@ -135,22 +134,6 @@ Decision Explorer::step(const Observation& o) {
   if (job_) followJob(o, d);
   if (!job_ && !stopped_ && (o.t >= idle_until_t_ || hasFreshTarget(o))) decide(o, d);
   return d;
-}
-
-void Explorer::reviveMovedEstimates(const Observation& o, Decision& d) {
-  for (const auto& h : o.hypotheses) {
-    const auto it = targets_.find(h.object_id);
-    if (it == targets_.end() || !wantsVerify(h)) continue;
-    TargetMemory& memory = it->second;
-    if (!memory.given_up || memory.looked_for.empty() || memory.attempts >= parameters_.verify_attempts_total) continue;
-    const bool moved = std::all_of(memory.looked_for.begin(), memory.looked_for.end(), [&](const Point& p) {
-      return std::hypot(p.x - h.x, p.y - h.y) > parameters_.new_estimate_m;
-    });
-    if (!moved) continue;
-    memory.given_up = false;
-    memory.why = "heard at " + at(h.x, h.y) + " now, away from where it was looked for";
-    d.log.push_back(h.object_id + ": " + memory.why + ": tried again");
-  }
 }
 
 bool Explorer::hasFreshTarget(const Observation& o) const {
@@ -354,22 +337,11 @@ void Explorer::recordFailedAttempt(const std::string& object_id, const Point& vi
   ++memory.attempts;
   memory.tried.push_back(viewpoint);
   const Job* job = job_ ? &*job_ : nullptr;
-  const bool inspect = job != nullptr && job->kind == JobKind::Inspect;
-  // Verify: the failed looks for this estimate, and all of them.
-  int for_this_estimate = memory.attempts;
-  if (job != nullptr && !inspect) {
-    const Point target{job->target_x, job->target_y};
-    memory.looked_for.push_back(target);
-    for_this_estimate = static_cast<int>(std::count_if(memory.looked_for.begin(), memory.looked_for.end(), [&](const Point& p) {
-      return std::hypot(p.x - target.x, p.y - target.y) <= parameters_.new_estimate_m;
-    }));
-  }
-  const bool enough = inspect ? memory.attempts >= parameters_.inspect_attempts
-                              : for_this_estimate >= parameters_.verify_attempts ||
-                                    memory.attempts >= parameters_.verify_attempts_total;
+  const int limit = job != nullptr && job->kind == JobKind::Inspect ? parameters_.inspect_attempts
+                                                                    : parameters_.verify_attempts;
   d.log.push_back(object_id + ": attempt " + std::to_string(memory.attempts) + " failed (" + why + ")");
   memory.why = "attempt " + std::to_string(memory.attempts) + " failed (" + why + ")";
-  if (enough) {
+  if (memory.attempts >= limit) {
     memory.given_up = true;
     memory.why = "given up after " + std::to_string(memory.attempts) + " viewpoints, the last: " + why;
     d.log.push_back(object_id + ": given up after " + std::to_string(memory.attempts) + " viewpoints");
@@ -545,8 +517,6 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
   job.x = best_viewpoint.x;
   job.y = best_viewpoint.y;
   job.yaw = best_viewpoint.yaw;
-  job.target_x = target->x;
-  job.target_y = target->y;
   job.sub_tasks.push_back(subTask("goto", job.x, job.y, job.yaw, "",
                                   "go to a viewpoint of " + target->object_id));
   job.sub_tasks.push_back(subTask("look_at", target->x, target->y, 0, target->object_id, "look at " + target->object_id));

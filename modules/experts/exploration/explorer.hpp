@@ -10,9 +10,7 @@
 //     `look_at object` is pushed. When fusion settles the hypothesis the task
 //     is finished; when the robot got there, looked, and it is still unsettled,
 //     the attempt failed: another viewpoint is tried (tried ones are
-//     remembered), up to verify_attempts for one estimate, then the
-//     hypothesis is given up until its estimate moves (a heard estimate can
-//     be wrong), up to verify_attempts_total in all.
+//     remembered), up to max_attempts, then the hypothesis is given up.
 //  3. Inspect: a hypothesis glimpsed (some pixels, too few to count as seen),
 //     never heard, that may be a person, is approached the same way.
 //  4. Explore: the nearest reachable frontier (frontiers.hpp), facing the
@@ -99,14 +97,7 @@ struct ExplorerParameters {
   int32_t explore_priority = 10;
   double safety_margin_m = 0.15;       // added to the robot radius for standable cells
   bool look_around = true;             // turn a full circle at the start
-  int verify_attempts = 4;             // viewpoints per heard hypothesis and estimate before giving up
-  // A heard estimate can be wrong (a bearing without a crossing lies a few
-  // metres along it): failed looks count against the estimate they were
-  // made for; one that moved more than this from every estimate looked for
-  // in vain starts a new count [m] ...
-  // (and a hypothesis given up for its estimate is tried again) [m] ...
-  double new_estimate_m = 3.0;
-  int verify_attempts_total = 12;      // ... up to this many viewpoints in all
+  int verify_attempts = 4;             // viewpoints per heard hypothesis before giving up
   int inspect_attempts = 2;            // viewpoints per glimpsed hypothesis
   int ruled_out_viewpoints = 12;       // viewpoints the map rules out on the way before a first look (no attempt)
   bool inspect_glimpsed = true;
@@ -152,7 +143,6 @@ class Explorer {
     JobKind kind = JobKind::Explore;
     std::string object_id;           // verify / inspect
     double x = 0, y = 0, yaw = 0;    // goal pose
-    double target_x = 0, target_y = 0;  // verify / inspect: where the target was thought to be
     std::vector<TaskRequest> sub_tasks;  // pushed once the composite shows; they run in this order
     int64_t composite_id = 0;        // 0 until seen on the stack
     double sub_tasks_pushed_t = -1;  // when the sub-tasks were pushed, -1 not yet
@@ -165,7 +155,6 @@ class Explorer {
     int attempts = 0;                // viewpoints tried: reached, looked from, still unsettled
     int ruled_out = 0;               // viewpoints the map ruled out before the robot got there
     std::vector<Point> tried;
-    std::vector<Point> looked_for;   // the target's estimate at each failed attempt
     bool given_up = false;
     bool no_viewpoint = false;       // the last search found no viewpoint
     double retry_t = -1;             // not reconsidered before this sim time
@@ -173,9 +162,6 @@ class Explorer {
   };
 
   void updateTrail(const Observation& o);
-  // A heard hypothesis given up for its estimate is tried again once its
-  // estimate moved new_estimate_m from every one looked for in vain.
-  void reviveMovedEstimates(const Observation& o, Decision& d);
   bool wantsVerify(const HypothesisView& h) const;
   bool wantsInspect(const HypothesisView& h) const;
   // A hypothesis to verify or inspect that has not been tried in vain yet.

@@ -730,56 +730,6 @@ TEST_F(ExplorerRun, TriesAnotherViewpointWhenStillUnseenAndGivesUpAfterTheLimit)
   EXPECT_TRUE(explorer.stopped());
 }
 
-// A heard estimate may be wrong (a bearing without a crossing lies a few
-// metres along it, and moves as the robot hears it from elsewhere): failed
-// looks count against the estimate they were made for. A hypothesis given
-// up for its estimate is tried again once the estimate moved more than
-// new_estimate_m from every one looked for, up to verify_attempts_total.
-TEST_F(ExplorerRun, FailedLooksCountAgainstTheEstimateTheyWereFor) {
-  parameters.verify_attempts = 1;
-  parameters.verify_attempts_total = 3;
-  parameters.new_estimate_m = 3;
-  parameters.stop_when_done = false;  // nothing else left: it watches instead of stopping
-  explorer = Explorer(parameters);
-  lookAround();
-  observation.hypotheses = {hidden()};
-  tick();  // ends the look-around, pushes the first verify composite
-  const std::vector<Point> estimates = {{12, 10}, {16, 10}, {16, 15}, {12, 16}};
-  for (std::size_t attempt = 0; attempt < 3; ++attempt) {
-    const auto subs = pushesOf(tick());
-    ASSERT_EQ(subs.size(), 2u) << "attempt " << attempt;
-    EXPECT_NEAR(subs[1].x, estimates[attempt].x, 1e-9);  // looks at the estimate of the time
-    EXPECT_NEAR(subs[1].y, estimates[attempt].y, 1e-9);
-    stack.completeSubTasks(subs[0].parent);  // got there and looked
-    const size_t finishes = stack.finishes.size();
-    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();  // dwell, then fail
-    ASSERT_EQ(stack.finishes.size(), finishes + 1);
-    EXPECT_EQ(explorer.attempts("victim1"), static_cast<int>(attempt) + 1);
-    EXPECT_TRUE(explorer.givenUp("victim1")) << "one look per estimate";
-    // Heard elsewhere now: tried again, but never beyond the total.
-    observation.hypotheses[0].x = estimates[attempt + 1].x;
-    observation.hypotheses[0].y = estimates[attempt + 1].y;
-    tick();
-    EXPECT_EQ(explorer.givenUp("victim1"), attempt + 1 == 3) << "attempt " << attempt;
-  }
-}
-
-TEST_F(ExplorerRun, FailedLooksForAnEstimateThatStaysGiveUpAtTheLimit) {
-  parameters.verify_attempts = 1;
-  parameters.verify_attempts_total = 3;
-  explorer = Explorer(parameters);
-  lookAround();
-  observation.hypotheses = {hidden()};
-  tick();
-  const auto subs = pushesOf(tick());
-  ASSERT_EQ(subs.size(), 2u);
-  stack.completeSubTasks(subs[0].parent);
-  const size_t finishes = stack.finishes.size();
-  for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();
-  EXPECT_EQ(explorer.attempts("victim1"), 1);
-  EXPECT_TRUE(explorer.givenUp("victim1"));
-}
-
 // A wall mapped on the way between the chosen viewpoint and the target rules
 // that viewpoint out: another is chosen, and no attempt is spent (a target
 // behind walls being mapped piece by piece is not given up for it), up to
