@@ -24,25 +24,11 @@ struct TriangulationLimits {
   // of a clear bearing, so noise alone does not make a crossing.
   double min_spread = 0.012;
   double max_range_m = 60;  // a crossing farther than this from the last place is not believed
-  // The robust crossing: a line agrees with a point when the direction from
-  // its place to the point is within inlier_deg of its bearing; at least
-  // min_inliers lines, and min_inlier_share of them, must agree.
-  double inlier_deg = 4;
-  int min_inliers = 3;
-  double min_inlier_share = 0.3;
 };
 
 // The least-squares crossing of the lines, if they cross well enough and in
 // front of (not behind) most of them.
 std::optional<Eigen::Vector2d> triangulate(const std::vector<BearingLine>& lines,
                                            const TriangulationLimits& limits = TriangulationLimits{});
-
-// The crossing of the largest subset of lines that agree on one point, then
-// crossed by least squares (triangulate): lines of another source, or of an
-// echo, given to this one by mistake are left out. Every pair of lines that
-// crosses in front of both is a candidate point, as in RANSAC (Fischler &
-// Bolles 1981) but exhaustively, the lines being few (at most a few dozen).
-std::optional<Eigen::Vector2d> triangulateRobustly(const std::vector<BearingLine>& lines,
-                                                   const TriangulationLimits& limits = TriangulationLimits{});
 
 }  // namespace beft::audio

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 
 namespace beft::audio {
 namespace {
@@ -48,10 +49,6 @@ AzimuthPosterior posteriorOf(const std::array<double, AzimuthPosterior::kBins>& 
   return AzimuthPosterior(values);
 }
 
-// A second direction of a track's posterior this large, relative to the
-// first, is where the source may be too (its front-back mirror image).
-constexpr double kSecondBearingShare = 0.3;
-
 Eigen::Vector2d unitOf(double bearing_deg) {
   const double radians = bearing_deg * M_PI / 180.0;
   return {std::cos(radians), std::sin(radians)};
@@ -65,56 +62,44 @@ void HeardSources::hear(const hearing::BlockLocalisation& heard, const binaural_
   last_head_yaw_ = block.head_yaw;
   if (heard.silent() || heard.peaks.empty()) return;
 
-  const auto peaks_of = associatePeaks(heard.peaks, block.head_yaw, sounding, predictions(sounding, block),
-                                       config_.association);
+  // Every (peak, object) pair whose spectra match, best first.
+  std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;  // (score, peak, object)
+  for (std::size_t p = 0; p < heard.peaks.size(); ++p) {
+    const double world_deg = hearing::wrapDegrees(block.head_yaw + heard.peaks[p].azimuth_deg);
+    for (std::size_t o = 0; o < sounding.size(); ++o) {
+      if (sounding[o].signature == nullptr) continue;
+      const double similarity = hearing::signatureSimilarity(heard.peaks[p].signature, *sounding[o].signature);
+      if (similarity < config_.min_similarity) continue;
+      double agreement = 0;  // heard from there before: how likely that direction was
+      if (const auto track = tracks_.find(sounding[o].id); track != tracks_.end() && !track->second.world.isFlat()) {
+        const double top = track->second.world.at(track->second.world.mostLikely());
+        agreement = top > 0 ? track->second.world.at(world_deg) / top : 0;
+      }
+      pairs.emplace_back(similarity + 0.2 * agreement, p, o);
+    }
+  }
+  std::stable_sort(pairs.begin(), pairs.end(),
+                   [](const auto& a, const auto& b) { return std::get<0>(a) > std::get<0>(b); });
+  // Each peak to one object; an object takes a second peak only if it is the
+  // front-back mirror image of its first (the same source heard both ways).
+  std::vector<std::vector<double>> peaks_of(sounding.size());
+  std::vector<bool> taken(heard.peaks.size(), false);
+  for (const auto& [score, p, o] : pairs) {
+    if (taken[p]) continue;
+    const double azimuth = heard.peaks[p].azimuth_deg;
+    const bool mirror_of_own = std::any_of(peaks_of[o].begin(), peaks_of[o].end(), [&](double own) {
+      return hearing::angularDistance(hearing::frontBackMirror(own), azimuth) <= 2 * config_.peak_half_width_deg;
+    });
+    if (!peaks_of[o].empty() && !mirror_of_own) continue;
+    peaks_of[o].push_back(azimuth);
+    taken[p] = true;
+  }
   for (std::size_t o = 0; o < sounding.size(); ++o) {
-    if (peaks_of[o].azimuths_deg.empty()) continue;
-    const auto part = partNear(heard.posterior, peaks_of[o].azimuths_deg, config_.peak_half_width_deg);
+    if (peaks_of[o].empty()) continue;
+    const auto part = partNear(heard.posterior, peaks_of[o], config_.peak_half_width_deg);
     if (!part) continue;
-    Track& track = tracks_[sounding[o].id];
-    if (peaks_of[o].restart) {
-      // Another source of the same sound: what was heard of the last one goes.
-      track.log_evidence.fill(0);
-      track.lines.clear();
-      track.crossing.reset();
-    }
-    confirm(track, block.tick);
-    update(track, part->inTurnedFrame(-block.head_yaw), block);
+    update(tracks_[sounding[o].id], part->inTurnedFrame(-block.head_yaw), block);
   }
-}
-
-// Where each object's track expects it now: towards the crossing of its
-// bearings once they cross, else the directions of its posterior.
-std::vector<TrackPrediction> HeardSources::predictions(const std::vector<SoundingObject>& sounding,
-                                                       const binaural_block_t& block) const {
-  std::vector<TrackPrediction> out(sounding.size());
-  for (std::size_t o = 0; o < sounding.size(); ++o) {
-    const auto found = tracks_.find(sounding[o].id);
-    if (found == tracks_.end() || found->second.world.isFlat()) continue;
-    const Track& track = found->second;
-    out[o].heard = true;
-    out[o].live = block.utime - track.last_heard_utime <= config_.live_s * 1e6;
-    if (track.crossing) {
-      const Eigen::Vector2d towards = *track.crossing - Eigen::Vector2d(block.head_x, block.head_y);
-      out[o].bearings_deg = {std::atan2(towards.y(), towards.x()) * 180.0 / M_PI};
-      continue;
-    }
-    for (const auto& peak : track.world.peaks(2 * config_.peak_half_width_deg, kSecondBearingShare))
-      out[o].bearings_deg.push_back(peak.azimuth_deg);
-    if (out[o].bearings_deg.empty()) out[o].bearings_deg = {track.world.mostLikely()};
-  }
-  return out;
-}
-
-// M of N: confirmed once given a peak in confirm_blocks of the last
-// confirm_window_blocks blocks.
-void HeardSources::confirm(Track& track, int64_t tick) const {
-  auto& recent = track.recent_ticks;
-  recent.push_back(tick);
-  if (static_cast<int>(recent.size()) > config_.confirm_blocks) recent.erase(recent.begin());
-  if (static_cast<int>(recent.size()) == config_.confirm_blocks &&
-      tick - recent.front() < config_.confirm_window_blocks)
-    track.confirmed = true;
 }
 
 void HeardSources::update(Track& track, const hearing::AzimuthPosterior& heard_world, const binaural_block_t& block) {
@@ -122,14 +107,11 @@ void HeardSources::update(Track& track, const hearing::AzimuthPosterior& heard_w
   track.world = posteriorOf(track.log_evidence);
   track.heard_from = {block.head_x, block.head_y};
   track.last_heard_tick = block.tick;
-  track.last_heard_utime = block.utime;
 
   auto& lines = track.lines;
-  const std::size_t lines_before = lines.size();
   lines.erase(std::remove_if(lines.begin(), lines.end(),
                              [&](const auto& line) { return block.utime - line.first > config_.line_max_age_s * 1e6; }),
               lines.end());
-  bool changed = lines.size() != lines_before;
   const AzimuthPosterior in_head = track.world.inTurnedFrame(block.head_yaw);
   const double bearing = track.world.mostLikely();
   const bool clear = track.world.massNear(bearing, 10) >= config_.clear_mass && !hearing::isFrontBackAmbiguous(in_head);
@@ -137,22 +119,19 @@ void HeardSources::update(Track& track, const hearing::AzimuthPosterior& heard_w
   if (clear && moved) {
     lines.emplace_back(block.utime, BearingLine{track.heard_from, bearing});
     if (static_cast<int>(lines.size()) > config_.max_lines) lines.erase(lines.begin());
-    changed = true;
   }
-  if (!changed) return;
-  std::vector<BearingLine> bearings;
-  for (const auto& [utime, line] : lines) bearings.push_back(line);
-  track.crossing = triangulateRobustly(bearings, config_.triangulation);
 }
 
 std::optional<HeardEstimate> HeardSources::estimate(const std::string& id) const {
   const auto found = tracks_.find(id);
-  if (found == tracks_.end() || found->second.world.isFlat() || !found->second.confirmed) return std::nullopt;
+  if (found == tracks_.end() || found->second.world.isFlat()) return std::nullopt;
   const Track& track = found->second;
   HeardEstimate estimate;
   estimate.bearing_deg = track.world.mostLikely();
-  if (track.crossing) {
-    estimate.position = *track.crossing;
+  std::vector<BearingLine> lines;
+  for (const auto& [utime, line] : track.lines) lines.push_back(line);
+  if (const auto crossing = triangulate(lines, config_.triangulation)) {
+    estimate.position = *crossing;
     estimate.triangulated = true;
   } else {
     estimate.position = track.heard_from + config_.default_distance_m * unitOf(estimate.bearing_deg);

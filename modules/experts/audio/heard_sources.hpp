@@ -2,10 +2,8 @@
 // alone (--param acoustics=binaural). Each block of EARS is localised
 // (hearing::BlockLocaliser: a posterior over head-relative azimuth and its
 // peaks, each with the band spectrum of what voted for it); each peak is
-// given to a sounding object whose sound has a similar spectrum, gated by
-// the bearing that object's own track predicts (peak_association.hpp); an
-// object counts as heard once confirm_blocks of confirm_window_blocks
-// blocks in a row gave it a peak (the M-of-N confirmation of a track); each
+// given to the sounding object whose sound has the most similar spectrum
+// (ties broken by the direction the object was heard in before); each
 // object keeps
 //  - a posterior over the world direction it is heard in: the block's
 //    posterior near its peaks, turned into the world frame, adds bounded
@@ -14,9 +12,9 @@
 //    same at a and 180 - a) moves the other way in the world frame and dies
 //    out while the true direction keeps agreeing (Wallach 1940);
 //  - bearing lines from the places it was heard from clearly, whose crossing
-//    (bearing_triangulation.hpp: the largest subset of lines that agree) gives
-//    the distance once the robot has moved enough; before that the estimate
-//    lies default_distance_m along the bearing.
+//    (bearing_triangulation.hpp) gives the distance once the robot has moved
+//    enough; before that the estimate lies default_distance_m along the
+//    bearing.
 // When an object's direction stays front-back ambiguous, a head turn is
 // asked for (wantsHeadTurn).
 #pragma once
@@ -33,16 +31,12 @@
 #include "lib/hearing/azimuth_posterior.hpp"
 #include "lib/hearing/band_signature.hpp"
 #include "experts/audio/bearing_triangulation.hpp"
-#include "experts/audio/peak_association.hpp"
 #include "lib/hearing/block_localiser.hpp"
 
 namespace beft::audio {
 
 struct HearingConfig {
-  AssociationConfig association;     // which peaks each object is given
-  double live_s = 2;                 // an object given a peak within this time takes only peaks in its gate [s]
-  int confirm_blocks = 4;            // heard once given a peak in this many ...
-  int confirm_window_blocks = 6;     // ... of this many blocks in a row
+  double min_similarity = 0.6;       // a peak whose spectrum matches no sounding object this well is not assigned
   double peak_half_width_deg = 12;   // the part of the block's posterior that belongs to a peak
   double forgetting = 0.1;           // per block: this share of the evidence gathered so far fades
   double evidence_per_block = 2.0;   // one block multiplies a direction's odds by at most 1 + this
@@ -54,6 +48,12 @@ struct HearingConfig {
   double turn_deg = 20;              // the head turn that resolves front and back
   double turn_interval_s = 3;        // at most one head turn per this time
   TriangulationLimits triangulation;
+};
+
+// One sounding object as the expert hears it this tick.
+struct SoundingObject {
+  std::string id;
+  const hearing::BandSignature* signature = nullptr;  // of its sound; null: cannot be told apart
 };
 
 struct HeardEstimate {
@@ -71,7 +71,7 @@ class HeardSources {
   void hear(const hearing::BlockLocalisation& heard, const binaural_block_t& block,
             const std::vector<SoundingObject>& sounding);
 
-  // The object's position estimate, if it was ever heard (its track confirmed).
+  // The object's position estimate, if it was ever heard.
   std::optional<HeardEstimate> estimate(const std::string& id) const;
 
   // The head yaw (relative to the platform, within +-limit) to turn to, if an
@@ -88,14 +88,7 @@ class HeardSources {
     Eigen::Vector2d heard_from = Eigen::Vector2d::Zero();
     std::vector<std::pair<int64_t, BearingLine>> lines;  // (utime, line)
     int64_t last_heard_tick = -1;
-    int64_t last_heard_utime = -1;
-    std::vector<int64_t> recent_ticks;  // the last confirm_blocks ticks it was given a peak
-    bool confirmed = false;
-    std::optional<Eigen::Vector2d> crossing;  // of the lines, kept as they change
   };
-  std::vector<TrackPrediction> predictions(const std::vector<SoundingObject>& sounding,
-                                           const binaural_block_t& block) const;
-  void confirm(Track& track, int64_t tick) const;
   void update(Track& track, const hearing::AzimuthPosterior& heard_world, const binaural_block_t& block);
 
   HearingConfig config_;

@@ -7,7 +7,6 @@
 
 #include "experts/audio/bearing_triangulation.hpp"
 #include "experts/audio/heard_sources.hpp"
-#include "experts/audio/peak_association.hpp"
 
 using namespace beft;
 using namespace beft::audio;
@@ -86,88 +85,6 @@ TEST(BearingTriangulation, RefusesLinesThatHardlyCrossOrCrossBehind) {
   EXPECT_FALSE(triangulate({{{0, 0}, std::nan("")}, {{4, 0}, 135.0}}).has_value());
 }
 
-TEST(BearingTriangulation, TheRobustCrossingLeavesOutLinesOfAnotherSource) {
-  const Eigen::Vector2d source(8, 6), other(-5, 9);
-  std::vector<BearingLine> lines;
-  for (int i = 0; i < 6; ++i) {
-    const Eigen::Vector2d from(0.6 * i, -0.3 * i);
-    lines.push_back({from, bearingTo(from, source)});
-  }
-  for (int i = 0; i < 3; ++i) {  // given to this source by mistake
-    const Eigen::Vector2d from(4 + 0.5 * i, 0);
-    lines.push_back({from, bearingTo(from, other)});
-  }
-  const auto robust = triangulateRobustly(lines);
-  ASSERT_TRUE(robust.has_value());
-  EXPECT_LT((*robust - source).norm(), 1e-6);
-  const auto plain = triangulate(lines);
-  EXPECT_TRUE(!plain || (*plain - source).norm() > 1.0) << "the least squares of all lines are pulled away";
-  // Lines of which too few agree on any point give no crossing.
-  EXPECT_FALSE(triangulateRobustly({{{0, 0}, 10.0}, {{1, 0}, 100.0}, {{2, 5}, -80.0}, {{7, 1}, 170.0}}).has_value());
-}
-
-namespace {
-
-hearing::LocalisedPeak peakAt(double azimuth_deg, const hearing::BandSignature& signature) {
-  hearing::LocalisedPeak peak;
-  peak.azimuth_deg = azimuth_deg;
-  peak.weight = 0.5;
-  peak.signature = signature;
-  return peak;
-}
-
-TrackPrediction predicted(bool live, double bearing_deg) { return TrackPrediction{true, live, {bearing_deg}}; }
-
-}  // namespace
-
-// Two sirens sound alike: the one heard just now takes the peak near where
-// its track expects it, whatever the order; the other peak starts the one
-// never heard.
-TEST(PeakAssociation, ALiveObjectTakesThePeakNearItsPredictedBearing) {
-  const auto siren = spectrum({0.1, 1, 10, 10, 1});
-  const std::vector<SoundingObject> sounding = {{"siren1", &siren}, {"siren2", &siren}};
-  // Head yaw 10: peaks at world 200 and 45.
-  const auto given = associatePeaks({peakAt(190, siren), peakAt(35, siren)}, 10, sounding,
-                                    {predicted(true, 40), TrackPrediction{}});
-  ASSERT_EQ(given.size(), 2u);
-  ASSERT_EQ(given[0].azimuths_deg.size(), 1u);
-  EXPECT_NEAR(given[0].azimuths_deg[0], 35, 1e-9);
-  ASSERT_EQ(given[1].azimuths_deg.size(), 1u);
-  EXPECT_NEAR(given[1].azimuths_deg[0], 190, 1e-9);
-  EXPECT_FALSE(given[1].restart) << "never heard: nothing to start afresh";
-}
-
-TEST(PeakAssociation, APeakALiveObjectExplainsStartsNoOtherObject) {
-  const auto siren = spectrum({0.1, 1, 10, 10, 1});
-  const std::vector<SoundingObject> sounding = {{"siren1", &siren}, {"siren2", &siren}};
-  // Both peaks lie in siren1's gate: the nearer is its own, the other the same source heard twice.
-  const auto given = associatePeaks({peakAt(58, siren), peakAt(42, siren)}, 0, sounding,
-                                    {predicted(true, 40), TrackPrediction{}});
-  ASSERT_EQ(given[0].azimuths_deg.size(), 1u);
-  EXPECT_NEAR(given[0].azimuths_deg[0], 42, 1e-9);
-  EXPECT_TRUE(given[1].azimuths_deg.empty());
-}
-
-TEST(PeakAssociation, APeakFarFromEveryTrackGoesToAnObjectNeverHeardFirstThenStartsOneAfresh) {
-  const auto siren = spectrum({0.1, 1, 10, 10, 1});
-  // siren1 was heard at 40 a while ago (not live), siren2 is live at 100.
-  const std::vector<TrackPrediction> tracks = {predicted(false, 40), predicted(true, 100), TrackPrediction{}};
-  const std::vector<SoundingObject> three = {{"siren1", &siren}, {"siren2", &siren}, {"siren3", &siren}};
-  auto given = associatePeaks({peakAt(250, siren)}, 0, three, tracks);
-  EXPECT_TRUE(given[0].azimuths_deg.empty());
-  EXPECT_TRUE(given[1].azimuths_deg.empty()) << "outside siren2's gate";
-  ASSERT_EQ(given[2].azimuths_deg.size(), 1u);
-  // Without an object never heard, the one heard elsewhere starts afresh.
-  const std::vector<SoundingObject> two(three.begin(), three.begin() + 2);
-  given = associatePeaks({peakAt(250, siren)}, 0, two, {tracks[0], tracks[1]});
-  ASSERT_EQ(given[0].azimuths_deg.size(), 1u);
-  EXPECT_TRUE(given[0].restart);
-  // Heard again where its track expects it, it resumes.
-  given = associatePeaks({peakAt(45, siren)}, 0, two, {tracks[0], tracks[1]});
-  ASSERT_EQ(given[0].azimuths_deg.size(), 1u);
-  EXPECT_FALSE(given[0].restart);
-}
-
 TEST(HeardSources, GivesEachPeakToTheObjectWhoseSoundItMatches) {
   const auto voice = spectrum({10, 8, 4, 1, 0.1});
   const auto siren = spectrum({0.1, 1, 10, 10, 1});
@@ -175,9 +92,6 @@ TEST(HeardSources, GivesEachPeakToTheObjectWhoseSoundItMatches) {
   const std::vector<SoundingObject> sounding = {{"victim", &voice}, {"siren", &siren}};
   // Head at (0, 0) facing +y (yaw 90): the voice 30 deg to the left, the siren 60 deg to the right.
   heard.hear(heardAt({{30, &voice}, {-60 + 360, &siren}}), blockAt(0, 0, 0, 90), sounding);
-  EXPECT_FALSE(heard.estimate("victim").has_value()) << "heard once: not yet confirmed";
-  for (int tick = 1; tick < heard.config().confirm_blocks; ++tick)
-    heard.hear(heardAt({{30, &voice}, {-60 + 360, &siren}}), blockAt(tick, 0, 0, 90), sounding);
   const auto victim = heard.estimate("victim");
   const auto siren_heard = heard.estimate("siren");
   ASSERT_TRUE(victim && siren_heard);
