@@ -111,7 +111,7 @@ async function livePage(checks, browser) {
     assert.deepEqual((await lastReceived(bridge, "/beft/task")).message, { action: "clear" });
   });
   await checks.run("a click on the ground sends goto there, a shift-click on an object look_at", async () => {
-    await waitForState(page, (s) => s.frames > 5);
+    await waitForState(page, (s) => s.renders > 0);
     const ground = await page.evaluate(() => window.beft.screenOf(40, 20, 0));
     await page.mouse.click(ground.x, ground.y);
     const goto = (await lastReceived(bridge, "/beft/task", 2)).message;

@@ -18,6 +18,7 @@ import { Pointer } from "./pointer.js";
 import { createPageState, FrameClock, mirrorIntoDom } from "./page_state.js";
 import { topicHandlers } from "./topic_handlers.js";
 import { Timeline } from "./timeline.js";
+import { FrameScheduler } from "./frame_scheduler.js";
 
 const byId = (id) => document.getElementById(id);
 
@@ -113,30 +114,40 @@ function start() {
   const timeline = new Timeline(state, byId("seek"));
   const handlers = topicHandlers(state, parts);
   const latest = new LatestOnly(state.webGlInSoftware ? SOFTWARE_PANEL_MS : LATEST_ONLY_MS);
+  const scheduler = new FrameScheduler(() => false);
+  // What the run or the server changed: drawn at the next poll.
+  const changed = () => {
+    state.panelsChanged = true;
+    scheduler.wake();
+  };
+  // What a person does with the view: drawn on the next animation frame.
+  parts.view.onInteraction = () => scheduler.wakeNow();
   // A viewer on another host sends controls with the bridge's token, given
   // to the page as ?token=... and passed on to the WebSocket.
   const token = new URLSearchParams(location.search).get("token");
   const query = token ? `?token=${encodeURIComponent(token)}` : "";
   const wsUrl = `${location.protocol === "https:" ? "wss" : "ws"}://${location.host}/${query}`;
   const client = new FoxgloveClient(wsUrl, {
-    onOpen: () => (state.connected = true),
-    onClose: () => (state.connected = false),
+    onOpen: () => ((state.connected = true), changed()),
+    onClose: () => ((state.connected = false), changed()),
     onServerInfo: (info) => {
+      changed();
       timeline.serverInfo(info);
       const drawing = (info.metadata || {}).net;
       if (drawing && !state.netDrawn) parts.net.load(drawing).catch((error) => console.warn(`net: ${error}`));
     },
-    onAdvertise: () => (state.topics = [...client.channelsById.values()].map((c) => c.topic)),
+    onAdvertise: () => ((state.topics = [...client.channelsById.values()].map((c) => c.topic)), changed()),
     onMessage: (topic, text, receiveNs) => {
       const handle = handlers.get(topic) || handlers.get(topic.replace(/^\//, ""));
       if (!handle) return;
       state.messages[topic] = (state.messages[topic] || 0) + 1;
       timeline.received(receiveNs);
+      changed();
       if (LATEST_ONLY.has(topic)) return latest.keep(topic, handle, text);
       handleText(handle, topic, text);
       parts.view.invalidate(true);
     },
-    onTime: (ns) => timeline.time(ns),
+    onTime: (ns) => (timeline.time(ns), changed()),
   });
   const withSlash = (topics) => topics.flatMap((topic) => [topic, `/${topic}`]);
   client.want(withSlash([...handlers.keys()].filter((topic) => !WHOLE_STATE.has(topic))));
@@ -150,25 +161,28 @@ function start() {
     sent: controls.sent,
     screenOf: (x, y, z) => parts.view.screenOf(x, y, z),
   });
-  animate(state, parts, pointer, timeline, latest);
+  scheduler.draw = pageDrawer(state, parts, pointer, timeline, latest);
+  scheduler.wakeNow();
 }
 
-function animate(state, parts, pointer, timeline, latest) {
+// Draws what changed: the 3-D view when due (scene_view.js), the panels at
+// most every panelMs. Returns true when something is left to draw later.
+function pageDrawer(state, parts, pointer, timeline, latest) {
   const clock = new FrameClock(state);
-  let lastPanelMs = -Infinity;
   const panelMs = state.webGlInSoftware ? SOFTWARE_PANEL_MS : PANEL_MS;
-  const frame = (now) => {
+  let lastPanelMs = -Infinity;
+  return (now) => {
     clock.tick(now);
     latest.drain(now);
     pointer.update();
     if (parts.view.render(now)) state.renders++;
-    if (now - lastPanelMs >= panelMs) {
+    if (now - lastPanelMs >= panelMs && state.panelsChanged) {
       lastPanelMs = now;
+      state.panelsChanged = false;
       drawPanels(state, parts, timeline);
     }
-    requestAnimationFrame(frame);
+    return state.panelsChanged || parts.view.dataChanged || latest.pending.size > 0;
   };
-  requestAnimationFrame(frame);
 }
 
 function drawPanels(state, parts, timeline) {

@@ -35,8 +35,9 @@ export function createPageState() {
     netMarked: [],           // places holding tokens now, on the drawing
     colourFrames: 0,
     depthFrames: 0,
-    frameTimeMs: 0,          // rolling mean of requestAnimationFrame intervals
-    frames: 0,               // animation frames
+    panelsChanged: true,     // something the panels show changed since they were drawn
+    frameTimeMs: 0,          // rolling mean of the intervals between the frames drawn
+    frames: 0,               // animation frames drawn (asked for when something changed)
     renders: 0,              // of them, those that drew the 3-D view
     webGlInSoftware: false,  // WebGL drawn on the CPU: fewer, cheaper 3-D frames
     logTimeNs: "0",          // the server's time (Time frames), or the last receive time
@@ -53,7 +54,7 @@ export function runModeName(mode) {
   return RUN_MODES[mode] ?? String(mode);
 }
 
-// Rolling mean of the intervals between animation frames.
+// Rolling mean of the intervals between the frames drawn.
 export class FrameClock {
   constructor(state) {
     this.state = state;

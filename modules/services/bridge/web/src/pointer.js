@@ -16,7 +16,10 @@ export class Pointer {
     this.hover = null;   // the last pointermove, to be raycast on the next frame
     this.down = null;
     const canvas = view.renderer.domElement;
-    canvas.addEventListener("pointermove", (event) => (this.hover = event));
+    canvas.addEventListener("pointermove", (event) => {
+      this.hover = event;
+      if (view.onInteraction) view.onInteraction();
+    });
     canvas.addEventListener("pointerleave", () => ((this.hover = null), this.hide()));
     canvas.addEventListener("pointerdown", (event) => (this.down = { x: event.clientX, y: event.clientY }));
     canvas.addEventListener("pointerup", (event) => this.released(event));

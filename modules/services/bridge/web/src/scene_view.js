@@ -47,6 +47,7 @@ export class SceneView {
     this.needsRender = true;
     this.dataChanged = false;
     this.lastRenderMs = -Infinity;
+    this.onInteraction = null;  // set by the page: a person turned or resized the view
     this.controls.addEventListener("change", () => this.invalidate());
     this.addLights();
     this.ground = this.makeGround();
@@ -121,8 +122,12 @@ export class SceneView {
   // full speed changes the scene a hundred times a second, and drawing each
   // would take a core from the run beside it.
   invalidate(fromData = false) {
-    if (fromData) this.dataChanged = true;
-    else this.needsRender = true;
+    if (fromData) {
+      this.dataChanged = true;
+    } else {
+      this.needsRender = true;
+      if (this.onInteraction) this.onInteraction();
+    }
   }
 
   render(nowMs) {
