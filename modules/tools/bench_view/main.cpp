@@ -26,10 +26,10 @@ std::optional<int> parseOptions(int argc, char** argv, ViewOptions& o) {
                "each run's lockstep ticks per second (from its log: the ticks that started with the page connected; "
                "a viewed run is paused until then), the means and viewed / plain (target >= 0.90, a verdict, not "
                "a failure); then district_large with the viewer at the real-time pace for --seconds: the "
-               "page's median frame time (its rolling mean of animation-frame intervals, read every 2 s) and "
-               "frames per second, how far it is behind the run; and beft-bridge's VmRSS (and CPU time) at the end "
-               "of each viewed run. Without node, chromium or puppeteer-core it says so and prints the runs "
-               "without a viewer.",
+               "page's median frame time (its rolling mean of the intervals between the frames it drew, read "
+               "every 2 s) and frames per second, how far it is behind the run; and beft-bridge's VmRSS (and CPU "
+               "time) at the end of each viewed run. Without node, chromium or puppeteer-core it says so and "
+               "prints the runs without a viewer.",
                "beft-bench-view");
   app.add_option("--ticks", o.ticks, "ticks per yard run")->capture_default_str()->check(CLI::Range(50, 100000));
   app.add_option("--repeat", o.repeat, "yard runs of each kind")->capture_default_str()->check(CLI::Range(1, 20));
