@@ -104,8 +104,10 @@ void FoxgloveHub::onRunMessage(const std::string& channel, const uint8_t* data, 
   if (topic.subscribers.empty()) return;
   try {
     // Converted only if some subscriber is sent it now (not held by its throttle).
-    sendData(topic, [&] { return foxglove::dumpJson(foxglove::lcmToJson(foxglove::beftTypeSet(), *topic.type, data, size)); },
-             receive_ns);
+    const auto as_json = [&] {
+      return foxglove::dumpJson(foxglove::lcmToJson(foxglove::beftTypeSet(), *topic.type, data, size));
+    };
+    sendData(topic, as_json, receive_ns);
   } catch (const std::exception&) {
     // A message that does not decode as its channel's type: the guard counts such refusals for the run.
   }
@@ -300,7 +302,8 @@ void FoxgloveHub::subscribe(Client& client, const foxglove::Subscribe& request) 
     }
     client.subscriptions[wanted.id] = wanted.channel_id;
     topic->second.subscribers[client.info.id] = wanted.id;
-    if (wanted.throttle_ms > 0) client.throttles[wanted.channel_id].interval = std::chrono::milliseconds(wanted.throttle_ms);
+    if (wanted.throttle_ms > 0)
+      client.throttles[wanted.channel_id].interval = std::chrono::milliseconds(wanted.throttle_ms);
     sendKept(client, topic->second, wanted.id);
   }
 }

@@ -71,8 +71,9 @@ class FoxgloveHub : public SessionHandler {
   void broadcastStatus(int level, const std::string& message, const std::string& id = "");
   // Tells clients who lost frames since the last call; call about once a second.
   void reportDrops();
-  // Sends what throttled subscriptions (throttleMs, protocol.hpp) held and
-  // whose time is up at `now`; call every few tens of milliseconds.
+  // Sends each throttled subscription (throttleMs, protocol.hpp) that had a
+  // message held back, and whose time is up at `now`, its channel's newest
+  // message; call every few tens of milliseconds.
   void sendThrottled(std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now());
   // Forgets the kept messages (a seek): what a new subscriber is sent first.
   void forgetKept() { kept_.clear(); }

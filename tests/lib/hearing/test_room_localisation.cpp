@@ -12,12 +12,18 @@
 namespace beft::hearing {
 namespace {
 
-TEST(RoomLocalisation, TheReverberantProfileFindsTwoTalkersInARoom) {
-  const BinauralRenderer renderer(HrirSet::loadKemar(), trials::kRate);
+// The room of T60 0.6 s (reflections to order 2 and the tail) and the
+// reverberant profile's trials in it.
+class RoomLocalisation : public ::testing::Test {
+ protected:
+  const BinauralRenderer renderer{HrirSet::loadKemar(), trials::kRate};
   const trials::TrialRoom room = trials::trialRoom(0.6, renderer.hrirs(), 2);
+  trials::RoomTrials reverberant{renderer,
+                                 BlockLocaliser(InterauralTemplates::fromSofa(), LocaliserConfig::reverberant())};
+};
+
+TEST_F(RoomLocalisation, TheReverberantProfileFindsTwoTalkersInARoom) {
   trials::RoomTrials plain(renderer, BlockLocaliser(InterauralTemplates::fromSofa()));
-  trials::RoomTrials reverberant(renderer,
-                                 BlockLocaliser(InterauralTemplates::fromSofa(), LocaliserConfig::reverberant()));
   const trials::RoomFigures before = plain.run(room, 2, 40, 7, 1, 1);
   const trials::RoomFigures after = reverberant.run(room, 2, 40, 7, 1, 1);
   std::printf("T60 0.6 s, two talkers: within 5 deg %.3f (defaults), %.3f (reverberant); front-back after the "
@@ -29,11 +35,7 @@ TEST(RoomLocalisation, TheReverberantProfileFindsTwoTalkersInARoom) {
   EXPECT_LE(after.median_error_deg, 3.0);
 }
 
-TEST(RoomLocalisation, ListeningHalfASecondAtEachPoseFindsTheThirdTalker) {
-  const BinauralRenderer renderer(HrirSet::loadKemar(), trials::kRate);
-  const trials::TrialRoom room = trials::trialRoom(0.6, renderer.hrirs(), 2);
-  trials::RoomTrials reverberant(renderer,
-                                 BlockLocaliser(InterauralTemplates::fromSofa(), LocaliserConfig::reverberant()));
+TEST_F(RoomLocalisation, ListeningHalfASecondAtEachPoseFindsTheThirdTalker) {
   const trials::RoomFigures one_block = reverberant.run(room, 3, 30, 11, 1, 1);
   const trials::RoomFigures listening = reverberant.run(room, 3, 30, 11, 1, 5);
   std::printf("T60 0.6 s, three talkers: within 5 deg %.3f (0.1 s at each pose), %.3f (0.5 s); front-back after "

@@ -23,10 +23,9 @@ import { FrameScheduler } from "./frame_scheduler.js";
 const byId = (id) => document.getElementById(id);
 
 // Camera images are the bulk of a run's traffic (a raw frame is a megabyte
-// of base64): only the newest of each is decoded, at most every
-// LATEST_ONLY_MS, so that a page on a slow machine keeps up with the rest.
+// of base64): only the newest of each is decoded, on the panels' cadence,
+// so that a page on a slow machine keeps up with the rest.
 const LATEST_ONLY = new Set(["/camera/color", "/camera/depth"]);
-const LATEST_ONLY_MS = 250;
 
 // Topics whose every message holds the whole of what it shows (changes are
 // relative to the last keyframe): the bridge need send only the newest every
@@ -37,8 +36,8 @@ const WHOLE_STATE = new Set(["ROBOT_STATE", "GT_VERSION", "MARKING", "TASK_STACK
   "HYPOTHESIS_CHANGES", "OBSTACLE_MAP_CHANGES", "RUN_STATUS", "RUN_CONTROL_STATE"]);
 const WHOLE_STATE_THROTTLE_MS = 50;
 
-// The text panels, the weights plot and the status line are drawn at most
-// this often [ms]: each drawing lays out and paints the page, which at a
+// The text panels, the weights plot, the camera images and the status line
+// are drawn at most this often [ms]: each drawing lays out and paints the page, which at a
 // run's full speed (a hundred messages a second) would take a core.
 const PANEL_MS = 250;
 // When the browser draws in software (scene_view.js), every drawing is
@@ -113,7 +112,8 @@ function start() {
   state.webGlInSoftware = parts.view.software;
   const timeline = new Timeline(state, byId("seek"));
   const handlers = topicHandlers(state, parts);
-  const latest = new LatestOnly(state.webGlInSoftware ? SOFTWARE_PANEL_MS : LATEST_ONLY_MS);
+  const panelMs = state.webGlInSoftware ? SOFTWARE_PANEL_MS : PANEL_MS;
+  const latest = new LatestOnly(panelMs);
   const scheduler = new FrameScheduler(() => false);
   // What the run or the server changed: drawn at the next poll.
   const changed = () => {
@@ -161,15 +161,14 @@ function start() {
     sent: controls.sent,
     screenOf: (x, y, z) => parts.view.screenOf(x, y, z),
   });
-  scheduler.draw = pageDrawer(state, parts, pointer, timeline, latest);
+  scheduler.draw = pageDrawer(state, parts, pointer, timeline, latest, panelMs);
   scheduler.wakeNow();
 }
 
 // Draws what changed: the 3-D view when due (scene_view.js), the panels at
 // most every panelMs. Returns true when something is left to draw later.
-function pageDrawer(state, parts, pointer, timeline, latest) {
+function pageDrawer(state, parts, pointer, timeline, latest, panelMs) {
   const clock = new FrameClock(state);
-  const panelMs = state.webGlInSoftware ? SOFTWARE_PANEL_MS : PANEL_MS;
   let lastPanelMs = -Infinity;
   return (now) => {
     clock.tick(now);

@@ -28,8 +28,8 @@ THREE.Object3D.DEFAULT_UP.set(0, 0, 1);
 export class SceneView {
   constructor(container) {
     this.container = container;
-    // In software: no multisampling and one pixel per CSS pixel, a quarter
-    // of the work or less, and half as many frames.
+    // In software: no multisampling and one pixel per CSS pixel (a quarter
+    // of the work or less), and at most two frames a second.
     this.software = webGlInSoftware();
     this.dataFrameMs = this.software ? SOFTWARE_DATA_FRAME_MS : DATA_FRAME_MS;
     this.renderer = new THREE.WebGLRenderer({ antialias: !this.software, preserveDrawingBuffer: true });
