@@ -106,7 +106,7 @@ struct LocaliserConfig {
   // (weight_exponent 0: weighed by amplitude, the loudest talker's bins
   // and the tail it leaves hold most of the weight; counted alike, each
   // talker's glimpses count). In the rooms of ./beft bench hearing (T60
-  // 0.6 s, one head turn) it lifts two talkers within 5 degrees from 0.72
+  // 0.6 s, one head turn, one 0.1 s block at each pose) it lifts two talkers within 5 degrees from 0.72
   // to 0.88 and three from 0.52 to 0.69. It is not the default: in the
   // free field it costs what the defaults are tuned for, a steady or
   // narrow-band sound beside another (onsets are a talker's, not an

@@ -50,10 +50,10 @@ struct Options {
   std::string sounds_dir = trials::scenarioSoundsDir();
   bool missions = true;
   bool rooms = true;
-  int room_trials = 100;
+  int room_trials = 300;
   std::vector<double> room_t60s = {0.0, 0.3, 0.6, 0.9};
-  std::vector<int> room_turns = {1, 2};
-  int room_listen_blocks = 1;  // 0.1 s blocks heard at each pose (the audio expert's: one)
+  std::vector<int> room_turns = {1};
+  int room_listen_blocks = trials::kSentenceBlocksPerPose;  // 0.1 s blocks heard at each pose
   bool json = false;
 };
 
@@ -219,7 +219,7 @@ std::optional<int> parseOptions(int argc, char** argv, Options& o) {
       ->capture_default_str()
       ->check(CLI::Range(1, 8));
   app.add_option("--room-listen-blocks", o.room_listen_blocks,
-                 "consecutive 0.1 s blocks heard at each pose of the head in the rooms (1: what the audio expert localises)")
+                 "consecutive 0.1 s blocks heard at each pose of the head in the rooms (1: one block, as the audio expert localises each)")
       ->capture_default_str()
       ->check(CLI::Range(1, 10));
   app.add_flag("--json", o.json, "print one JSON object of the figures");

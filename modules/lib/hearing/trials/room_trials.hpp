@@ -10,9 +10,10 @@
 // absorption gives Eyring's T60 the T60 asked for, rendered by
 // BinauralRenderer with image sources up to order 2 and the diffuse tail;
 // the free field (T60 0) is the renderer without a room. Each trial hears
-// the head still, then turned by kDefaultResolvingTurnDeg: at each pose one
-// block of 0.1 s, as the audio expert localises each block, or (to measure
-// what listening longer would give) several consecutive ones.
+// the head still, then turned by kDefaultResolvingTurnDeg: at each pose
+// several consecutive blocks of 0.1 s localised as one signal (./beft bench
+// hearing: 8, so that a trial hears about a short sentence, as theirs do),
+// or one, as the audio expert localises each block.
 #pragma once
 
 #include <cstdint>
@@ -45,6 +46,10 @@ struct RoomFigures {
   double front_back_static = 0;
   double front_back_after_turn = 0;  // the same after the turn
 };
+
+// Blocks heard at each pose by ./beft bench hearing: 0.8 s before the turn
+// and 0.8 s after it, about a short sentence.
+inline constexpr int kSentenceBlocksPerPose = 8;
 
 // The room of one T60 (0: none): 16 x 12 x 4 m, listener at (6, 5, 1.6).
 struct TrialRoom {
