@@ -37,7 +37,17 @@ async function launchBrowser() {
   return puppeteer.launch({
     executablePath,
     headless: true,
-    args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist",
+    // A person's browser has no debugger attached. Puppeteer's network
+    // monitor would have Chromium send every WebSocket frame the page
+    // receives to node over the DevTools protocol (base64, as JSON): work
+    // on the run's cores that watching does not cost.
+    networkEnabled: false,
+    issuesEnabled: false,
+    // WebGL by SwiftShader, the page composited in software: what Chromium
+    // does on a machine without a GPU (--ignore-gpu-blocklist would have it
+    // composite every frame through SwiftShader's GL instead, at several
+    // times the CPU, which no browser there does by itself).
+    args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-gpu-compositing",
       "--window-size=1400,900"],
     defaultViewport: { width: 1400, height: 900 },
   });

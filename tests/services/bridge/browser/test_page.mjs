@@ -78,10 +78,13 @@ async function livePage(checks, browser) {
     for (let i = 0; i < 50 && !TOPICS.every((t) => bridge.subscribed(t)); i++) await sleep(100);
     assert.deepEqual(TOPICS.filter((t) => !bridge.subscribed(t)), []);
   });
-  await checks.run("asks the bridge to throttle whole-state topics only, never keyframes, weights or log lines", async () => {
+  await checks.run("asks the bridge to throttle whole-state topics and cameras only, never keyframes, weights or log lines", async () => {
     for (const topic of ["ROBOT_STATE", "MARKING", "TASK_STACK", "HYPOTHESIS_CHANGES", "OBSTACLE_MAP_CHANGES"])
       assert.ok(bridge.throttles.get(topic) > 0 && bridge.throttles.get(topic) <= 100, `${topic}: ${bridge.throttles.get(topic)}`);
-    for (const topic of ["GT_OBJECTS", "HYPOTHESES", "OBSTACLE_MAP", "DYNAMIC_WEIGHTS", "/log", "/camera/color"])
+    // The cameras at the panels' cadence: no more often than the page draws them.
+    const panelMs = await page.evaluate(() => (window.beft.webGlInSoftware ? 500 : 250));
+    for (const topic of ["/camera/color", "/camera/depth"]) assert.equal(bridge.throttles.get(topic), panelMs, topic);
+    for (const topic of ["GT_OBJECTS", "HYPOTHESES", "OBSTACLE_MAP", "DYNAMIC_WEIGHTS", "/log"])
       assert.equal(bridge.throttles.get(topic), 0, topic);
   });
   sendScene(bridge);

@@ -24,7 +24,9 @@ const byId = (id) => document.getElementById(id);
 
 // Camera images are the bulk of a run's traffic (a raw frame is a megabyte
 // of base64): only the newest of each is decoded, on the panels' cadence,
-// so that a page on a slow machine keeps up with the rest.
+// so that a page on a slow machine keeps up with the rest; and the bridge
+// is asked for no more than that (throttleMs: the panels' cadence), so that
+// the frames the page would drop are neither converted, sent nor received.
 const LATEST_ONLY = new Set(["/camera/color", "/camera/depth"]);
 
 // Topics whose every message holds the whole of what it shows (changes are
@@ -150,8 +152,10 @@ function start() {
     onTime: (ns) => (timeline.time(ns), changed()),
   });
   const withSlash = (topics) => topics.flatMap((topic) => [topic, `/${topic}`]);
-  client.want(withSlash([...handlers.keys()].filter((topic) => !WHOLE_STATE.has(topic))));
+  const throttled = (topic) => WHOLE_STATE.has(topic) || LATEST_ONLY.has(topic) || LATEST_ONLY.has(`/${topic}`);
+  client.want(withSlash([...handlers.keys()].filter((topic) => !throttled(topic))));
   client.want(withSlash([...WHOLE_STATE]), WHOLE_STATE_THROTTLE_MS);
+  client.want(withSlash([...LATEST_ONLY].map((topic) => topic.replace(/^\//, ""))), panelMs);
   const controls = new Controls(client);
   wireButtons(controls, timeline);
   const pointer = new Pointer(parts.view, parts, controls, byId("tooltip"));
