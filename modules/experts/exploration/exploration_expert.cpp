@@ -88,6 +88,9 @@ void ExplorationExpert::declareParameters(DeclaredParameters& parameters) {
                      "viewpoints of a hypothesis the map rules out on the way (a wall mapped in the line of sight) "
                      "before any look from elsewhere, up to which it is not given up; once looked at, a ruled-out "
                      "viewpoint counts as an attempt");
+  parameters.declare("ruled_out_while_mapping", e.ruled_out_while_mapping, 0, 1000,
+                     "viewpoints ruled out while a frontier lies within max_view_m of the target (the walls around "
+                     "it still being mapped) that do not count against ruled_out_viewpoints, at most");
   parameters.declare("inspect_glimpsed", e.inspect_glimpsed, "approach hypotheses glimpsed by vision that may be persons");
   parameters.declare("look_dwell_s", e.look_dwell_s, 0, kNoLimit, "after looking, wait this long for fusion to settle [s]");
   parameters.declare("attempt_timeout_s", e.attempt_timeout_s, 0, kNoLimit,

@@ -286,7 +286,8 @@ void Explorer::revalidate(const Observation& o, Decision& d) {
   // behind walls being mapped piece by piece is not given up for it); after,
   // it is one more way of seeing it that failed.
   if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect) {
-    if (targets_[job.object_id].attempts == 0) recordRuledOut(job.object_id, {job.x, job.y}, why, d);
+    if (targets_[job.object_id].attempts == 0)
+      recordRuledOut(job.object_id, {job.x, job.y}, why, surroundingsBeingMapped(o, job.object_id), d);
     else recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
   }
   if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
@@ -348,17 +349,35 @@ void Explorer::recordFailedAttempt(const std::string& object_id, const Point& vi
   }
 }
 
+bool Explorer::surroundingsBeingMapped(const Observation& o, const std::string& object_id) {
+  const KnownMap* map = knownMap(o);
+  const HypothesisView* h = findHypothesis(o, object_id);
+  return map != nullptr && h != nullptr && frontierNear(*map, memory_, h->x, h->y, parameters_.viewpoints.max_distance_m);
+}
+
+// A house mapped wall by wall rules out one viewpoint outside a closed side
+// after another before the robot has seen its open side: those do not count
+// until the walls around the target are mapped (or too many were).
 void Explorer::recordRuledOut(const std::string& object_id, const Point& viewpoint, const std::string& why,
-                              Decision& d) {
+                              bool while_mapping, Decision& d) {
   TargetMemory& memory = targets_[object_id];
   ++memory.ruled_out;
   memory.tried.push_back(viewpoint);
   d.log.push_back(object_id + ": viewpoint " + at(viewpoint.x, viewpoint.y) + " ruled out (" + why + ")");
   memory.why = "viewpoint " + at(viewpoint.x, viewpoint.y) + " ruled out (" + why + ")";
-  if (memory.ruled_out >= parameters_.ruled_out_viewpoints) {
+  if (while_mapping && memory.ruled_out_while_mapping < parameters_.ruled_out_while_mapping) {
+    ++memory.ruled_out_while_mapping;
+    return;
+  }
+  if (memory.ruled_out - memory.ruled_out_while_mapping >= parameters_.ruled_out_viewpoints) {
     memory.given_up = true;
-    memory.why = "given up after " + std::to_string(memory.ruled_out) + " viewpoints ruled out, the last: " + why;
-    d.log.push_back(object_id + ": given up after " + std::to_string(memory.ruled_out) + " viewpoints ruled out");
+    const std::string count =
+        std::to_string(memory.ruled_out) + " viewpoints ruled out" +
+        (memory.ruled_out_while_mapping > 0
+             ? " (" + std::to_string(memory.ruled_out_while_mapping) + " while its surroundings were being mapped)"
+             : "");
+    memory.why = "given up after " + count + ", the last: " + why;
+    d.log.push_back(object_id + ": given up after " + count);
   }
 }
 

@@ -100,6 +100,11 @@ struct ExplorerParameters {
   int verify_attempts = 4;             // viewpoints per heard hypothesis before giving up
   int inspect_attempts = 2;            // viewpoints per glimpsed hypothesis
   int ruled_out_viewpoints = 12;       // viewpoints the map rules out on the way before a first look (no attempt)
+  // Of those, viewpoints ruled out while a frontier lies within the
+  // viewpoints' max_distance_m of the target (the walls around it still
+  // being mapped, its open side perhaps not yet seen) do not count, up to
+  // this many in all.
+  int ruled_out_while_mapping = 36;
   bool inspect_glimpsed = true;
   double inspect_person_margin = 0.0; // glimpsed: person within this of the best category
   double look_dwell_s = 1.5;           // after looking, wait this long for fusion to settle
@@ -154,6 +159,7 @@ class Explorer {
   struct TargetMemory {
     int attempts = 0;                // viewpoints tried: reached, looked from, still unsettled
     int ruled_out = 0;               // viewpoints the map ruled out before the robot got there
+    int ruled_out_while_mapping = 0; // of those, not counted: its surroundings were still being mapped
     std::vector<Point> tried;
     bool given_up = false;
     bool no_viewpoint = false;       // the last search found no viewpoint
@@ -178,7 +184,10 @@ class Explorer {
   void revalidate(const Observation& o, Decision& d);
   void endJob(const Observation& o, Decision& d, bool success, const std::string& reason, bool finish_on_stack);
   void recordFailedAttempt(const std::string& object_id, const Point& viewpoint, const std::string& why, Decision& d);
-  void recordRuledOut(const std::string& object_id, const Point& viewpoint, const std::string& why, Decision& d);
+  void recordRuledOut(const std::string& object_id, const Point& viewpoint, const std::string& why,
+                      bool while_mapping, Decision& d);
+  // Whether a frontier lies within the viewpoints' reach of a target.
+  bool surroundingsBeingMapped(const Observation& o, const std::string& object_id);
   void finishStrayComposites(const Observation& o, Decision& d);
   bool jobStillValid(const Observation& o, std::string& why);
 

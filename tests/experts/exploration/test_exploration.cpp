@@ -762,6 +762,44 @@ TEST_F(ExplorerRun, AViewpointTheMapRulesOutIsNotAnAttempt) {
   EXPECT_TRUE(explorer.givenUp("victim1"));  // after two ruled out
 }
 
+// While the target's surroundings are still being mapped (here: an unknown
+// patch within the viewpoints' reach of it, so a frontier is near), the
+// viewpoints the map rules out do not count, up to ruled_out_while_mapping:
+// a house mapped wall by wall is not given up before its open side is seen.
+TEST_F(ExplorerRun, ViewpointsRuledOutWhileTheSurroundingsAreMappedDoNotCount) {
+  parameters.verify_attempts = 1;
+  parameters.ruled_out_viewpoints = 2;
+  parameters.ruled_out_while_mapping = 2;
+  explorer = Explorer(parameters);
+  const auto beingMapped = [] {
+    auto cells = wallWorld();
+    fillRect(cells, 15.0, 13.0, 17.0, 15.0, kUnknown);  // 4.2 to 7.1 m from the target
+    return cells;
+  };
+  setMap(beingMapped());
+  lookAround();
+  observation.hypotheses = {hidden()};
+  tick();  // ends the look-around, pushes the first verify composite
+  for (int ruled_out = 0; ruled_out < 4; ++ruled_out) {
+    EXPECT_FALSE(explorer.givenUp("victim1")) << "after " << ruled_out << " ruled out";
+    const auto subs = pushesOf(tick());
+    ASSERT_EQ(subs.size(), 2u) << "viewpoint " << ruled_out;
+    ASSERT_EQ(subs[0].kind, "goto");
+    auto cells = beingMapped();
+    const double mx = 0.5 * (subs[0].x + 12.0), my = 0.5 * (subs[0].y + 10.0);
+    fillRect(cells, mx - 0.6, my - 0.6, mx + 0.6, my + 0.6, kOccupied);
+    setMap(cells);
+    const size_t finishes = stack.finishes.size();
+    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();
+    ASSERT_EQ(stack.finishes.size(), finishes + 1);
+    EXPECT_EQ(explorer.attempts("victim1"), 0);
+    setMap(beingMapped());
+  }
+  // Two while mapping, then the two the limit allows.
+  EXPECT_TRUE(explorer.givenUp("victim1"));
+  EXPECT_EQ(explorer.triedViewpoints("victim1").size(), 4u);
+}
+
 // Once the target was looked at from somewhere, a viewpoint the map rules
 // out counts as one more failed attempt.
 TEST_F(ExplorerRun, AfterALookARuledOutViewpointIsAnAttempt) {
