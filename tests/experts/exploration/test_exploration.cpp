@@ -618,6 +618,24 @@ class ExplorerRun : public ::testing::Test {
   }
   // Runs the look-around until its turns are done; the next tick ends it
   // and decides what comes next.
+  // The next verify viewpoint of victim1 (at 12, 10) is pushed; on the way a
+  // wall is mapped into `map` between it and the target, which rules it out
+  // (the job ends); then `map` is back. Its goal is added to `goals`.
+  void ruleOutNextViewpoint(const planners::ObstacleCells& map, std::vector<Point>& goals) {
+    const auto subs = pushesOf(tick());
+    ASSERT_EQ(subs.size(), 2u) << "viewpoint " << goals.size();
+    ASSERT_EQ(subs[0].kind, "goto");
+    goals.push_back({subs[0].x, subs[0].y});
+    auto cells = map;
+    const double mx = 0.5 * (subs[0].x + 12.0), my = 0.5 * (subs[0].y + 10.0);
+    fillRect(cells, mx - 0.6, my - 0.6, mx + 0.6, my + 0.6, kOccupied);
+    setMap(cells);
+    const size_t finishes = stack.finishes.size();
+    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();
+    ASSERT_EQ(stack.finishes.size(), finishes + 1);
+    setMap(map);
+  }
+
   void lookAround() {
     tick();  // pushes the composite
     tick();  // pushes its turns
@@ -743,20 +761,9 @@ TEST_F(ExplorerRun, AViewpointTheMapRulesOutIsNotAnAttempt) {
   tick();  // ends the look-around, pushes the first verify composite
   std::vector<Point> goals;
   for (int ruled_out = 0; ruled_out < 2; ++ruled_out) {
-    const auto subs = pushesOf(tick());
-    ASSERT_EQ(subs.size(), 2u) << "viewpoint " << ruled_out;
-    ASSERT_EQ(subs[0].kind, "goto");
-    goals.push_back({subs[0].x, subs[0].y});
     // On the way, a wall is mapped right in front of the target, on the viewpoint's side.
-    auto cells = wallWorld();
-    const double mx = 0.5 * (subs[0].x + 12.0), my = 0.5 * (subs[0].y + 10.0);
-    fillRect(cells, mx - 0.6, my - 0.6, mx + 0.6, my + 0.6, kOccupied);
-    setMap(cells);
-    const size_t finishes = stack.finishes.size();
-    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();
-    ASSERT_EQ(stack.finishes.size(), finishes + 1);
+    ASSERT_NO_FATAL_FAILURE(ruleOutNextViewpoint(wallWorld(), goals));
     EXPECT_EQ(explorer.attempts("victim1"), 0);
-    setMap(wallWorld());
   }
   EXPECT_GE(std::hypot(goals[0].x - goals[1].x, goals[0].y - goals[1].y), parameters.viewpoints.tried_radius_m);
   EXPECT_TRUE(explorer.givenUp("victim1"));  // after two ruled out
@@ -780,20 +787,11 @@ TEST_F(ExplorerRun, ViewpointsRuledOutWhileTheSurroundingsAreMappedDoNotCount) {
   lookAround();
   observation.hypotheses = {hidden()};
   tick();  // ends the look-around, pushes the first verify composite
+  std::vector<Point> goals;
   for (int ruled_out = 0; ruled_out < 4; ++ruled_out) {
     EXPECT_FALSE(explorer.givenUp("victim1")) << "after " << ruled_out << " ruled out";
-    const auto subs = pushesOf(tick());
-    ASSERT_EQ(subs.size(), 2u) << "viewpoint " << ruled_out;
-    ASSERT_EQ(subs[0].kind, "goto");
-    auto cells = beingMapped();
-    const double mx = 0.5 * (subs[0].x + 12.0), my = 0.5 * (subs[0].y + 10.0);
-    fillRect(cells, mx - 0.6, my - 0.6, mx + 0.6, my + 0.6, kOccupied);
-    setMap(cells);
-    const size_t finishes = stack.finishes.size();
-    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();
-    ASSERT_EQ(stack.finishes.size(), finishes + 1);
+    ASSERT_NO_FATAL_FAILURE(ruleOutNextViewpoint(beingMapped(), goals));
     EXPECT_EQ(explorer.attempts("victim1"), 0);
-    setMap(beingMapped());
   }
   // Two while mapping, then the two the limit allows.
   EXPECT_TRUE(explorer.givenUp("victim1"));
