@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "lib/common/channels.hpp"
 #include "experts/audio/heard_percepts.hpp"
@@ -23,7 +24,8 @@ std::string AudioExpert::description() const {
          "the label its sound suggests, its activity and level. Reads GT_OBJECTS and ROBOT_STATE "
          "of the fired tick, writes AUDIO. With --param acoustics=binaural (./beft run --acoustics binaural) "
          "p_hat comes from what the ears heard (EARS): each block localised against interaural templates of "
-         "the MIT KEMAR head (libmysofa), its peaks matched to the sounding objects by spectrum, a world-frame "
+         "the MIT KEMAR head (libmysofa), its peaks matched to the sounding objects by spectrum (among objects of one "
+         "sound, a peak from where vision placed one, by HYPOTHESES of the tick before, is that one's), a world-frame "
          "direction per object kept over the blocks (a turning head resolves front and back; when it stays "
          "ambiguous a turn_head task is pushed on TASK_COMMAND), the distance triangulated over the robot's "
          "own motion; O_a is computed for a source at p_hat. To run it alone: start beft-world and feed FIRE "
@@ -49,6 +51,10 @@ void AudioExpert::declareParameters(DeclaredParameters& parameters) {
                            "when the scenario has <acoustics>");
   parameters.declare("default_distance_m", hearing_config_.default_distance_m, 0.5, 50,
                      "binaural: distance of an estimate before the bearings cross [m]");
+  parameters.declare("seen_explains_deg", hearing_config_.seen_explains_deg, 0, 45,
+                     "binaural: among objects of one sound, a peak this near the direction of one that vision has "
+                     "placed (HYPOTHESES of the tick before), or of its mirror image, is that one's, and a seen one "
+                     "takes only those (0: spectra and tracks only) [deg]");
   parameters.declare("turn_deg", hearing_config_.turn_deg, 5, 60,
                      "binaural: head turn asked for when front and back cannot be told apart [deg]");
   parameters.declare("turn_priority", turn_priority_, 0, 1000, "binaural: priority of that turn_head task");
@@ -58,6 +64,7 @@ void AudioExpert::declareParameters(DeclaredParameters& parameters) {
 
 void AudioExpert::onStartUp() {
   config_.noise.seed = static_cast<uint64_t>(seed_);
+  placed_.readTheTickBefore();
   if (acoustics_ != Acoustics::Binaural) return;
   auto templates = hearing::InterauralTemplates::fromSofa();
   const double rate = templates.layout().sample_rate;
@@ -95,7 +102,11 @@ bool AudioExpert::admitBlock(binaural_block_t& block, std::string* why) {
 
 bool AudioExpert::inputsReady(const expert::Firing& firing) const {
   const bool heard = acoustics_ != Acoustics::Binaural || ears_.has(firing.tick);
-  return scene_.has(firing.tick) && robot_.has(firing.tick) && heard;
+  // The hypotheses of the tick before, while the fusion publishes them (a
+  // net without it, or the first ticks, go without).
+  const hypotheses_t* placed = acoustics_ == Acoustics::Binaural ? placed_.latest() : nullptr;
+  const bool placed_missing = placed != nullptr && placed->tick >= firing.tick - 2 && placed->tick < firing.tick - 1;
+  return scene_.has(firing.tick) && robot_.has(firing.tick) && heard && !placed_missing;
 }
 
 const hearing::BandSignature* AudioExpert::signatureOf(const std::string& sound) {
@@ -109,6 +120,23 @@ const hearing::BandSignature* AudioExpert::signatureOf(const std::string& sound)
     found = signatures_.emplace(sound, std::move(signature)).first;
   }
   return found->second ? &*found->second : nullptr;
+}
+
+// The objects that sound now, each with where vision placed it (the fusion's
+// position of a hypothesis that was seen) at the tick before.
+std::vector<SoundingObject> AudioExpert::soundingObjects(const expert::Firing& firing, const scene_objects_t& scene) {
+  std::unordered_map<std::string, Eigen::Vector2d> seen_at;
+  if (const hypotheses_t* placed = placed_.ofTick(firing.tick - 1))
+    for (const auto& h : placed->hypotheses)
+      if (h.seen && std::isfinite(h.x) && std::isfinite(h.y)) seen_at.emplace(h.object_id, Eigen::Vector2d(h.x, h.y));
+  std::vector<SoundingObject> sounding;
+  for (const auto& object : scene.objects) {
+    if (!geometry::isSounding(object)) continue;
+    SoundingObject heard{object.id, signatureOf(object.sound), std::nullopt};
+    if (const auto found = seen_at.find(object.id); found != seen_at.end()) heard.seen_at = found->second;
+    sounding.push_back(std::move(heard));
+  }
+  return sounding;
 }
 
 void AudioExpert::askForHeadTurn(const expert::Firing& firing, const robot_state_t& robot, expert::Output& out) {
@@ -145,10 +173,7 @@ expert::Outcome AudioExpert::fireHearing(const expert::Firing& firing, const sce
     left.clear();
     right.clear();
   }
-  std::vector<SoundingObject> sounding;
-  for (const auto& object : scene.objects)
-    if (geometry::isSounding(object)) sounding.push_back({object.id, signatureOf(object.sound)});
-  heard_->hear(localiser_->localise(left, right), *block, sounding);
+  heard_->hear(localiser_->localise(left, right), *block, soundingObjects(firing, scene));
   solids_.update(scene);
   audio_out_.publish(out, heardPercepts(scene, solids_.solids(), robot, *heard_));
   askForHeadTurn(firing, robot, out);

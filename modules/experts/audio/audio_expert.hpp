@@ -1,5 +1,6 @@
 // The audio expert as a process (low level): stores GT_OBJECTS and
-// ROBOT_STATE (and EARS with acoustics=binaural), and on FIRE for tick k
+// ROBOT_STATE (and, with acoustics=binaural, EARS and the HYPOTHESES of the
+// tick before), and on FIRE for tick k
 // publishes AUDIO for tick k (and, hearing, a head turn on TASK_COMMAND when
 // front and back cannot be told apart).
 #pragma once
@@ -17,6 +18,7 @@
 #include "lib/hearing/band_signature.hpp"
 #include "lib/hearing/block_localiser.hpp"
 #include "lib/expert/expert.hpp"
+#include "lib/expert/hypotheses_input.hpp"
 #include "lib/expert/scene_input.hpp"
 #include "experts/audio/heard_sources.hpp"
 #include "lib/expert/helper_task.hpp"
@@ -45,6 +47,7 @@ class AudioExpert : public expert::Expert {
   expert::Outcome fireHearing(const expert::Firing& firing, const scene_objects_t& scene,
                               const robot_state_t& robot, expert::Output& out);
   const hearing::BandSignature* signatureOf(const std::string& sound);
+  std::vector<SoundingObject> soundingObjects(const expert::Firing& firing, const scene_objects_t& scene);
   void askForHeadTurn(const expert::Firing& firing, const robot_state_t& robot, expert::Output& out);
 
   AudioConfig config_;
@@ -64,6 +67,9 @@ class AudioExpert : public expert::Expert {
   expert::SceneInput scene_{*this};
   expert::TickInput<robot_state_t> robot_{*this, channels::kRobotState};
   expert::TickInput<binaural_block_t> ears_{*this, channels::kEars, 16, admitBlock, /*optional_until_heard=*/true};
+  // Binaural: where vision placed the objects, as the fusion (which fires
+  // after this expert in a tick) said at the tick before.
+  expert::HypothesesInput placed_{*this};
   expert::OutputPort<acoustic_percepts_t> audio_out_{*this, channels::kAudio};
   expert::OutputPort<task_command_t> task_command_out_{*this, channels::kTaskCommand};
   camera::SceneSolids solids_;      // of the scene last fired

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <set>
 #include <tuple>
+#include <vector>
 
 namespace beft::audio {
 namespace {
@@ -62,20 +65,55 @@ void HeardSources::hear(const hearing::BlockLocalisation& heard, const binaural_
   last_head_yaw_ = block.head_yaw;
   if (heard.silent() || heard.peaks.empty()) return;
 
+  // How alike each peak's spectrum is to each object's sound (0: not comparable).
+  std::vector<std::vector<double>> similarity(heard.peaks.size(), std::vector<double>(sounding.size(), 0.0));
+  for (std::size_t p = 0; p < heard.peaks.size(); ++p)
+    for (std::size_t o = 0; o < sounding.size(); ++o)
+      if (sounding[o].signature != nullptr)
+        similarity[p][o] = hearing::signatureSimilarity(heard.peaks[p].signature, *sounding[o].signature);
+  // Objects of one sound (one signature) cannot be told apart by their
+  // spectra: among them, a peak from where one of them was seen (or from
+  // its front-back mirror image) is that one's, and a seen one takes only
+  // those.
+  std::map<const hearing::BandSignature*, int> objects_of_sound;
+  for (const auto& object : sounding)
+    if (object.signature != nullptr) ++objects_of_sound[object.signature];
+  const Eigen::Vector2d head(block.head_x, block.head_y);
+  std::vector<std::vector<bool>> seen_there(heard.peaks.size(), std::vector<bool>(sounding.size(), false));
+  std::vector<std::set<const hearing::BandSignature*>> explained(heard.peaks.size());  // sounds seen there
+  for (std::size_t o = 0; o < sounding.size() && config_.seen_explains_deg > 0; ++o) {
+    if (!sounding[o].seen_at || sounding[o].signature == nullptr) continue;
+    const Eigen::Vector2d to = *sounding[o].seen_at - head;
+    const double bearing = std::atan2(to.y(), to.x()) * 180.0 / M_PI;
+    for (std::size_t p = 0; p < heard.peaks.size(); ++p) {
+      const double azimuth = heard.peaks[p].azimuth_deg;
+      const auto near = [&](double head_deg) {
+        return hearing::angularDistance(hearing::wrapDegrees(block.head_yaw + head_deg), bearing) <=
+               config_.seen_explains_deg;
+      };
+      if (to.norm() < 1e-6 || near(azimuth) || near(hearing::frontBackMirror(azimuth))) {
+        seen_there[p][o] = true;
+        explained[p].insert(sounding[o].signature);
+      }
+    }
+  }
+  const auto placedByDirection = [&](std::size_t p, std::size_t o) {  // true: may take the peak
+    if (!(config_.seen_explains_deg > 0) || objects_of_sound[sounding[o].signature] < 2) return true;
+    return sounding[o].seen_at ? seen_there[p][o] : explained[p].count(sounding[o].signature) == 0;
+  };
+
   // Every (peak, object) pair whose spectra match, best first.
   std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;  // (score, peak, object)
   for (std::size_t p = 0; p < heard.peaks.size(); ++p) {
     const double world_deg = hearing::wrapDegrees(block.head_yaw + heard.peaks[p].azimuth_deg);
     for (std::size_t o = 0; o < sounding.size(); ++o) {
-      if (sounding[o].signature == nullptr) continue;
-      const double similarity = hearing::signatureSimilarity(heard.peaks[p].signature, *sounding[o].signature);
-      if (similarity < config_.min_similarity) continue;
+      if (similarity[p][o] < config_.min_similarity || !placedByDirection(p, o)) continue;
       double agreement = 0;  // heard from there before: how likely that direction was
       if (const auto track = tracks_.find(sounding[o].id); track != tracks_.end() && !track->second.world.isFlat()) {
         const double top = track->second.world.at(track->second.world.mostLikely());
         agreement = top > 0 ? track->second.world.at(world_deg) / top : 0;
       }
-      pairs.emplace_back(similarity + 0.2 * agreement, p, o);
+      pairs.emplace_back(similarity[p][o] + 0.2 * agreement, p, o);
     }
   }
   std::stable_sort(pairs.begin(), pairs.end(),

@@ -3,8 +3,12 @@
 // (hearing::BlockLocaliser: a posterior over head-relative azimuth and its
 // peaks, each with the band spectrum of what voted for it); each peak is
 // given to the sounding object whose sound has the most similar spectrum
-// (ties broken by the direction the object was heard in before); each
-// object keeps
+// (ties broken by the direction the object was heard in before). Objects
+// of one sound (the same signature) cannot be told apart that way: among
+// them, a peak from the direction of one that vision has placed (or from its
+// front-back mirror image) is that one's, and a seen one takes only those;
+// without this the peaks of the sirens already seen would keep pulling the
+// estimates of the ones not seen yet towards them. Each object keeps
 //  - a posterior over the world direction it is heard in: the block's
 //    posterior near its peaks, turned into the world frame, adds bounded
 //    evidence to what was heard before, which fades. When the head turns, the
@@ -23,6 +27,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -37,6 +42,7 @@ namespace beft::audio {
 
 struct HearingConfig {
   double min_similarity = 0.6;       // a peak whose spectrum matches no sounding object this well is not assigned
+  double seen_explains_deg = 10;     // among objects of one sound, a peak this near a seen one's direction (or its mirror) is its
   double peak_half_width_deg = 12;   // the part of the block's posterior that belongs to a peak
   double forgetting = 0.1;           // per block: this share of the evidence gathered so far fades
   double evidence_per_block = 2.0;   // one block multiplies a direction's odds by at most 1 + this
@@ -52,8 +58,12 @@ struct HearingConfig {
 
 // One sounding object as the expert hears it this tick.
 struct SoundingObject {
+  SoundingObject(std::string object_id, const hearing::BandSignature* sound_signature,
+                 std::optional<Eigen::Vector2d> seen_position = std::nullopt)
+      : id(std::move(object_id)), signature(sound_signature), seen_at(std::move(seen_position)) {}
   std::string id;
-  const hearing::BandSignature* signature = nullptr;  // of its sound; null: cannot be told apart
+  const hearing::BandSignature* signature = nullptr;  // of its sound (objects of one sound share it); null: cannot be told apart
+  std::optional<Eigen::Vector2d> seen_at;             // where vision placed it, if it was seen (world frame [m])
 };
 
 struct HeardEstimate {

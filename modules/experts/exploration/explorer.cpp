@@ -136,6 +136,31 @@ Decision Explorer::step(const Observation& o) {
   return d;
 }
 
+bool Explorer::reconsiderMoved(const Observation& o, Decision& d) {
+  if (!(parameters_.moved_m > 0)) return false;
+  bool any = false;
+  for (const auto& h : o.hypotheses) {
+    const auto it = targets_.find(h.object_id);
+    if (it == targets_.end() || !it->second.given_up || !it->second.given_up_at || !wantsVerify(h)) continue;
+    TargetMemory& memory = it->second;
+    const double moved = std::hypot(h.x - memory.given_up_at->x, h.y - memory.given_up_at->y);
+    if (moved < parameters_.moved_m || memory.tries_after_moving >= parameters_.tries_after_moving) continue;
+    const int tries = memory.tries_after_moving + 1;
+    d.log.push_back(h.object_id + ": now placed " + fixed(moved) + " m from where it was given up (" +
+                    at(memory.given_up_at->x, memory.given_up_at->y) + "): tried again (" + std::to_string(tries) +
+                    " of " + std::to_string(parameters_.tries_after_moving) + ")");
+    memory = TargetMemory{};
+    memory.tries_after_moving = tries;
+    any = true;
+  }
+  return any;
+}
+
+void Explorer::giveUp(TargetMemory& memory) {
+  memory.given_up = true;
+  if (job_ && (job_->kind == JobKind::Verify || job_->kind == JobKind::Inspect)) memory.given_up_at = job_->target;
+}
+
 bool Explorer::hasFreshTarget(const Observation& o) const {
   for (const auto& h : o.hypotheses) {
     if (!wantsVerify(h) && !wantsInspect(h)) continue;
@@ -343,7 +368,7 @@ void Explorer::recordFailedAttempt(const std::string& object_id, const Point& vi
   d.log.push_back(object_id + ": attempt " + std::to_string(memory.attempts) + " failed (" + why + ")");
   memory.why = "attempt " + std::to_string(memory.attempts) + " failed (" + why + ")";
   if (memory.attempts >= limit) {
-    memory.given_up = true;
+    giveUp(memory);
     memory.why = "given up after " + std::to_string(memory.attempts) + " viewpoints, the last: " + why;
     d.log.push_back(object_id + ": given up after " + std::to_string(memory.attempts) + " viewpoints");
   }
@@ -370,7 +395,7 @@ void Explorer::recordRuledOut(const std::string& object_id, const Point& viewpoi
     return;
   }
   if (memory.ruled_out - memory.ruled_out_while_mapping >= parameters_.ruled_out_viewpoints) {
-    memory.given_up = true;
+    giveUp(memory);
     const std::string count =
         std::to_string(memory.ruled_out) + " viewpoints ruled out" +
         (memory.ruled_out_while_mapping > 0
@@ -443,6 +468,7 @@ void Explorer::decide(const Observation& o, Decision& d) {
   if (startTargetJob(o, d, false)) return;
   if (startTargetJob(o, d, true)) return;
   if (startExploreJob(o, d)) return;
+  if (reconsiderMoved(o, d) && startTargetJob(o, d, false)) return;
 
   if (!o.map) {
     if (o.t >= parameters_.confirm_timeout_s * 3)
@@ -533,6 +559,7 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
   Job job;
   job.kind = inspect ? JobKind::Inspect : JobKind::Verify;
   job.object_id = target->object_id;
+  job.target = {target->x, target->y};
   job.x = best_viewpoint.x;
   job.y = best_viewpoint.y;
   job.yaw = best_viewpoint.yaw;

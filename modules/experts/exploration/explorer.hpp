@@ -105,6 +105,13 @@ struct ExplorerParameters {
   // being mapped, its open side perhaps not yet seen) do not count, up to
   // this many in all.
   int ruled_out_while_mapping = 36;
+  // When nothing else is left, a hypothesis given up is tried again if it
+  // is now placed at least this far from where it was when given up [m]
+  // (a heard estimate that moved: it may have been placed where another
+  // source of the same sound is, or only along its bearing), at most
+  // tries_after_moving times (0 m: never).
+  double moved_m = 8.0;
+  int tries_after_moving = 3;
   bool inspect_glimpsed = true;
   double inspect_person_margin = 0.0; // glimpsed: person within this of the best category
   double look_dwell_s = 1.5;           // after looking, wait this long for fusion to settle
@@ -148,6 +155,7 @@ class Explorer {
     JobKind kind = JobKind::Explore;
     std::string object_id;           // verify / inspect
     double x = 0, y = 0, yaw = 0;    // goal pose
+    Point target;                    // verify / inspect: where the hypothesis was placed when the job began
     std::vector<TaskRequest> sub_tasks;  // pushed once the composite shows; they run in this order
     int64_t composite_id = 0;        // 0 until seen on the stack
     double sub_tasks_pushed_t = -1;  // when the sub-tasks were pushed, -1 not yet
@@ -162,12 +170,19 @@ class Explorer {
     int ruled_out_while_mapping = 0; // of those, not counted: its surroundings were still being mapped
     std::vector<Point> tried;
     bool given_up = false;
+    std::optional<Point> given_up_at;  // where the hypothesis was placed when it was given up
+    int tries_after_moving = 0;        // times it was tried again after it moved
     bool no_viewpoint = false;       // the last search found no viewpoint
     double retry_t = -1;             // not reconsidered before this sim time
     std::string why;                 // why it is not settled yet, as the log said last
   };
 
   void updateTrail(const Observation& o);
+  // Targets given up that are now placed far from where they were: tried
+  // again. True if there was one.
+  bool reconsiderMoved(const Observation& o, Decision& d);
+  // Marks the target given up, where the job that tried it last placed it.
+  void giveUp(TargetMemory& memory);
   bool wantsVerify(const HypothesisView& h) const;
   bool wantsInspect(const HypothesisView& h) const;
   // A hypothesis to verify or inspect that has not been tried in vain yet.

@@ -29,7 +29,7 @@ class HypothesesInput
   // The whole list of the newest tick that can be made, or null.
   const hypotheses_t* latest() const;
 
-  bool lacksTick(int64_t tick) const override { return !empty() && !has(tick); }
+  bool lacksTick(int64_t tick) const override { return !empty() && !has(tick - ticksBefore()); }
 
  private:
   // The list last made: made again only for another tick or keyframe.

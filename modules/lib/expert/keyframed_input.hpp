@@ -34,7 +34,15 @@ class KeyframedInput : public InputPortBase {
   // the Whole channel (a log from before PerTick messages: the Whole one).
   std::string lackingChannel(int64_t tick) const override {
     const bool log_from_before = per_tick_.empty() && !keyframes_.empty();
-    return log_from_before || per_tick_.has(tick) ? std::string(channel()) : std::string(per_tick_.channel());
+    return log_from_before || per_tick_.has(tick - ticks_before_) ? std::string(channel())
+                                                                   : std::string(per_tick_.channel());
+  }
+  // A firing of tick k reads the value of tick k - 1 (lacksTick and
+  // lackingChannel ask for that one): for an expert that fires before the
+  // one that publishes this input in each tick.
+  void readTheTickBefore() {
+    ticks_before_ = 1;
+    per_tick_.readTheTickBefore();
   }
 
  protected:
@@ -58,6 +66,7 @@ class KeyframedInput : public InputPortBase {
     return parts;
   }
   const Entry* newestKeyframe() const { return keyframes_.latest(); }
+  int64_t ticksBefore() const { return ticks_before_; }
   const PerTick* newestPerTick() const { return per_tick_.latest(); }
 
  private:
@@ -70,6 +79,7 @@ class KeyframedInput : public InputPortBase {
   blackboard::ChannelHistory<Whole> keyframes_;
   // Never lacking on its own: the port says what is missing (lackingChannel).
   TickInput<PerTick> per_tick_;
+  int64_t ticks_before_ = 0;
 };
 
 }  // namespace beft::expert

@@ -108,10 +108,16 @@ class TickInput : public InputPortBase {
   }
   bool has(int64_t tick) const { return ofTick(tick) != nullptr; }
   bool empty() const { return history_.empty(); }
-  bool lacksTick(int64_t tick) const override { return !(optional_until_heard_ && empty()) && !has(tick); }
+  bool lacksTick(int64_t tick) const override {
+    return !(optional_until_heard_ && empty()) && !has(tick - ticks_before_);
+  }
+  // A firing of tick k reads the message of tick k - 1: an input published
+  // later in each tick than the expert fires (lacksTick asks for that one).
+  void readTheTickBefore() { ticks_before_ = 1; }
 
  private:
   blackboard::ChannelHistory<Message> history_;
+  int64_t ticks_before_ = 0;
   Message spare_{};  // what the next message is decoded over
   Admit admit_;
   bool optional_until_heard_ = false;

@@ -102,6 +102,50 @@ TEST(HeardSources, GivesEachPeakToTheObjectWhoseSoundItMatches) {
   EXPECT_FALSE(heard.estimate("nobody").has_value());
 }
 
+// Two sirens sound alike: a peak from where vision placed one of them (or
+// its front-back mirror image) is that one's, and the other, not seen yet,
+// takes only what the seen one does not explain, whatever their order.
+TEST(HeardSources, APeakFromWhereASeenObjectOfTheSameSoundIsIsThatObjects) {
+  const auto siren = spectrum({0.1, 1, 10, 10, 1});
+  const std::vector<SoundingObject> sounding = {{"siren_far", &siren}, {"siren_seen", &siren, Eigen::Vector2d(0, 10)}};
+  // Head at (0, 0) facing +y: the seen siren straight ahead, the other 70 deg to the right.
+  HeardSources heard;
+  for (int tick = 0; tick < 5; ++tick)
+    heard.hear(heardAt({{0, &siren}, {-70 + 360, &siren}}), blockAt(tick, 0, 0, 90), sounding);
+  const auto far = heard.estimate("siren_far");
+  const auto seen = heard.estimate("siren_seen");
+  ASSERT_TRUE(far && seen);
+  EXPECT_NEAR(far->bearing_deg, 20, 1.0);
+  EXPECT_NEAR(seen->bearing_deg, 90, 1.0);
+
+  // Only the seen siren's mirror image (behind the head): not the other's.
+  HeardSources mirrored;
+  mirrored.hear(heardAt({{180, &siren}}), blockAt(0, 0, 0, 90), sounding);
+  EXPECT_FALSE(mirrored.estimate("siren_far").has_value());
+  EXPECT_TRUE(mirrored.estimate("siren_seen").has_value());
+
+  // Another sound, even a similar one, is told apart by its spectrum, from
+  // wherever an object of that other sound was seen.
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const auto radio = spectrum({10, 9, 6, 2, 0.3});
+  const double alike = hearing::signatureSimilarity(voice, radio);
+  ASSERT_GE(alike, HearingConfig{}.min_similarity);
+  ASSERT_LT(alike, 1.0);
+  HeardSources voices;
+  voices.hear(heardAt({{0, &voice}}), blockAt(0, 0, 0, 90),
+              {{"victim", &voice}, {"radio_seen", &radio, Eigen::Vector2d(0, 10)}});
+  ASSERT_TRUE(voices.estimate("victim").has_value());
+  EXPECT_NEAR(voices.estimate("victim")->bearing_deg, 90, 1.0);
+  EXPECT_FALSE(voices.estimate("radio_seen").has_value());
+
+  // Neither seen: the first of equal scores takes the first peak, as before.
+  HeardSources unseen;
+  unseen.hear(heardAt({{0, &siren}, {-70 + 360, &siren}}), blockAt(0, 0, 0, 90),
+              {{"siren_far", &siren}, {"siren_seen", &siren}});
+  ASSERT_TRUE(unseen.estimate("siren_far").has_value());
+  EXPECT_NEAR(unseen.estimate("siren_far")->bearing_deg, 90, 1.0);
+}
+
 TEST(HeardSources, APeakLikeNoSoundingObjectIsNotAssigned) {
   const auto voice = spectrum({10, 8, 4, 1, 0.1});
   const auto engine = spectrum({0.1, 0.1, 1, 8, 10});

@@ -824,6 +824,52 @@ TEST_F(ExplorerRun, AfterALookARuledOutViewpointIsAnAttempt) {
   EXPECT_TRUE(explorer.givenUp("victim1"));
 }
 
+// When nothing else is left, a hypothesis given up where it was placed is
+// tried again once it is placed moved_m away (a heard estimate that had
+// been pulled towards another source of the same sound), tries_after_moving
+// times at most.
+TEST_F(ExplorerRun, AHypothesisGivenUpIsTriedAgainWhenItIsPlacedFarFromThere) {
+  parameters.verify_attempts = 1;
+  parameters.tries_after_moving = 1;
+  parameters.stop_when_done = false;  // keeps watching once all is given up
+  explorer = Explorer(parameters);
+  lookAround();
+  observation.hypotheses = {hidden()};
+  tick();  // ends the look-around, pushes the verify composite
+  const auto failLook = [&] {
+    const auto subs = pushesOf(tick());
+    ASSERT_EQ(subs.size(), 2u);
+    stack.completeSubTasks(subs[0].parent);  // got there and looked
+    const size_t finishes = stack.finishes.size();
+    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();  // dwell, then fail
+    ASSERT_EQ(stack.finishes.size(), finishes + 1);
+  };
+  failLook();
+  ASSERT_TRUE(explorer.givenUp("victim1"));
+  for (int i = 0; i < 5; ++i) EXPECT_TRUE(pushesOf(tick()).empty());
+
+  observation.hypotheses[0].y = 15;  // 5 m away: not far enough
+  for (int i = 0; i < 40; ++i) EXPECT_TRUE(pushesOf(tick()).empty());
+  EXPECT_TRUE(explorer.givenUp("victim1"));
+
+  observation.hypotheses[0].x = 3;  // now 11.4 m from (12, 10)
+  observation.hypotheses[0].y = 3;
+  std::vector<TaskRequest> again;  // at the next look for work (idle_recheck_s)
+  for (int i = 0; i < 30 && again.empty(); ++i) again = pushesOf(tick());
+  ASSERT_EQ(again.size(), 1u);
+  EXPECT_EQ(again[0].kind, "verify");
+  EXPECT_EQ(again[0].object_id, "victim1");
+  EXPECT_FALSE(explorer.givenUp("victim1"));
+  EXPECT_EQ(explorer.attempts("victim1"), 0);
+  failLook();
+  ASSERT_TRUE(explorer.givenUp("victim1"));
+
+  observation.hypotheses[0].x = 15;  // moved again, but its one try after moving is spent
+  observation.hypotheses[0].y = 17;
+  for (int i = 0; i < 40; ++i) EXPECT_TRUE(pushesOf(tick()).empty());
+  EXPECT_TRUE(explorer.givenUp("victim1"));
+}
+
 TEST_F(ExplorerRun, ExploresTheUnknownAndStopsWhenAllIsSettledAndKnown) {
   auto cells = makeCells(20, 20, kUnknown);
   fillRect(cells, 0.0, 0.0, 10.0, 20.0, kFree);

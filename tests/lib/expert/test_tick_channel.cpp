@@ -23,6 +23,12 @@ struct PortOwner : expert::Expert {
   std::string description() const override { return "test"; }
   expert::Outcome fire(const expert::Firing&, expert::Output&) override { return expert::Outcome::success(); }
 };
+
+expert::Firing firingAt(int64_t tick) {
+  expert::Firing firing;
+  firing.tick = tick;
+  return firing;
+}
 }  // namespace
 
 TEST(TickInput, FindsEachStoredTickAndNothingElse) {
@@ -227,6 +233,25 @@ TEST(HypothesesInput, LogsFromBeforeChangesGiveEachTicksOwnList) {
   const uint8_t garbage[3] = {1, 2, 3};
   EXPECT_FALSE(hypotheses.receive(garbage, 3));
   EXPECT_EQ(hypotheses.latest()->tick, 2);
+}
+
+// An expert that fires before the fusion in each tick reads the list of the
+// tick before: a firing of tick k lacks only tick k - 1's, and asks for it.
+TEST(HypothesesInput, ReadingTheTickBeforeAFiringLacksOnlyThatTicksList) {
+  PortOwner owner;
+  expert::HypothesesInput hypotheses(owner);
+  hypotheses.readTheTickBefore();
+  const hypotheses_t keyframe = hypothesesOf(0, {{"a", 1}});
+  deliver(owner, channels::kHypotheses.name, keyframe);
+  deliver(owner, channels::kHypothesisChanges.name, wire::changesSince(keyframe, keyframe));
+  deliver(owner, channels::kHypothesisChanges.name, wire::changesSince(keyframe, hypothesesOf(1, {{"a", 2}})));
+  EXPECT_FALSE(hypotheses.lacksTick(1));
+  EXPECT_FALSE(hypotheses.lacksTick(2));  // tick 2's own list comes after its firing
+  EXPECT_TRUE(hypotheses.lacksTick(3));
+  EXPECT_EQ(hypotheses.lackingChannel(3), channels::kHypothesisChanges.name);
+  // Every port of the owner agrees (the changes' own port included).
+  EXPECT_TRUE(owner.inputsLacking(firingAt(2)).empty());
+  EXPECT_FALSE(owner.inputsLacking(firingAt(3)).empty());
 }
 
 TEST(ObstacleMapInput, TheKeyframeWithEachTicksChangesIsThatTicksMap) {
