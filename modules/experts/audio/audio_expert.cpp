@@ -65,6 +65,10 @@ void AudioExpert::declareParameters(DeclaredParameters& parameters) {
 void AudioExpert::onStartUp() {
   config_.noise.seed = static_cast<uint64_t>(seed_);
   placed_.readTheTickBefore();
+  // Only hearing uses the ears and the hypotheses: without it they are not
+  // even subscribed to (hundreds of hypotheses a tick, decoded for nothing).
+  ears_.setRead(acoustics_ == Acoustics::Binaural);
+  placed_.setRead(acoustics_ == Acoustics::Binaural);
   if (acoustics_ != Acoustics::Binaural) return;
   auto templates = hearing::InterauralTemplates::fromSofa();
   const double rate = templates.layout().sample_rate;

@@ -19,7 +19,8 @@ void Output::restrictTo(const std::vector<ChannelSpec>& declared) {
 
 std::vector<ChannelSpec> Expert::reads() const {
   std::vector<ChannelSpec> specs;
-  for (const auto* port : inputs_) specs.push_back({port->channel(), port->type()});
+  for (const auto* port : inputs_)
+    if (port->isRead()) specs.push_back({port->channel(), port->type()});
   return specs;
 }
 
@@ -41,25 +42,26 @@ void Expert::startUp(const Parameters& given) {
   parameters();
   parameters_->resetToDefaults();
   parameters_->setAll(given);
+  for (auto* port : inputs_) port->setRead(true);
   onStartUp();
 }
 
 std::vector<std::string> Expert::inputsLacking(const Firing& firing) const {
   std::vector<std::string> lacking;
   for (const auto* port : inputs_)
-    if (port->lacksTick(firing.tick)) lacking.push_back(port->lackingChannel(firing.tick));
+    if (port->isRead() && port->lacksTick(firing.tick)) lacking.push_back(port->lackingChannel(firing.tick));
   return lacking;
 }
 
 bool Expert::inputsReady(const Firing& firing) const {
   for (const auto* port : inputs_)
-    if (port->lacksTick(firing.tick)) return false;
+    if (port->isRead() && port->lacksTick(firing.tick)) return false;
   return true;
 }
 
 bool Expert::onMessage(const std::string& channel, const void* data, int size) {
   for (auto* port : inputs_)
-    if (channel == port->channel()) return port->receive(data, size);
+    if (port->isRead() && channel == port->channel()) return port->receive(data, size);
   return false;
 }
 

@@ -88,7 +88,9 @@ class Expert {
   virtual std::string name() const = 0;         // default process name, e.g. "vision"
   virtual std::string description() const = 0;  // one paragraph for --help
 
-  // What it reads and writes, from its ports, in the order declared.
+  // What it reads and writes, from its ports, in the order declared; once
+  // started up, the inputs it left unread as configured are not listed
+  // (InputPortBase::setRead).
   std::vector<ChannelSpec> reads() const;
   std::vector<ChannelSpec> writes() const;
 

@@ -44,6 +44,10 @@ class KeyframedInput : public InputPortBase {
     ticks_before_ = 1;
     per_tick_.readTheTickBefore();
   }
+  void setRead(bool read) override {  // both channels
+    InputPortBase::setRead(read);
+    per_tick_.setRead(read);
+  }
 
  protected:
   KeyframedInput(Expert& owner, channels::Channel<Whole> whole, channels::Channel<PerTick> per_tick,

@@ -57,9 +57,17 @@ class InputPortBase {
     return channel_;
   }
 
+  // An input the expert has no use for as configured (called from its
+  // onStartUp, e.g. the ear signals when it does not hear): the channel is
+  // left out of reads(), so it is neither subscribed to nor decoded, and no
+  // firing waits for it. Expert::startUp reads every port again first.
+  virtual void setRead(bool read) { read_ = read; }
+  bool isRead() const { return read_; }
+
  private:
   const char* channel_;
   std::string type_;
+  bool read_ = true;
 };
 
 // Messages kept by the tick they belong to (every type an expert reads this

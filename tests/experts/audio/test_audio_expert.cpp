@@ -2,11 +2,13 @@
 // the ears, the percepts, and the seeded position noise.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "lib/scene/acoustic_occlusion.hpp"
 #include "experts/audio/audio_estimator.hpp"
+#include "experts/audio/audio_expert.hpp"
 #include "lib/expert/helper_task.hpp"
 #include "lib/scene/object_geometry.hpp"
 #include "experts/audio/position_noise.hpp"
@@ -157,4 +159,26 @@ TEST(AudioEstimator, HelperThreadGivesTheSamePercepts) {
     }
   }
   EXPECT_GT(occluded, 100);
+}
+
+namespace {
+std::vector<std::string> readChannels(const audio::AudioExpert& expert) {
+  std::vector<std::string> names;
+  for (const auto& spec : expert.reads()) names.push_back(spec.channel);
+  return names;
+}
+}  // namespace
+
+TEST(AudioExpert, ReadsTheEarsAndTheHypothesesOnlyWhenItHears) {
+  audio::AudioExpert expert;
+  expert.startUp({{"acoustics", "ground_truth"}});
+  const auto ground_truth = readChannels(expert);
+  for (const char* unread : {"EARS", "HYPOTHESES", "HYPOTHESIS_CHANGES"})
+    EXPECT_EQ(std::count(ground_truth.begin(), ground_truth.end(), unread), 0) << unread << " is decoded for nothing";
+  EXPECT_EQ(std::count(ground_truth.begin(), ground_truth.end(), "ROBOT_STATE"), 1);
+
+  expert.startUp({{"acoustics", "binaural"}});
+  const auto binaural = readChannels(expert);
+  for (const char* read : {"EARS", "HYPOTHESES", "HYPOTHESIS_CHANGES", "ROBOT_STATE"})
+    EXPECT_EQ(std::count(binaural.begin(), binaural.end(), read), 1) << read;
 }

@@ -25,6 +25,7 @@
 #include "lib/wire/channel_history.hpp"
 #include "lib/common/channels.hpp"
 #include "lib/common/lcm_url.hpp"
+#include "lib/expert/hypotheses_input.hpp"
 #include "lib/expert/live_runner.hpp"
 #include "lib/expert/log_replay.hpp"
 
@@ -724,6 +725,63 @@ TEST(Ports, WithoutAnOverrideAFiringWaitsForEveryDeclaredTickInput) {
   expert.keep(stateAt(3, 1.0));
   EXPECT_TRUE(expert.inputsReady(tick3)) << "the optional input was never heard";
   EXPECT_EQ(expert.inputsLacking(tick3), std::vector<std::string>{});
+}
+
+namespace {
+// Reads the hypotheses and a second robot state only with --param listen=1.
+class ConfiguredInputs : public expert::Expert {
+ public:
+  std::string name() const override { return "configured"; }
+  std::string description() const override { return "test expert"; }
+  expert::Outcome fire(const expert::Firing&, expert::Output&) override { return expert::Outcome::success(); }
+  void keep(const beft::robot_state_t& state) { robot_.store(state); }
+
+ protected:
+  void declareParameters(DeclaredParameters& parameters) override {
+    parameters.declare("listen", listen_, "1: read the hypotheses and SCALED too");
+  }
+  void onStartUp() override {
+    hypotheses_.setRead(listen_);
+    scaled_.setRead(listen_);
+  }
+
+ private:
+  bool listen_ = false;
+  expert::TickInput<beft::robot_state_t> robot_{*this, channels::kRobotState};
+  expert::HypothesesInput hypotheses_{*this};
+  expert::TickInput<beft::robot_state_t> scaled_{*this, kScaled};
+};
+
+std::vector<std::string> channelsOf(const std::vector<expert::ChannelSpec>& specs) {
+  std::vector<std::string> names;
+  for (const auto& spec : specs) names.push_back(spec.channel);
+  return names;
+}
+}  // namespace
+
+TEST(Ports, AnInputSwitchedOffAtStartUpIsNeitherReadNorWaitedFor) {
+  ConfiguredInputs expert;
+  const std::vector<std::string> all{"ROBOT_STATE", "HYPOTHESES", "HYPOTHESIS_CHANGES", "SCALED"};
+  EXPECT_EQ(channelsOf(expert.reads()), all) << "before start-up (--interface) every port is listed";
+  const auto state = stateAt(3, 1.0);
+  std::vector<uint8_t> bytes(state.getEncodedSize());
+  state.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  const expert::Firing tick3{"configured", "t", 3, 300000, 1};
+
+  expert.startUp({{"listen", "0"}});
+  EXPECT_EQ(channelsOf(expert.reads()), std::vector<std::string>{"ROBOT_STATE"})
+      << "the hypotheses port leaves with both its channels";
+  EXPECT_FALSE(expert.onMessage("SCALED", bytes.data(), static_cast<int>(bytes.size()))) << "not kept";
+  expert.keep(state);
+  EXPECT_TRUE(expert.inputsReady(tick3)) << "SCALED is not waited for";
+  EXPECT_TRUE(expert.inputsLacking(tick3).empty());
+
+  expert.startUp({{"listen", "1"}});
+  EXPECT_EQ(channelsOf(expert.reads()), all) << "each start-up begins with every port read";
+  EXPECT_FALSE(expert.inputsReady(tick3)) << "SCALED of tick 3 is missing";
+  EXPECT_EQ(expert.inputsLacking(tick3), std::vector<std::string>{"SCALED"});
+  EXPECT_TRUE(expert.onMessage("SCALED", bytes.data(), static_cast<int>(bytes.size())));
+  EXPECT_TRUE(expert.inputsReady(tick3));
 }
 
 TEST(LiveRunner, WithoutAnOverrideAFiringLackingItsTickInputDoesNotFire) {
