@@ -156,6 +156,23 @@ bool Explorer::reconsiderMoved(const Observation& o, Decision& d) {
   return any;
 }
 
+bool Explorer::placedFarFromItsTries(const HypothesisView& h, const TargetMemory& memory) const {
+  if (!(parameters_.moved_m > 0) || memory.given_up || !memory.tried_at) return false;
+  const double moved = std::hypot(h.x - memory.tried_at->x, h.y - memory.tried_at->y);
+  return moved >= parameters_.moved_m && memory.tries_after_moving < parameters_.tries_after_moving;
+}
+
+void Explorer::tryAfreshIfMoved(const HypothesisView& h, TargetMemory& memory, Decision& d) {
+  if (!placedFarFromItsTries(h, memory)) return;
+  const double moved = std::hypot(h.x - memory.tried_at->x, h.y - memory.tried_at->y);
+  const int tries = memory.tries_after_moving + 1;
+  d.log.push_back(h.object_id + ": now placed " + fixed(moved) + " m from where its viewpoints were tried (" +
+                  at(memory.tried_at->x, memory.tried_at->y) + "): tried afresh (" + std::to_string(tries) + " of " +
+                  std::to_string(parameters_.tries_after_moving) + ")");
+  memory = TargetMemory{};
+  memory.tries_after_moving = tries;
+}
+
 void Explorer::giveUp(TargetMemory& memory) {
   memory.given_up = true;
   if (job_ && (job_->kind == JobKind::Verify || job_->kind == JobKind::Inspect)) memory.given_up_at = job_->target;
@@ -310,8 +327,14 @@ void Explorer::revalidate(const Observation& o, Decision& d) {
   // was first looked at from somewhere, that is not an attempt (a target
   // behind walls being mapped piece by piece is not given up for it); after,
   // it is one more way of seeing it that failed.
+  // A target now placed far from where its viewpoints were tried is tried
+  // afresh at its next start: this viewpoint, chosen for the old place, is
+  // no failure at the new one.
   if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect) {
-    if (targets_[job.object_id].attempts == 0)
+    const HypothesisView* h = findHypothesis(o, job.object_id);
+    TargetMemory& memory = targets_[job.object_id];
+    if (h != nullptr && placedFarFromItsTries(*h, memory)) d.log.push_back(job.object_id + ": " + why);
+    else if (memory.attempts == 0)
       recordRuledOut(job.object_id, {job.x, job.y}, why, surroundingsBeingMapped(o, job.object_id), d);
     else recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
   }
@@ -360,6 +383,7 @@ bool Explorer::jobStillValid(const Observation& o, std::string& why) {
 void Explorer::recordFailedAttempt(const std::string& object_id, const Point& viewpoint, const std::string& why,
                                    Decision& d) {
   TargetMemory& memory = targets_[object_id];
+  if (!memory.tried_at && job_) memory.tried_at = job_->target;
   ++memory.attempts;
   memory.tried.push_back(viewpoint);
   const Job* job = job_ ? &*job_ : nullptr;
@@ -386,6 +410,7 @@ bool Explorer::surroundingsBeingMapped(const Observation& o, const std::string& 
 void Explorer::recordRuledOut(const std::string& object_id, const Point& viewpoint, const std::string& why,
                               bool while_mapping, Decision& d) {
   TargetMemory& memory = targets_[object_id];
+  if (!memory.tried_at && job_) memory.tried_at = job_->target;
   ++memory.ruled_out;
   memory.tried.push_back(viewpoint);
   d.log.push_back(object_id + ": viewpoint " + at(viewpoint.x, viewpoint.y) + " ruled out (" + why + ")");
@@ -522,7 +547,8 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
   std::vector<double> least_scores;
   for (const HypothesisView& h : o.hypotheses) {
     if (!(inspect ? wantsInspect(h) : wantsVerify(h))) continue;
-    const TargetMemory& memory = targets_[h.object_id];
+    TargetMemory& memory = targets_[h.object_id];
+    tryAfreshIfMoved(h, memory, d);
     if (memory.given_up || o.t < memory.retry_t) continue;
     const double gain = parameters_.weight_gain_m * std::max(0.0, h.weight);
     const double least_travel = std::hypot(h.x - o.robot_x, h.y - o.robot_y) -

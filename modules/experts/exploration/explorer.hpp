@@ -105,11 +105,14 @@ struct ExplorerParameters {
   // being mapped, its open side perhaps not yet seen) do not count, up to
   // this many in all.
   int ruled_out_while_mapping = 36;
-  // When nothing else is left, a hypothesis given up is tried again if it
-  // is now placed at least this far from where it was when given up [m]
-  // (a heard estimate that moved: it may have been placed where another
-  // source of the same sound is, or only along its bearing), at most
-  // tries_after_moving times (0 m: never).
+  // A hypothesis now placed at least this far [m] from where its viewpoints
+  // were tried is tried afresh: a heard estimate that moved (its bearings
+  // crossed at last, or it had been placed where another source of the same
+  // sound is) makes the viewpoints tried for the old place no failure at
+  // the new one. One given up is tried again so only when nothing else is
+  // left, against where it was when given up (an estimate still only on
+  // its bearing moves with the robot). At most tries_after_moving times in
+  // all (0 m: never).
   double moved_m = 8.0;
   int tries_after_moving = 3;
   bool inspect_glimpsed = true;
@@ -169,6 +172,7 @@ class Explorer {
     int ruled_out = 0;               // viewpoints the map ruled out before the robot got there
     int ruled_out_while_mapping = 0; // of those, not counted: its surroundings were still being mapped
     std::vector<Point> tried;
+    std::optional<Point> tried_at;   // where the hypothesis was placed when its first viewpoint failed or was ruled out
     bool given_up = false;
     std::optional<Point> given_up_at;  // where the hypothesis was placed when it was given up
     int tries_after_moving = 0;        // times it was tried again after it moved
@@ -181,6 +185,11 @@ class Explorer {
   // Targets given up that are now placed far from where they were: tried
   // again. True if there was one.
   bool reconsiderMoved(const Observation& o, Decision& d);
+  // A target not given up that is now placed far from where its viewpoints
+  // were tried, with a try after moving left: tried afresh (its attempts
+  // were at another place).
+  bool placedFarFromItsTries(const HypothesisView& h, const TargetMemory& memory) const;
+  void tryAfreshIfMoved(const HypothesisView& h, TargetMemory& memory, Decision& d);
   // Marks the target given up, where the job that tried it last placed it.
   void giveUp(TargetMemory& memory);
   bool wantsVerify(const HypothesisView& h) const;

@@ -870,6 +870,54 @@ TEST_F(ExplorerRun, AHypothesisGivenUpIsTriedAgainWhenItIsPlacedFarFromThere) {
   EXPECT_TRUE(explorer.givenUp("victim1"));
 }
 
+TEST_F(ExplorerRun, AHypothesisPlacedFarFromWhereItsViewpointsFailedIsTriedAfresh) {
+  parameters.verify_attempts = 2;
+  parameters.tries_after_moving = 1;
+  explorer = Explorer(parameters);
+  lookAround();
+  observation.hypotheses = {hidden()};
+  tick();  // pushes the verify composite
+  // The sub-tasks of the composite pushed last; the robot gets there and
+  // looks; after the dwell the attempt fails (and the next composite is pushed).
+  const auto failLook = [&] {
+    const auto subs = pushesOf(tick());
+    ASSERT_EQ(subs.size(), 2u);
+    stack.completeSubTasks(subs[0].parent);
+    const size_t finishes = stack.finishes.size();
+    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();
+    ASSERT_EQ(stack.finishes.size(), finishes + 1);
+  };
+  failLook();  // at (12, 10)
+  ASSERT_EQ(explorer.attempts("victim1"), 1);
+
+  // Its estimate jumps 11.4 m while the robot goes to the next viewpoint:
+  // that job ends without counting, and the new place starts from none.
+  observation.hypotheses[0].x = 3;
+  observation.hypotheses[0].y = 3;
+  std::vector<TaskRequest> look;
+  for (int i = 0; i < 30 && look.empty(); ++i)
+    for (const auto& push : pushesOf(tick()))
+      if (push.kind == "look_at" && std::hypot(push.x - 3, push.y - 3) < 0.01) look.push_back(push);
+  ASSERT_EQ(look.size(), 1u) << "no look at the new place";
+  EXPECT_FALSE(explorer.givenUp("victim1")) << "the jump cost its last attempt";
+  EXPECT_EQ(explorer.attempts("victim1"), 0);
+  for (const auto& tried : explorer.triedViewpoints("victim1"))
+    EXPECT_GT(std::hypot(tried.x - 12, tried.y - 10), 6.5) << "a viewpoint of the old place still counts";
+  stack.completeSubTasks(look[0].parent);
+  for (int i = 0; i < 30 && explorer.attempts("victim1") == 0; ++i) tick();
+  ASSERT_EQ(explorer.attempts("victim1"), 1);
+
+  // 4 m on is the same place: the attempts add up and it is given up.
+  observation.hypotheses[0].y = 7;
+  for (int i = 0; i < 60 && !explorer.givenUp("victim1"); ++i) {
+    const auto pushed = pushesOf(tick());
+    for (const auto& push : pushed)
+      if (push.kind == "look_at") stack.completeSubTasks(push.parent);
+  }
+  EXPECT_TRUE(explorer.givenUp("victim1"));
+  EXPECT_EQ(explorer.attempts("victim1"), 2);
+}
+
 TEST_F(ExplorerRun, ExploresTheUnknownAndStopsWhenAllIsSettledAndKnown) {
   auto cells = makeCells(20, 20, kUnknown);
   fillRect(cells, 0.0, 0.0, 10.0, 20.0, kFree);
