@@ -92,10 +92,11 @@ void ExplorationExpert::declareParameters(DeclaredParameters& parameters) {
                      "viewpoints ruled out while a frontier lies within max_view_m of the target (the walls around "
                      "it still being mapped) that do not count against ruled_out_viewpoints, at most");
   parameters.declare("moved_m", e.moved_m, 0, kNoLimit,
-                     "when nothing else is left, a hypothesis given up is tried again if it is placed this far from "
-                     "where it was when given up (a heard estimate that moved; 0: never) [m]");
+                     "a hypothesis placed this far from where its viewpoints were tried is tried afresh (a heard "
+                     "estimate that jumped); one given up, only when nothing else is left and placed this far from "
+                     "where it was when given up (0: never) [m]");
   parameters.declare("tries_after_moving", e.tries_after_moving, 0, 1000,
-                     "times a hypothesis given up is tried again after it moved, at most");
+                     "times a hypothesis is tried afresh after it moved, at most");
   parameters.declare("inspect_glimpsed", e.inspect_glimpsed, "approach hypotheses glimpsed by vision that may be persons");
   parameters.declare("look_dwell_s", e.look_dwell_s, 0, kNoLimit, "after looking, wait this long for fusion to settle [s]");
   parameters.declare("attempt_timeout_s", e.attempt_timeout_s, 0, kNoLimit,
