@@ -636,6 +636,18 @@ class ExplorerRun : public ::testing::Test {
     setMap(map);
   }
 
+  // The sub-tasks of the verify composite pushed last are pushed; the robot
+  // gets there and looks; after the dwell the attempt fails (and the next
+  // composite, if any, is pushed in that tick).
+  void failNextLook() {
+    const auto subs = pushesOf(tick());
+    ASSERT_EQ(subs.size(), 2u);
+    stack.completeSubTasks(subs[0].parent);
+    const size_t finishes = stack.finishes.size();
+    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();
+    ASSERT_EQ(stack.finishes.size(), finishes + 1);
+  }
+
   void lookAround() {
     tick();  // pushes the composite
     tick();  // pushes its turns
@@ -836,15 +848,7 @@ TEST_F(ExplorerRun, AHypothesisGivenUpIsTriedAgainWhenItIsPlacedFarFromThere) {
   lookAround();
   observation.hypotheses = {hidden()};
   tick();  // ends the look-around, pushes the verify composite
-  const auto failLook = [&] {
-    const auto subs = pushesOf(tick());
-    ASSERT_EQ(subs.size(), 2u);
-    stack.completeSubTasks(subs[0].parent);  // got there and looked
-    const size_t finishes = stack.finishes.size();
-    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();  // dwell, then fail
-    ASSERT_EQ(stack.finishes.size(), finishes + 1);
-  };
-  failLook();
+  ASSERT_NO_FATAL_FAILURE(failNextLook());
   ASSERT_TRUE(explorer.givenUp("victim1"));
   for (int i = 0; i < 5; ++i) EXPECT_TRUE(pushesOf(tick()).empty());
 
@@ -861,7 +865,7 @@ TEST_F(ExplorerRun, AHypothesisGivenUpIsTriedAgainWhenItIsPlacedFarFromThere) {
   EXPECT_EQ(again[0].object_id, "victim1");
   EXPECT_FALSE(explorer.givenUp("victim1"));
   EXPECT_EQ(explorer.attempts("victim1"), 0);
-  failLook();
+  ASSERT_NO_FATAL_FAILURE(failNextLook());
   ASSERT_TRUE(explorer.givenUp("victim1"));
 
   observation.hypotheses[0].x = 15;  // moved again, but its one try after moving is spent
@@ -877,17 +881,7 @@ TEST_F(ExplorerRun, AHypothesisPlacedFarFromWhereItsViewpointsFailedIsTriedAfres
   lookAround();
   observation.hypotheses = {hidden()};
   tick();  // pushes the verify composite
-  // The sub-tasks of the composite pushed last; the robot gets there and
-  // looks; after the dwell the attempt fails (and the next composite is pushed).
-  const auto failLook = [&] {
-    const auto subs = pushesOf(tick());
-    ASSERT_EQ(subs.size(), 2u);
-    stack.completeSubTasks(subs[0].parent);
-    const size_t finishes = stack.finishes.size();
-    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i) tick();
-    ASSERT_EQ(stack.finishes.size(), finishes + 1);
-  };
-  failLook();  // at (12, 10)
+  ASSERT_NO_FATAL_FAILURE(failNextLook());  // at (12, 10)
   ASSERT_EQ(explorer.attempts("victim1"), 1);
 
   // Its estimate jumps 11.4 m while the robot goes to the next viewpoint:
