@@ -156,21 +156,34 @@ bool Explorer::reconsiderMoved(const Observation& o, Decision& d) {
   return any;
 }
 
-bool Explorer::placedFarFromItsTries(const HypothesisView& h, const TargetMemory& memory) const {
-  if (!(parameters_.moved_m > 0) || memory.given_up || !memory.tried_at) return false;
-  const double moved = std::hypot(h.x - memory.tried_at->x, h.y - memory.tried_at->y);
-  return moved >= parameters_.moved_m && memory.tries_after_moving < parameters_.tries_after_moving;
+double Explorer::movedMoreThanTheRobot(const HypothesisView& h, const TargetMemory& memory, const Observation& o) {
+  const double target_moved = std::hypot(h.x - memory.tried_at->x, h.y - memory.tried_at->y);
+  const double robot_moved = std::hypot(o.robot_x - memory.robot_at_try.x, o.robot_y - memory.robot_at_try.y);
+  return target_moved - robot_moved;
 }
 
-void Explorer::tryAfreshIfMoved(const HypothesisView& h, TargetMemory& memory, Decision& d) {
-  if (!placedFarFromItsTries(h, memory)) return;
-  const double moved = std::hypot(h.x - memory.tried_at->x, h.y - memory.tried_at->y);
+bool Explorer::placedFarFromItsTries(const HypothesisView& h, const TargetMemory& memory, const Observation& o) const {
+  if (!(parameters_.moved_m > 0) || memory.given_up || !memory.tried_at) return false;
+  return movedMoreThanTheRobot(h, memory, o) >= parameters_.moved_m &&
+         memory.tries_after_moving < parameters_.tries_after_moving;
+}
+
+void Explorer::tryAfreshIfMoved(const HypothesisView& h, TargetMemory& memory, const Observation& o, Decision& d) {
+  if (!placedFarFromItsTries(h, memory, o)) return;
   const int tries = memory.tries_after_moving + 1;
-  d.log.push_back(h.object_id + ": now placed " + fixed(moved) + " m from where its viewpoints were tried (" +
-                  at(memory.tried_at->x, memory.tried_at->y) + "): tried afresh (" + std::to_string(tries) + " of " +
+  d.log.push_back(h.object_id + ": now placed " + fixed(std::hypot(h.x - memory.tried_at->x, h.y - memory.tried_at->y)) +
+                  " m from where its viewpoints were tried (" + at(memory.tried_at->x, memory.tried_at->y) +
+                  "), the robot " + fixed(std::hypot(o.robot_x - memory.robot_at_try.x, o.robot_y - memory.robot_at_try.y)) +
+                  " m from where it was: tried afresh (" + std::to_string(tries) + " of " +
                   std::to_string(parameters_.tries_after_moving) + ")");
   memory = TargetMemory{};
   memory.tries_after_moving = tries;
+}
+
+void Explorer::noteFirstTry(TargetMemory& memory) const {
+  if (memory.tried_at || !job_) return;
+  memory.tried_at = job_->target;
+  if (!memory_.stood().empty()) memory.robot_at_try = memory_.stood().back();
 }
 
 void Explorer::giveUp(TargetMemory& memory) {
@@ -333,7 +346,7 @@ void Explorer::revalidate(const Observation& o, Decision& d) {
   if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect) {
     const HypothesisView* h = findHypothesis(o, job.object_id);
     TargetMemory& memory = targets_[job.object_id];
-    if (h != nullptr && placedFarFromItsTries(*h, memory)) d.log.push_back(job.object_id + ": " + why);
+    if (h != nullptr && placedFarFromItsTries(*h, memory, o)) d.log.push_back(job.object_id + ": " + why);
     else if (memory.attempts == 0)
       recordRuledOut(job.object_id, {job.x, job.y}, why, surroundingsBeingMapped(o, job.object_id), d);
     else recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
@@ -383,7 +396,7 @@ bool Explorer::jobStillValid(const Observation& o, std::string& why) {
 void Explorer::recordFailedAttempt(const std::string& object_id, const Point& viewpoint, const std::string& why,
                                    Decision& d) {
   TargetMemory& memory = targets_[object_id];
-  if (!memory.tried_at && job_) memory.tried_at = job_->target;
+  noteFirstTry(memory);
   ++memory.attempts;
   memory.tried.push_back(viewpoint);
   const Job* job = job_ ? &*job_ : nullptr;
@@ -410,7 +423,7 @@ bool Explorer::surroundingsBeingMapped(const Observation& o, const std::string& 
 void Explorer::recordRuledOut(const std::string& object_id, const Point& viewpoint, const std::string& why,
                               bool while_mapping, Decision& d) {
   TargetMemory& memory = targets_[object_id];
-  if (!memory.tried_at && job_) memory.tried_at = job_->target;
+  noteFirstTry(memory);
   ++memory.ruled_out;
   memory.tried.push_back(viewpoint);
   d.log.push_back(object_id + ": viewpoint " + at(viewpoint.x, viewpoint.y) + " ruled out (" + why + ")");
@@ -548,7 +561,7 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
   for (const HypothesisView& h : o.hypotheses) {
     if (!(inspect ? wantsInspect(h) : wantsVerify(h))) continue;
     TargetMemory& memory = targets_[h.object_id];
-    tryAfreshIfMoved(h, memory, d);
+    tryAfreshIfMoved(h, memory, o, d);
     if (memory.given_up || o.t < memory.retry_t) continue;
     const double gain = parameters_.weight_gain_m * std::max(0.0, h.weight);
     const double least_travel = std::hypot(h.x - o.robot_x, h.y - o.robot_y) -

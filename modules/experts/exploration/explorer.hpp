@@ -106,13 +106,14 @@ struct ExplorerParameters {
   // this many in all.
   int ruled_out_while_mapping = 36;
   // A hypothesis now placed at least this far [m] from where its viewpoints
-  // were tried is tried afresh: a heard estimate that moved (its bearings
-  // crossed at last, or it had been placed where another source of the same
-  // sound is) makes the viewpoints tried for the old place no failure at
-  // the new one. One given up is tried again so only when nothing else is
-  // left, against where it was when given up (an estimate still only on
-  // its bearing moves with the robot). At most tries_after_moving times in
-  // all (0 m: never).
+  // were tried, beyond how far the robot moved meanwhile, is tried afresh:
+  // a heard estimate that jumped (its bearings crossed at last, or it had
+  // been placed where another source of the same sound is) makes the
+  // viewpoints tried for the old place no failure at the new one. An
+  // estimate still only on its bearing lies a few metres from the robot
+  // and moves with it: that is no jump. One given up is tried again only
+  // when nothing else is left, if placed this far from where it was when
+  // given up. At most tries_after_moving times in all (0 m: never).
   double moved_m = 8.0;
   int tries_after_moving = 3;
   bool inspect_glimpsed = true;
@@ -173,6 +174,7 @@ class Explorer {
     int ruled_out_while_mapping = 0; // of those, not counted: its surroundings were still being mapped
     std::vector<Point> tried;
     std::optional<Point> tried_at;   // where the hypothesis was placed when its first viewpoint failed or was ruled out
+    Point robot_at_try;              // where the robot was then
     bool given_up = false;
     std::optional<Point> given_up_at;  // where the hypothesis was placed when it was given up
     int tries_after_moving = 0;        // times it was tried again after it moved
@@ -188,8 +190,13 @@ class Explorer {
   // A target not given up that is now placed far from where its viewpoints
   // were tried, with a try after moving left: tried afresh (its attempts
   // were at another place).
-  bool placedFarFromItsTries(const HypothesisView& h, const TargetMemory& memory) const;
-  void tryAfreshIfMoved(const HypothesisView& h, TargetMemory& memory, Decision& d);
+  bool placedFarFromItsTries(const HypothesisView& h, const TargetMemory& memory, const Observation& o) const;
+  void tryAfreshIfMoved(const HypothesisView& h, TargetMemory& memory, const Observation& o, Decision& d);
+  // Where the hypothesis moved since its viewpoints were tried, less how far
+  // the robot moved meanwhile [m].
+  static double movedMoreThanTheRobot(const HypothesisView& h, const TargetMemory& memory, const Observation& o);
+  // Notes where the target and the robot were at its first failed or ruled-out viewpoint.
+  void noteFirstTry(TargetMemory& memory) const;
   // Marks the target given up, where the job that tried it last placed it.
   void giveUp(TargetMemory& memory);
   bool wantsVerify(const HypothesisView& h) const;

@@ -876,7 +876,7 @@ TEST_F(ExplorerRun, AHypothesisGivenUpIsTriedAgainWhenItIsPlacedFarFromThere) {
 
 TEST_F(ExplorerRun, AHypothesisPlacedFarFromWhereItsViewpointsFailedIsTriedAfresh) {
   parameters.verify_attempts = 2;
-  parameters.tries_after_moving = 1;
+  parameters.tries_after_moving = 2;
   explorer = Explorer(parameters);
   lookAround();
   observation.hypotheses = {hidden()};
@@ -901,15 +901,20 @@ TEST_F(ExplorerRun, AHypothesisPlacedFarFromWhereItsViewpointsFailedIsTriedAfres
   for (int i = 0; i < 30 && explorer.attempts("victim1") == 0; ++i) tick();
   ASSERT_EQ(explorer.attempts("victim1"), 1);
 
-  // 4 m on is the same place: the attempts add up and it is given up.
-  observation.hypotheses[0].y = 7;
-  for (int i = 0; i < 60 && !explorer.givenUp("victim1"); ++i) {
-    const auto pushed = pushesOf(tick());
-    for (const auto& push : pushed)
-      if (push.kind == "look_at") stack.completeSubTasks(push.parent);
+  // Placed 10 m on, on the way to the next viewpoint, while the robot went
+  // 10 m too: an estimate still only on its bearing, which moves with the
+  // robot, is no jump. The viewpoint it left behind is a failed attempt.
+  observation.robot_x = 15;
+  observation.hypotheses[0].x = 13;
+  bool gave_up = false, afresh = false;
+  for (int i = 0; i < 60 && !gave_up && !afresh; ++i) {
+    for (const auto& line : tick().log) {
+      gave_up = gave_up || line.find("given up after 2 viewpoints") != std::string::npos;
+      afresh = afresh || line.find("tried afresh") != std::string::npos;
+    }
   }
-  EXPECT_TRUE(explorer.givenUp("victim1"));
-  EXPECT_EQ(explorer.attempts("victim1"), 2);
+  EXPECT_TRUE(gave_up);
+  EXPECT_FALSE(afresh) << "an estimate that moved with the robot was taken for a jump";
 }
 
 TEST_F(ExplorerRun, ExploresTheUnknownAndStopsWhenAllIsSettledAndKnown) {
