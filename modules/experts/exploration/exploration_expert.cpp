@@ -115,6 +115,8 @@ void ExplorationExpert::declareParameters(DeclaredParameters& parameters) {
                      "occupied cells this close to the target are its own [m]");
   parameters.declare("car_extent_m", e.car_extent_m, 0, kNoLimit,
                      "occupied cells connected to a car and this close to it are its body, not in its way [m]");
+  parameters.declare("fire_extent_m", e.fire_extent_m, 0, kNoLimit,
+                     "occupied cells connected to a fire and this close to it are its body, not in its way [m]");
   parameters.declare("unknown_cost", v.unknown_cost, 0, kNoLimit, "cost per metre of sight line through unknown cells [m/m]");
   parameters.declare("tried_radius_m", v.tried_radius_m, 0, kNoLimit, "a new viewpoint keeps this far from tried ones [m]");
   parameters.declare("blind_radius_m", f.blind_radius_m, 0, kNoLimit,

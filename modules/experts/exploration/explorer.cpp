@@ -358,6 +358,7 @@ void Explorer::revalidate(const Observation& o, Decision& d) {
 ViewpointParameters Explorer::viewpointsFor(const HypothesisView& h) const {
   ViewpointParameters viewpoints = parameters_.viewpoints;
   if (h.best_category == "car") viewpoints.own_extent_m = std::max(viewpoints.own_extent_m, parameters_.car_extent_m);
+  if (h.best_category == "fire") viewpoints.own_extent_m = std::max(viewpoints.own_extent_m, parameters_.fire_extent_m);
   return viewpoints;
 }
 

@@ -132,6 +132,10 @@ struct ExplorerParameters {
   // Half a car's diagonal and a margin [m]: its occupied cells this close are
   // its own body, not obstacles in front of it (target_cells.hpp).
   double car_extent_m = 2.8;
+  // A fire's: its 0.5 m radius and a margin [m]. Its outermost cells lie
+  // beyond target_clearance_m and would block the sight lines to its sides
+  // from everywhere, its own best viewpoint too.
+  double fire_extent_m = 1.0;
   ViewpointParameters viewpoints;
   FrontierParameters frontiers;
 };
@@ -204,7 +208,8 @@ class Explorer {
   // A hypothesis to verify or inspect that has not been tried in vain yet.
   bool hasFreshTarget(const Observation& o) const;
   const HypothesisView* findHypothesis(const Observation& o, const std::string& id) const;
-  // The viewpoint parameters for one target: a car's body reaches car_extent_m.
+  // The viewpoint parameters for one target: a car's body reaches
+  // car_extent_m, a fire's fire_extent_m.
   ViewpointParameters viewpointsFor(const HypothesisView& h) const;
 
   void followJob(const Observation& o, Decision& d);

@@ -207,6 +207,25 @@ TEST(Viewpoints, ACarsOwnBodyDoesNotHideItButAWallBesideItDoes) {
   EXPECT_TRUE(inLineOfSight(seen_from_west, 6.0, 10.0, 10, 10, car, nullptr, &near_side));
 }
 
+// A fire of 0.5 m radius fills cells up to about 0.55 m from its centre:
+// beyond target_clearance_m, they would block the lines to its sides from
+// every viewpoint unless they count as its body.
+TEST(Viewpoints, AFiresOwnBodyDoesNotHideIt) {
+  auto cells = makeCells(20, 20, kFree);
+  for (double x = 9.4; x < 10.6; x += 0.1)
+    for (double y = 9.4; y < 10.6; y += 0.1)
+      if (std::hypot(x + 0.05 - 10.0, y + 0.05 - 10.0) <= 0.55) fillRect(cells, x + 0.01, y + 0.01, x + 0.09, y + 0.09, kOccupied);
+  const KnownMap map(cells, 0.45);
+  const TravelField travel(map, 5.0, 10.0, 0.6);
+  EXPECT_FALSE(chooseViewpoint(map, travel, 10, 10, {}, ViewpointParameters{}).has_value())
+      << "its outermost cells hide it from everywhere";
+  ViewpointParameters fire;
+  fire.own_extent_m = ExplorerParameters{}.fire_extent_m;
+  EXPECT_TRUE(chooseViewpoint(map, travel, 10, 10, {}, fire).has_value());
+  const TargetCells own = targetCells(map, 10, 10, fire);
+  EXPECT_TRUE(inLineOfSight(map, 10.0, 8.5, 10, 10, fire, nullptr, &own)) << "from 1.5 m";
+}
+
 TEST(TravelField, GoesAroundWallsAndTreatsUnknownAsFree) {
   auto cells = makeCells(20, 20, kUnknown);
   fillRect(cells, 9.9, 0.0, 10.1, 15.0, kOccupied);  // a wall with a gap at the top
@@ -915,6 +934,33 @@ TEST_F(ExplorerRun, AHypothesisPlacedFarFromWhereItsViewpointsFailedIsTriedAfres
   }
   EXPECT_TRUE(gave_up);
   EXPECT_FALSE(afresh) << "an estimate that moved with the robot was taken for a jump";
+}
+
+TEST_F(ExplorerRun, AHeardFireIsLookedAtThoughItsBodyFillsItsSurroundings) {
+  parameters.stop_when_done = false;  // keeps watching after the siren is found to have no viewpoint
+  explorer = Explorer(parameters);
+  auto cells = wallWorld();
+  for (double x = 14.4; x < 15.6; x += 0.1)
+    for (double y = 9.4; y < 10.6; y += 0.1)
+      if (std::hypot(x + 0.05 - 15.0, y + 0.05 - 10.0) <= 0.55) fillRect(cells, x + 0.01, y + 0.01, x + 0.09, y + 0.09, kOccupied);
+  setMap(cells);
+  lookAround();
+  HypothesisView fire = hidden("fire1");
+  fire.x = 15;
+  fire.best_category = "fire";
+  HypothesisView siren = fire;  // the same cells, taken for what is not a fire
+  siren.object_id = "siren1";
+  siren.best_category = "siren";
+  observation.hypotheses = {siren};
+  for (int i = 0; i < 5; ++i)
+    for (const auto& push : pushesOf(tick())) EXPECT_NE(push.kind, "verify") << "its cells hide it from everywhere";
+  observation.hypotheses = {fire};
+  std::vector<TaskRequest> pushed;
+  for (int i = 0; i < 80 && pushed.empty(); ++i)
+    for (const auto& push : pushesOf(tick()))
+      if (push.kind == "verify") pushed.push_back(push);
+  ASSERT_EQ(pushed.size(), 1u) << "a fire's body is its own";
+  EXPECT_EQ(pushed[0].object_id, "fire1");
 }
 
 TEST_F(ExplorerRun, ExploresTheUnknownAndStopsWhenAllIsSettledAndKnown) {
