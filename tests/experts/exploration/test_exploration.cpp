@@ -45,6 +45,15 @@ void fillRect(planners::ObstacleCells& cells, double x0, double y0, double x1, d
 }
 
 // A 20 x 20 m known, free world with a wall from (10, 4) to (10, 16), 0.2 m thick.
+// A fire of 0.5 m radius as the map shows it: every 0.1 m cell whose centre
+// lies within 0.55 m of (x, y) occupied.
+void fillFire(planners::ObstacleCells& cells, double x, double y) {
+  for (int cy = 0; cy < cells.height; ++cy)
+    for (int cx = 0; cx < cells.width; ++cx)
+      if (std::hypot((cx + 0.5) * cells.resolution - x, (cy + 0.5) * cells.resolution - y) <= 0.55)
+        cells.cells[static_cast<size_t>(cy) * cells.width + cx] = kOccupied;
+}
+
 planners::ObstacleCells wallWorld() {
   auto cells = makeCells(20, 20, kFree);
   fillRect(cells, 9.9, 4.0, 10.1, 16.0, kOccupied);
@@ -212,9 +221,7 @@ TEST(Viewpoints, ACarsOwnBodyDoesNotHideItButAWallBesideItDoes) {
 // every viewpoint unless they count as its body.
 TEST(Viewpoints, AFiresOwnBodyDoesNotHideIt) {
   auto cells = makeCells(20, 20, kFree);
-  for (double x = 9.4; x < 10.6; x += 0.1)
-    for (double y = 9.4; y < 10.6; y += 0.1)
-      if (std::hypot(x + 0.05 - 10.0, y + 0.05 - 10.0) <= 0.55) fillRect(cells, x + 0.01, y + 0.01, x + 0.09, y + 0.09, kOccupied);
+  fillFire(cells, 10.0, 10.0);
   const KnownMap map(cells, 0.45);
   const TravelField travel(map, 5.0, 10.0, 0.6);
   EXPECT_FALSE(chooseViewpoint(map, travel, 10, 10, {}, ViewpointParameters{}).has_value())
@@ -940,9 +947,7 @@ TEST_F(ExplorerRun, AHeardFireIsLookedAtThoughItsBodyFillsItsSurroundings) {
   parameters.stop_when_done = false;  // keeps watching after the siren is found to have no viewpoint
   explorer = Explorer(parameters);
   auto cells = wallWorld();
-  for (double x = 14.4; x < 15.6; x += 0.1)
-    for (double y = 9.4; y < 10.6; y += 0.1)
-      if (std::hypot(x + 0.05 - 15.0, y + 0.05 - 10.0) <= 0.55) fillRect(cells, x + 0.01, y + 0.01, x + 0.09, y + 0.09, kOccupied);
+  fillFire(cells, 15.0, 10.0);
   setMap(cells);
   lookAround();
   HypothesisView fire = hidden("fire1");
