@@ -339,10 +339,10 @@ void Explorer::revalidate(const Observation& o, Decision& d) {
   // What the map showed on the way rules the viewpoint out. Until the target
   // was first looked at from somewhere, that is not an attempt (a target
   // behind walls being mapped piece by piece is not given up for it); after,
-  // it is one more way of seeing it that failed.
-  // A target now placed far from where its viewpoints were tried is tried
-  // afresh at its next start: this viewpoint, chosen for the old place, is
-  // no failure at the new one.
+  // it is one more way of seeing it that failed. But a target that jumped
+  // far from where its viewpoints were tried is tried afresh at its next
+  // start: this viewpoint, chosen for the old place, is no failure at the
+  // new one.
   if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect) {
     const HypothesisView* h = findHypothesis(o, job.object_id);
     TargetMemory& memory = targets_[job.object_id];
