@@ -53,8 +53,8 @@ void AudioExpert::declareParameters(DeclaredParameters& parameters) {
                      "binaural: distance of an estimate before the bearings cross [m]");
   parameters.declare("seen_explains_deg", hearing_config_.seen_explains_deg, 0, 45,
                      "binaural: among objects of one sound, a peak this near the direction of one that vision has "
-                     "placed (HYPOTHESES of the tick before), or of its mirror image, is that one's, and a seen one "
-                     "takes only those (0: spectra and tracks only) [deg]");
+                     "placed (HYPOTHESES of the tick before), or of its mirror image, is that one's, and any seen "
+                     "object takes only those (0: spectra and tracks only) [deg]");
   parameters.declare("turn_deg", hearing_config_.turn_deg, 5, 60,
                      "binaural: head turn asked for when front and back cannot be told apart [deg]");
   parameters.declare("turn_priority", turn_priority_, 0, 1000, "binaural: priority of that turn_head task");

@@ -73,8 +73,7 @@ void HeardSources::hear(const hearing::BlockLocalisation& heard, const binaural_
         similarity[p][o] = hearing::signatureSimilarity(heard.peaks[p].signature, *sounding[o].signature);
   // Objects of one sound (one signature) cannot be told apart by their
   // spectra: among them, a peak from where one of them was seen (or from
-  // its front-back mirror image) is that one's, and a seen one takes only
-  // those.
+  // its front-back mirror image) is that one's.
   std::map<const hearing::BandSignature*, int> objects_of_sound;
   for (const auto& object : sounding)
     if (object.signature != nullptr) ++objects_of_sound[object.signature];
@@ -97,9 +96,13 @@ void HeardSources::hear(const hearing::BlockLocalisation& heard, const binaural_
       }
     }
   }
+  // A seen object takes only peaks from where it was seen (a validation
+  // gate): once the robot has moved far from it, a louder or nearer source
+  // of a like spectrum would otherwise pull its estimate towards the robot.
   const auto placedByDirection = [&](std::size_t p, std::size_t o) {  // true: may take the peak
-    if (!(config_.seen_explains_deg > 0) || objects_of_sound[sounding[o].signature] < 2) return true;
-    return sounding[o].seen_at ? seen_there[p][o] : explained[p].count(sounding[o].signature) == 0;
+    if (!(config_.seen_explains_deg > 0)) return true;
+    if (sounding[o].seen_at) return static_cast<bool>(seen_there[p][o]);
+    return objects_of_sound[sounding[o].signature] < 2 || explained[p].count(sounding[o].signature) == 0;
   };
 
   // Every (peak, object) pair whose spectra match, best first.

@@ -6,9 +6,12 @@
 // (ties broken by the direction the object was heard in before). Objects
 // of one sound (the same signature) cannot be told apart that way: among
 // them, a peak from the direction of one that vision has placed (or from its
-// front-back mirror image) is that one's, and a seen one takes only those;
-// without this the peaks of the sirens already seen would keep pulling the
-// estimates of the ones not seen yet towards them. Each object keeps
+// front-back mirror image) is that one's; without this the peaks of the
+// sirens already seen would keep pulling the estimates of the ones not seen
+// yet towards them. And any seen object takes only the peaks from where it
+// was seen: once the robot has moved away, another source of a like
+// spectrum, nearer and louder, would pull its estimate towards the robot.
+// Each object keeps
 //  - a posterior over the world direction it is heard in: the block's
 //    posterior near its peaks, turned into the world frame, adds bounded
 //    evidence to what was heard before, which fades. When the head turns, the
@@ -42,7 +45,7 @@ namespace beft::audio {
 
 struct HearingConfig {
   double min_similarity = 0.6;       // a peak whose spectrum matches no sounding object this well is not assigned
-  double seen_explains_deg = 10;     // among objects of one sound, a peak this near a seen one's direction (or its mirror) is its
+  double seen_explains_deg = 10;     // a seen object takes only peaks this near its seen direction (or its mirror) [deg]; 0: off
   double peak_half_width_deg = 12;   // the part of the block's posterior that belongs to a peak
   double forgetting = 0.1;           // per block: this share of the evidence gathered so far fades
   double evidence_per_block = 2.0;   // one block multiplies a direction's odds by at most 1 + this

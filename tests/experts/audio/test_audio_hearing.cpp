@@ -146,6 +146,34 @@ TEST(HeardSources, APeakFromWhereASeenObjectOfTheSameSoundIsIsThatObjects) {
   EXPECT_NEAR(unseen.estimate("siren_far")->bearing_deg, 90, 1.0);
 }
 
+// A seen object, even the only one of its sound, takes no peak from
+// elsewhere: heard from far off, a nearer source of a like spectrum would
+// pull its estimate away from where it was seen.
+TEST(HeardSources, ASeenObjectTakesOnlyPeaksFromWhereItWasSeen) {
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const auto radio = spectrum({10, 9, 6, 2, 0.3});
+  ASSERT_GE(hearing::signatureSimilarity(voice, radio), HearingConfig{}.min_similarity);
+  // Head at (0, 0) facing +y; the victim was seen straight ahead.
+  const std::vector<SoundingObject> seen = {{"victim", &voice, Eigen::Vector2d(0, 10)}};
+  HeardSources heard;
+  heard.hear(heardAt({{60, &radio}}), blockAt(0, 0, 0, 90), seen);
+  EXPECT_FALSE(heard.estimate("victim").has_value()) << "a like sound 60 deg off is not the seen victim";
+  heard.hear(heardAt({{5, &voice}}), blockAt(1, 0, 0, 90), seen);
+  ASSERT_TRUE(heard.estimate("victim").has_value());
+  EXPECT_NEAR(heard.estimate("victim")->bearing_deg, 95, 1.0);
+  // Not seen, the same peak 60 deg off is its.
+  HeardSources unseen;
+  unseen.hear(heardAt({{60, &radio}}), blockAt(0, 0, 0, 90), {{"victim", &voice}});
+  ASSERT_TRUE(unseen.estimate("victim").has_value());
+  EXPECT_NEAR(unseen.estimate("victim")->bearing_deg, 150, 1.0);
+  // With the gate off, the seen one takes it too.
+  HearingConfig off;
+  off.seen_explains_deg = 0;
+  HeardSources ungated(off);
+  ungated.hear(heardAt({{60, &radio}}), blockAt(0, 0, 0, 90), seen);
+  EXPECT_TRUE(ungated.estimate("victim").has_value());
+}
+
 TEST(HeardSources, APeakLikeNoSoundingObjectIsNotAssigned) {
   const auto voice = spectrum({10, 8, 4, 1, 0.1});
   const auto engine = spectrum({0.1, 0.1, 1, 8, 10});
