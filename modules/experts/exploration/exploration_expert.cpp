@@ -69,8 +69,9 @@ std::string ExplorationExpert::description() const {
          "'look_at object', ends it when fusion settles the hypothesis, and tries another viewpoint "
          "when the robot looked and it is still unsettled (up to verify_attempts). Glimpsed possible "
          "persons are inspected the same way. With nothing to check it looks around at the start and "
-         "explores frontiers (reachable free cells next to unknown ones). When nothing is left, or the "
-         "scenario's duration is reached, it publishes STOP_REQUEST with the reason. Reads GT_OBJECTS "
+         "explores frontiers (reachable free cells next to unknown ones), then visits the known free ground "
+         "the camera has not yet had in view within close_look_m (a silent person lying in a house is "
+         "perceived only then). When nothing is left, or the scenario's duration is reached, it publishes STOP_REQUEST with the reason. Reads GT_OBJECTS "
          "only for the scenario's duration. Deterministic.";
 }
 
@@ -124,6 +125,14 @@ void ExplorationExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("visited_radius_m", f.visited_radius_m, 0, kNoLimit,
                      "frontier cells this close to a reached frontier goal are ignored [m]");
   parameters.declare("min_frontier_cells", f.min_cells, 1, 1000000, "smaller frontiers are ignored [cells]");
+  CloseLookParameters& c = e.close_looks;
+  parameters.declare("close_look", c.enabled,
+                     "once no frontier is left, visit the known free ground the camera has not seen within "
+                     "close_look_m and in view (a person lying there is seen only that close)");
+  parameters.declare("close_look_m", c.range_m, 0.5, kNoLimit, "ground this close to the camera, in view, is looked at closely [m]");
+  parameters.declare("close_look_fov_deg", c.fov_deg, 1, 179, "the camera's horizontal field of view for close looks [deg]");
+  parameters.declare("close_look_min_cells", c.min_cells, 1, 1000000,
+                     "smaller patches of ground not looked at closely are ignored [0.5 m cells]");
   parameters.declare("stop_when_done", e.stop_when_done,
                      "request the stop when nothing is left (0: keep watching until the scenario's duration)");
 }
@@ -159,6 +168,7 @@ Observation ExplorationExpert::observe(const expert::Firing& firing) {
     o.robot_x = robot->x;
     o.robot_y = robot->y;
     o.robot_yaw = robot->yaw;
+    o.head_yaw = robot->head_yaw;
     if (robot->radius > 0) o.robot_radius = robot->radius;
   }
   const auto* weights = weights_.ofTick(firing.tick);

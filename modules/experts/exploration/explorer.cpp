@@ -48,7 +48,7 @@ TaskRequest subTask(const std::string& kind, double x, double y, double yaw, con
 }  // namespace
 
 Explorer::Explorer(ExplorerParameters parameters)
-    : parameters_(std::move(parameters)), memory_(parameters_.frontiers) {}
+    : parameters_(std::move(parameters)), memory_(parameters_.frontiers), close_looks_(parameters_.close_looks) {}
 
 Explorer::Phase Explorer::phase() const {
   if (stopped_) return Phase::Stopped;
@@ -57,7 +57,8 @@ Explorer::Phase Explorer::phase() const {
     case JobKind::LookAround: return Phase::LookAround;
     case JobKind::Verify:
     case JobKind::Inspect: return Phase::Verify;
-    case JobKind::Explore: return Phase::Explore;
+    case JobKind::Explore:
+    case JobKind::CloseLook: return Phase::Explore;
   }
   return Phase::Idle;
 }
@@ -104,6 +105,11 @@ const KnownMap* Explorer::knownMap(const Observation& o) {
   return map_.get();
 }
 
+void Explorer::lookClosely(const Observation& o) {
+  if (!parameters_.close_looks.enabled) return;
+  if (const KnownMap* map = knownMap(o)) close_looks_.look(*map, o.robot_x, o.robot_y, o.robot_yaw + o.head_yaw);
+}
+
 void Explorer::updateTrail(const Observation& o) {
   const auto& stood = memory_.stood();
   if (stood.empty() ||
@@ -125,6 +131,7 @@ Decision Explorer::step(const Observation& o) {
   }
   if (!o.robot_known) return d;  // nothing sensible to decide yet
   updateTrail(o);
+  lookClosely(o);
   finishStrayComposites(o, d);
   if (o.duration > 0 && o.t >= o.duration) {
     if (job_) endJob(o, d, false, "the scenario's duration ended", true);
@@ -276,23 +283,27 @@ bool Explorer::endIfSettledOrGone(const Observation& o, Decision& d, bool on_sta
     }
   } else if (!on_stack) {
     if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
+    if (job.kind == JobKind::CloseLook) closeLookVisited(o, job);
     endJob(o, d, false, "the task ended on the stack", false);
     return true;
   }
   return false;
 }
 
-// Exploring gives way to a hypothesis to verify. True if the job ended.
+// Exploring gives way to a hypothesis to verify; looking closely, also to a
+// glimpsed possible person to inspect (what it is for). True if the job ended.
 bool Explorer::endIfInterrupted(const Observation& o, Decision& d) {
-  if (job_->kind != JobKind::Explore) return false;
+  if (job_->kind != JobKind::Explore && job_->kind != JobKind::CloseLook) return false;
+  const bool for_inspect = job_->kind == JobKind::CloseLook;
   for (const auto& h : o.hypotheses) {
+    const bool verify = wantsVerify(h), inspect = for_inspect && wantsInspect(h);
+    if (!verify && !inspect) continue;
     const auto it = targets_.find(h.object_id);
     // Only a hypothesis not known to lack a viewpoint: those wait for this job to end.
     const bool available = it == targets_.end() || (!it->second.given_up && !it->second.no_viewpoint);
-    if (wantsVerify(h) && available) {
-      endJob(o, d, true, "interrupted: " + h.object_id + " to verify", true);
-      return true;
-    }
+    if (!available) continue;
+    endJob(o, d, true, "interrupted: " + h.object_id + (verify ? " to verify" : " to inspect"), true);
+    return true;
   }
   return false;
 }
@@ -310,6 +321,10 @@ bool Explorer::endIfLookedOrLate(const Observation& o, Decision& d, int sub_task
         memory_.addVisited({job.x, job.y});
         endJob(o, d, true, "frontier at " + at(job.x, job.y) + " reached", true);
         return true;
+      case JobKind::CloseLook:
+        closeLookVisited(o, job);
+        endJob(o, d, true, "looked closely from " + at(job.x, job.y), true);
+        return true;
       case JobKind::Verify:
       case JobKind::Inspect:
         if (o.t - job.done_looking_t >= parameters_.look_dwell_s) {
@@ -324,6 +339,7 @@ bool Explorer::endIfLookedOrLate(const Observation& o, Decision& d, int sub_task
     if (job.kind == JobKind::Verify || job.kind == JobKind::Inspect)
       recordFailedAttempt(job.object_id, {job.x, job.y}, "timed out", d);
     if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
+    if (job.kind == JobKind::CloseLook) closeLookVisited(o, job);
     endJob(o, d, false, "timed out", true);
     return true;
   }
@@ -352,7 +368,9 @@ void Explorer::revalidate(const Observation& o, Decision& d) {
     else recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
   }
   if (job.kind == JobKind::Explore) memory_.addVisited({job.x, job.y});
-  endJob(o, d, job.kind == JobKind::Explore, why, true);
+  // A close look's goal seen closely on the way is done; one now blocked
+  // is not chosen again (only standable cells are).
+  endJob(o, d, job.kind == JobKind::Explore || job.kind == JobKind::CloseLook, why, true);
 }
 
 ViewpointParameters Explorer::viewpointsFor(const HypothesisView& h) const {
@@ -369,6 +387,19 @@ bool Explorer::jobStillValid(const Observation& o, std::string& why) {
   if (job.kind == JobKind::Explore) {
     if (!frontierNear(*map, memory_, job.x, job.y, parameters_.frontier_check_radius_m)) {
       why = "frontier at " + at(job.x, job.y) + " revealed";
+      return false;
+    }
+    return true;
+  }
+  if (job.kind == JobKind::CloseLook) {
+    Cell cell;
+    const CloseLookParameters& looks = parameters_.close_looks;
+    if (close_looks_.openGroundNear(*map, job.x, job.y, looks.range_m) < looks.min_cells) {
+      why = "the ground around " + at(job.x, job.y) + " was looked at closely on the way";
+      return false;
+    }
+    if (!map->cellOf(job.x, job.y, cell) || !map->standable(cell.x, cell.y)) {
+      why = "the close look's goal " + at(job.x, job.y) + " is blocked on the map";
       return false;
     }
     return true;
@@ -533,7 +564,9 @@ void Explorer::decide(const Observation& o, Decision& d) {
                        std::to_string(verified) + " verified, " + std::to_string(falsified) + " falsified";
   if (given_up > 0) reason += ", " + std::to_string(given_up) + " given up";
   if (no_viewpoint > 0) reason += ", " + std::to_string(no_viewpoint) + " without a reachable viewpoint";
-  reason += "), no reachable frontier left" + unsettled;
+  reason += "), no reachable frontier left";
+  if (parameters_.close_looks.enabled) reason += ", no reachable ground left to look at closely";
+  reason += unsettled;
   if (parameters_.stop_when_done) {
     stop(reason, d);
     return;
@@ -618,9 +651,19 @@ bool Explorer::startExploreJob(const Observation& o, Decision& d) {
   const KnownMap* map = knownMap(o);
   if (map == nullptr) return false;
   const TravelField travel(*map, o.robot_x, o.robot_y, o.robot_radius + parameters_.safety_margin_m + map->resolution());
-  const auto cheapest = cheapestFrontier(*map, travel, memory_, {o.robot_x, o.robot_y});
-  if (!cheapest) return false;
-  const FrontierGoal& goal = *cheapest;
+  const auto frontier = cheapestFrontier(*map, travel, memory_, {o.robot_x, o.robot_y});
+  // Ground not looked at closely that the robot reaches sooner than the next
+  // frontier is looked at now, while it is near: once the frontiers are
+  // done, it may be far away.
+  if (parameters_.close_looks.enabled) {
+    const auto look = close_looks_.cheapestPatch(*map, travel, {o.robot_x, o.robot_y});
+    if (look && (!frontier || look->travel_m < frontier->cost)) {
+      startCloseLookJob(*look, o, d);
+      return true;
+    }
+  }
+  if (!frontier) return false;
+  const FrontierGoal& goal = *frontier;
   Job job;
   job.kind = JobKind::Explore;
   job.x = goal.x;
@@ -633,6 +676,27 @@ bool Explorer::startExploreJob(const Observation& o, Decision& d) {
                fixed(goal.travel_m) + " m)",
            parameters_.explore_priority, o, d);
   return true;
+}
+
+void Explorer::startCloseLookJob(const CloseLookGoal& goal, const Observation& o, Decision& d) {
+  Job job;
+  job.kind = JobKind::CloseLook;
+  job.x = goal.x;
+  job.y = goal.y;
+  job.yaw = goal.yaw;
+  job.sub_tasks.push_back(subTask("goto", goal.x, goal.y, goal.yaw, "", "go to look closely at the ground"));
+  for (const double yaw : goal.turns)
+    job.sub_tasks.push_back(subTask("turn", 0, 0, yaw, "", "look closely at the ground around"));
+  job.deadline_t = o.t + parameters_.attempt_timeout_s + goal.travel_m / parameters_.nominal_speed;
+  const double cell_m = parameters_.close_looks.cell_m;
+  startJob(std::move(job),
+           "look closely at the ground from " + at(goal.x, goal.y) + " (" + fixed(goal.size * cell_m * cell_m) +
+               " m2 not looked at closely, travel " + fixed(goal.travel_m) + " m)",
+           parameters_.explore_priority, o, d);
+}
+
+void Explorer::closeLookVisited(const Observation& o, const Job& job) {
+  if (const KnownMap* map = knownMap(o)) close_looks_.visited(*map, {job.x, job.y});
 }
 
 }  // namespace beft::exploration

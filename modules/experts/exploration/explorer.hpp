@@ -14,11 +14,16 @@
 //  3. Inspect: a hypothesis glimpsed (some pixels, too few to count as seen),
 //     never heard, that may be a person, is approached the same way.
 //  4. Explore: the nearest reachable frontier (frontiers.hpp), facing the
-//     unknown. A hypothesis to verify interrupts it.
-//  5. Stop: nothing to verify or inspect and no reachable frontier left, or
-//     the scenario's duration reached: a stop request with the reason. With
-//     stop_when_done off, it keeps watching instead (a new sound to verify
-//     starts it again) and asks to stop only when the duration is reached.
+//     unknown, or look closely, when it is nearer, at a patch of the known
+//     free ground the camera has not yet had in view up close
+//     (close_looks.hpp): depth maps a floor from farther away than vision
+//     sees who lies on it. A hypothesis to verify interrupts either; a
+//     glimpsed possible person, a close look.
+//  5. Stop: nothing to verify or inspect, no reachable frontier and no
+//     ground left to look at closely, or the scenario's duration reached: a
+//     stop request with the reason. With stop_when_done off, it keeps
+//     watching instead (a new sound to verify starts it again) and asks to
+//     stop only when the duration is reached.
 //
 // Hypotheses are chosen by DW weight (the sounds that matter first), then by
 // the cost of their best viewpoint. Only what the robot perceived is used:
@@ -33,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "experts/exploration/close_looks.hpp"
 #include "experts/exploration/frontiers.hpp"
 #include "experts/exploration/known_map.hpp"
 #include "experts/exploration/viewpoints.hpp"
@@ -62,6 +68,7 @@ struct Observation {
   double t = 0;                      // simulated time [s]
   double duration = 0;               // scenario duration [s], <= 0 unknown
   double robot_x = 0, robot_y = 0, robot_yaw = 0;  // [m], [deg]
+  double head_yaw = 0;               // head pan relative to the platform [deg]
   double robot_radius = 0.35;        // [m]
   bool robot_known = false;
   std::vector<HypothesisView> hypotheses;
@@ -138,6 +145,7 @@ struct ExplorerParameters {
   double fire_extent_m = 1.0;
   ViewpointParameters viewpoints;
   FrontierParameters frontiers;
+  CloseLookParameters close_looks;
 };
 
 class Explorer {
@@ -156,9 +164,10 @@ class Explorer {
   int attempts(const std::string& object_id) const;
   bool givenUp(const std::string& object_id) const;
   const std::vector<Point>& triedViewpoints(const std::string& object_id) const;
+  const CloseLookCoverage& closeLooks() const { return close_looks_; }
 
  private:
-  enum class JobKind { LookAround, Verify, Inspect, Explore };
+  enum class JobKind { LookAround, Verify, Inspect, Explore, CloseLook };
   struct Job {
     JobKind kind = JobKind::Explore;
     std::string object_id;           // verify / inspect
@@ -229,7 +238,14 @@ class Explorer {
 
   void decide(const Observation& o, Decision& d);
   bool startTargetJob(const Observation& o, Decision& d, bool inspect);
+  // The nearer of the cheapest frontier and the patch of ground not looked
+  // at closely that the robot reaches soonest.
   bool startExploreJob(const Observation& o, Decision& d);
+  void startCloseLookJob(const CloseLookGoal& goal, const Observation& o, Decision& d);
+  // Marks the ground the camera looks at closely now.
+  void lookClosely(const Observation& o);
+  // What could not be looked at closely from the job's goal is not asked for again.
+  void closeLookVisited(const Observation& o, const Job& job);
   void startJob(Job job, const std::string& note, int32_t priority, const Observation& o, Decision& d);
   void stop(const std::string& reason, Decision& d);
 
@@ -240,6 +256,7 @@ class Explorer {
   std::optional<Job> job_;
   std::map<std::string, TargetMemory> targets_;
   ExplorationMemory memory_;         // where the robot stood, frontier goals visited
+  CloseLookCoverage close_looks_;    // the ground looked at closely
   std::vector<int64_t> known_task_ids_;  // composites of ours already matched to a job
   std::vector<int64_t> finish_sent_;     // composites we asked the stack to finish
   bool looked_around_ = false;

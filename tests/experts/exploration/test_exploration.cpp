@@ -13,6 +13,7 @@
 
 #include <beft/obstacle_map_t.hpp>
 
+#include "experts/exploration/close_looks.hpp"
 #include "experts/exploration/explorer.hpp"
 #include "experts/exploration/frontiers.hpp"
 #include "experts/exploration/known_map.hpp"
@@ -692,7 +693,15 @@ class ExplorerRun : public ::testing::Test {
     return h;
   }
 
-  ExplorerParameters parameters;
+  // These runs are about targets and frontiers: the ground is looked at
+  // closely only where a test says so (CloseLookRun).
+  static ExplorerParameters withoutCloseLooks() {
+    ExplorerParameters p;
+    p.close_looks.enabled = false;
+    return p;
+  }
+
+  ExplorerParameters parameters = withoutCloseLooks();
   Explorer explorer{parameters};
   FakeStack stack;
   Observation observation;
@@ -1082,6 +1091,197 @@ TEST_F(ExplorerRun, InspectsAGlimpsedPossiblePersonButNotAClearWall) {
   wall.person_confidence = 0.3;
   observation.hypotheses = {wall, far};
   const auto pushes = pushesOf(tick());
+  ASSERT_EQ(pushes.size(), 1u);
+  EXPECT_EQ(pushes[0].kind, "verify");
+  EXPECT_EQ(pushes[0].object_id, "figure");
+}
+
+// A house of three walls, its open side facing north, in a known free
+// 40 x 20 m world: walls x = 30..36 at y = 4 (south), x = 30 and x = 36
+// from y = 4 to 10.
+planners::ObstacleCells houseWorld() {
+  auto cells = makeCells(40, 20, kFree);
+  fillRect(cells, 30.0, 3.9, 36.0, 4.1, kOccupied);
+  fillRect(cells, 29.9, 4.0, 30.1, 10.0, kOccupied);
+  fillRect(cells, 35.9, 4.0, 36.1, 10.0, kOccupied);
+  return cells;
+}
+
+TEST(CloseLooks, GroundIsLookedAtCloselyOnlyInViewInRangeAndInSight) {
+  auto cells = makeCells(20, 20, kFree);
+  fillRect(cells, 7.9, 10.5, 8.1, 16.0, kOccupied);  // a wall north-east of the camera
+  fillRect(cells, 3.0, 14.0, 5.0, 16.0, kUnknown);   // ground not mapped yet
+  const KnownMap map(cells, 0.5);
+  CloseLookParameters parameters;
+  parameters.range_m = 6.0;
+  CloseLookCoverage coverage(parameters);
+  coverage.look(map, 5, 10, 45);  // gazing north-east
+  EXPECT_FALSE(coverage.open(7.1, 12.1)) << "in view, 3 m away, in sight";
+  EXPECT_TRUE(coverage.open(9.1, 13.1)) << "in view and range, behind the wall";
+  EXPECT_TRUE(coverage.open(5.1, 4.1)) << "behind the camera";
+  EXPECT_TRUE(coverage.open(10.6, 15.6)) << "in view, 7.9 m away";
+  EXPECT_TRUE(coverage.open(4.1, 15.1)) << "not known to be ground when looked at";
+  const int looked = coverage.lookedAtCells();
+  EXPECT_GT(looked, 20);
+  coverage.look(map, 5.1, 10, 50);  // hardly moved: not marked again
+  EXPECT_EQ(coverage.lookedAtCells(), looked);
+  coverage.look(map, 5, 10, 225);  // turned round
+  EXPECT_FALSE(coverage.open(3.1, 8.1));
+  EXPECT_GT(coverage.lookedAtCells(), looked);
+}
+
+TEST(CloseLooks, PatchByPatchTheReachableGroundIsLookedAtAndTheSearchEnds) {
+  const auto cells = houseWorld();
+  const KnownMap map(cells, 0.5);
+  CloseLookCoverage coverage;
+  Point robot{3, 10};
+  coverage.look(map, robot.x, robot.y, 0);
+  int goals = 0;
+  double travelled = 0;
+  while (auto goal = coverage.cheapestPatch(map, TravelField(map, robot.x, robot.y, 0.6), robot)) {
+    ASSERT_LT(++goals, 200) << "the search must end";
+    Cell cell;
+    ASSERT_TRUE(map.cellOf(goal->x, goal->y, cell));
+    EXPECT_TRUE(map.standable(cell.x, cell.y));
+    EXPECT_TRUE(coverage.open(goal->x, goal->y));
+    travelled += goal->travel_m;
+    robot = {goal->x, goal->y};
+    coverage.look(map, goal->x, goal->y, goal->yaw);
+    double heading = goal->yaw;
+    for (const double turn : goal->turns) {  // turning the shorter way, marked every 10 degrees
+      const double span = std::remainder(turn - heading, 360.0);
+      EXPECT_LE(std::abs(span), 90.0 + 1e-9);
+      for (int step = 1; step <= 9; ++step) coverage.look(map, goal->x, goal->y, heading + span * step / 9.0);
+      heading = turn;
+    }
+    coverage.visited(map, {goal->x, goal->y});
+  }
+  EXPECT_GT(goals, 3);
+  // The house's floor, which depth maps from the far side of the world, was
+  // looked at from up close.
+  EXPECT_FALSE(coverage.open(33.1, 6.1));
+  EXPECT_FALSE(coverage.open(31.1, 5.1));
+  // Most of the ground was looked at, not merely given up.
+  const double free_cells = (40.0 * 20.0 - 14.0) / 0.25;
+  EXPECT_GT(coverage.lookedAtCells(), 0.9 * free_cells);
+  // Into each patch and round: about 800 m2 in fewer than 30 stops.
+  EXPECT_LT(goals, 30);
+  EXPECT_LT(travelled, 300.0);
+}
+
+TEST(CloseLooks, OffTheSearchHasNoGoal) {
+  const auto cells = houseWorld();
+  const KnownMap map(cells, 0.5);
+  CloseLookParameters parameters;
+  parameters.enabled = false;
+  CloseLookCoverage coverage(parameters);
+  coverage.look(map, 3, 10, 0);
+  EXPECT_EQ(coverage.lookedAtCells(), 0);
+  EXPECT_FALSE(coverage.cheapestPatch(map, TravelField(map, 3, 10, 0.6), {3, 10}).has_value());
+}
+
+// The explorer on a map with no frontier: it looks closely before it stops.
+class CloseLookRun : public ExplorerRun {
+ protected:
+  void SetUp() override {
+    ExplorerRun::SetUp();
+    parameters = ExplorerParameters{};
+    parameters.look_around = false;
+    explorer = Explorer(parameters);
+    observation.robot_x = 3;
+    observation.robot_y = 10;
+    observation.duration = 10000;
+    setMap(houseWorld());
+  }
+  // Ticks until a goto is pushed, then stands the robot at its goal and ends
+  // its sub-tasks: a robot that gets wherever it is sent. The decision of
+  // the tick that pushed it, or the stop.
+  Decision goToNext() {
+    for (int i = 0; i < 10; ++i) {
+      Decision d = tick();
+      if (d.stop) return d;
+      for (const auto& push : pushesOf(d))
+        if (push.kind == "goto") {
+          goals.push_back({push.x, push.y});
+          observation.robot_x = push.x;
+          observation.robot_y = push.y;
+          observation.robot_yaw = push.yaw;
+          stack.completeSubTasks(push.parent);
+          return d;
+        }
+    }
+    return {};
+  }
+  std::vector<Point> goals;
+};
+
+TEST_F(CloseLookRun, WithNoFrontierLeftItLooksCloselyAtTheGroundBeforeItStops) {
+  Decision d;
+  for (int jobs = 0; jobs < 300 && !d.stop; ++jobs) d = goToNext();
+  ASSERT_TRUE(d.stop.has_value());
+  EXPECT_NE(d.stop->find("no reachable ground left to look at closely"), std::string::npos) << *d.stop;
+  EXPECT_GT(goals.size(), 3u);
+  // It went into the house, or close enough to see its floor.
+  bool near_the_floor = false;
+  for (const auto& g : goals) near_the_floor |= std::hypot(g.x - 33, g.y - 7) < 6.0 && g.y > 4;
+  EXPECT_TRUE(near_the_floor);
+  EXPECT_FALSE(explorer.closeLooks().open(33.1, 6.1));
+
+  // Without close looks, the same map ends the run at once.
+  parameters.close_looks.enabled = false;
+  explorer = Explorer(parameters);
+  observation.robot_x = 3;
+  observation.robot_y = 10;
+  const Decision at_once = tick();
+  ASSERT_TRUE(at_once.stop.has_value());
+  EXPECT_EQ(at_once.stop->find("look at closely"), std::string::npos) << *at_once.stop;
+}
+
+TEST_F(CloseLookRun, GroundNearerThanTheNextFrontierIsLookedAtFirst) {
+  auto cells = makeCells(40, 20, kUnknown);
+  fillRect(cells, 0.0, 0.0, 20.0, 20.0, kFree);  // the west half known, the frontier at x = 20
+  setMap(cells);
+  observation.robot_yaw = 180;  // at (3, 10), facing the world's west edge
+  std::vector<std::string> notes;
+  size_t first_frontier = 0;
+  for (int jobs = 0; jobs < 100 && first_frontier == 0; ++jobs) {
+    goToNext();
+    for (const auto& push : stack.pushes)
+      if (push.parent == 0) notes.push_back(push.note);
+    stack.pushes.clear();
+    for (size_t i = 0; i < notes.size() && first_frontier == 0; ++i)
+      if (notes[i].rfind("explore the frontier", 0) == 0) first_frontier = i + 1;
+  }
+  ASSERT_FALSE(notes.empty());
+  EXPECT_EQ(notes.front().rfind("look closely at the ground", 0), 0u) << notes.front();
+  ASSERT_GT(first_frontier, 1u) << "a frontier 17 m away waits for the ground around the robot";
+  // The looks before it were all in the known half, and it came once the
+  // robot stood nearer to it than to what was left to look at.
+  for (size_t i = 0; i + 1 < first_frontier; ++i)
+    EXPECT_EQ(notes[i].rfind("look closely at the ground", 0), 0u) << notes[i];
+  for (size_t i = 0; i + 1 < first_frontier; ++i) EXPECT_LT(goals[i].x, 20.0);
+}
+
+TEST_F(CloseLookRun, AGlimpsedPossiblePersonInterruptsALookAndIsInspected) {
+  goToNext();
+  const auto first = stack.pushes.front();
+  EXPECT_EQ(first.kind, "explore");
+  EXPECT_EQ(explorer.phase(), Explorer::Phase::Explore);
+  stack.pushes.clear();
+  // Pushed, the robot on its way: something person-like is glimpsed.
+  HypothesisView figure;
+  figure.object_id = "figure";
+  figure.x = observation.robot_x + 4;
+  figure.y = observation.robot_y;
+  figure.glimpsed = true;
+  figure.best_category = "person";
+  figure.confidence = figure.person_confidence = 0.52;
+  observation.hypotheses = {figure};
+  const size_t finishes = stack.finishes.size();
+  const Decision d = tick();
+  ASSERT_EQ(stack.finishes.size(), finishes + 1);
+  EXPECT_NE(stack.finishes.back().reason.find("to inspect"), std::string::npos) << stack.finishes.back().reason;
+  const auto pushes = pushesOf(d);
   ASSERT_EQ(pushes.size(), 1u);
   EXPECT_EQ(pushes[0].kind, "verify");
   EXPECT_EQ(pushes[0].object_id, "figure");
