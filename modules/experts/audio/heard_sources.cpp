@@ -57,6 +57,38 @@ Eigen::Vector2d unitOf(double bearing_deg) {
   return {std::cos(radians), std::sin(radians)};
 }
 
+// Which peaks come from the direction where each seen object was seen, or
+// from its front-back mirror image, within within_deg; and which sounds were
+// seen in each peak's direction.
+struct SeenDirections {
+  std::vector<std::vector<bool>> there;                            // [peak][object]
+  std::vector<std::set<const hearing::BandSignature*>> explained;  // [peak]
+};
+
+SeenDirections seenDirections(const hearing::BlockLocalisation& heard, const binaural_block_t& block,
+                              const std::vector<SoundingObject>& sounding, double within_deg) {
+  SeenDirections seen;
+  seen.there.assign(heard.peaks.size(), std::vector<bool>(sounding.size(), false));
+  seen.explained.resize(heard.peaks.size());
+  const Eigen::Vector2d head(block.head_x, block.head_y);
+  for (std::size_t o = 0; o < sounding.size() && within_deg > 0; ++o) {
+    if (!sounding[o].seen_at || sounding[o].signature == nullptr) continue;
+    const Eigen::Vector2d to = *sounding[o].seen_at - head;
+    const double bearing = std::atan2(to.y(), to.x()) * 180.0 / M_PI;
+    for (std::size_t p = 0; p < heard.peaks.size(); ++p) {
+      const double azimuth = heard.peaks[p].azimuth_deg;
+      const auto near = [&](double head_deg) {
+        return hearing::angularDistance(hearing::wrapDegrees(block.head_yaw + head_deg), bearing) <= within_deg;
+      };
+      if (to.norm() < 1e-6 || near(azimuth) || near(hearing::frontBackMirror(azimuth))) {
+        seen.there[p][o] = true;
+        seen.explained[p].insert(sounding[o].signature);
+      }
+    }
+  }
+  return seen;
+}
+
 }  // namespace
 
 void HeardSources::hear(const hearing::BlockLocalisation& heard, const binaural_block_t& block,
@@ -77,32 +109,14 @@ void HeardSources::hear(const hearing::BlockLocalisation& heard, const binaural_
   std::map<const hearing::BandSignature*, int> objects_of_sound;
   for (const auto& object : sounding)
     if (object.signature != nullptr) ++objects_of_sound[object.signature];
-  const Eigen::Vector2d head(block.head_x, block.head_y);
-  std::vector<std::vector<bool>> seen_there(heard.peaks.size(), std::vector<bool>(sounding.size(), false));
-  std::vector<std::set<const hearing::BandSignature*>> explained(heard.peaks.size());  // sounds seen there
-  for (std::size_t o = 0; o < sounding.size() && config_.seen_explains_deg > 0; ++o) {
-    if (!sounding[o].seen_at || sounding[o].signature == nullptr) continue;
-    const Eigen::Vector2d to = *sounding[o].seen_at - head;
-    const double bearing = std::atan2(to.y(), to.x()) * 180.0 / M_PI;
-    for (std::size_t p = 0; p < heard.peaks.size(); ++p) {
-      const double azimuth = heard.peaks[p].azimuth_deg;
-      const auto near = [&](double head_deg) {
-        return hearing::angularDistance(hearing::wrapDegrees(block.head_yaw + head_deg), bearing) <=
-               config_.seen_explains_deg;
-      };
-      if (to.norm() < 1e-6 || near(azimuth) || near(hearing::frontBackMirror(azimuth))) {
-        seen_there[p][o] = true;
-        explained[p].insert(sounding[o].signature);
-      }
-    }
-  }
+  const SeenDirections seen = seenDirections(heard, block, sounding, config_.seen_explains_deg);
   // A seen object takes only peaks from where it was seen (a validation
   // gate): once the robot has moved far from it, a louder or nearer source
   // of a like spectrum would otherwise pull its estimate towards the robot.
   const auto placedByDirection = [&](std::size_t p, std::size_t o) {  // true: may take the peak
     if (!(config_.seen_explains_deg > 0)) return true;
-    if (sounding[o].seen_at) return static_cast<bool>(seen_there[p][o]);
-    return objects_of_sound[sounding[o].signature] < 2 || explained[p].count(sounding[o].signature) == 0;
+    if (sounding[o].seen_at) return static_cast<bool>(seen.there[p][o]);
+    return objects_of_sound[sounding[o].signature] < 2 || seen.explained[p].count(sounding[o].signature) == 0;
   };
 
   // Every (peak, object) pair whose spectra match, best first.

@@ -664,30 +664,29 @@ bool Explorer::startExploreJob(const Observation& o, Decision& d) {
   }
   if (!frontier) return false;
   const FrontierGoal& goal = *frontier;
-  Job job;
-  job.kind = JobKind::Explore;
-  job.x = goal.x;
-  job.y = goal.y;
-  job.yaw = goal.yaw;
-  job.sub_tasks.push_back(subTask("goto", goal.x, goal.y, goal.yaw, "", "go to the frontier"));
-  job.deadline_t = o.t + parameters_.attempt_timeout_s + goal.travel_m / parameters_.nominal_speed;
-  startJob(std::move(job),
+  startJob(goingTo(JobKind::Explore, goal.x, goal.y, goal.yaw, goal.travel_m, "go to the frontier", o),
            "explore the frontier at " + at(goal.x, goal.y) + " (" + std::to_string(goal.size) + " cells, travel " +
                fixed(goal.travel_m) + " m)",
            parameters_.explore_priority, o, d);
   return true;
 }
 
-void Explorer::startCloseLookJob(const CloseLookGoal& goal, const Observation& o, Decision& d) {
+Explorer::Job Explorer::goingTo(JobKind kind, double x, double y, double yaw, double travel_m,
+                               const std::string& note, const Observation& o) const {
   Job job;
-  job.kind = JobKind::CloseLook;
-  job.x = goal.x;
-  job.y = goal.y;
-  job.yaw = goal.yaw;
-  job.sub_tasks.push_back(subTask("goto", goal.x, goal.y, goal.yaw, "", "go to look closely at the ground"));
+  job.kind = kind;
+  job.x = x;
+  job.y = y;
+  job.yaw = yaw;
+  job.sub_tasks.push_back(subTask("goto", x, y, yaw, "", note));
+  job.deadline_t = o.t + parameters_.attempt_timeout_s + travel_m / parameters_.nominal_speed;
+  return job;
+}
+
+void Explorer::startCloseLookJob(const CloseLookGoal& goal, const Observation& o, Decision& d) {
+  Job job = goingTo(JobKind::CloseLook, goal.x, goal.y, goal.yaw, goal.travel_m, "go to look closely at the ground", o);
   for (const double yaw : goal.turns)
     job.sub_tasks.push_back(subTask("turn", 0, 0, yaw, "", "look closely at the ground around"));
-  job.deadline_t = o.t + parameters_.attempt_timeout_s + goal.travel_m / parameters_.nominal_speed;
   const double cell_m = parameters_.close_looks.cell_m;
   startJob(std::move(job),
            "look closely at the ground from " + at(goal.x, goal.y) + " (" + fixed(goal.size * cell_m * cell_m) +

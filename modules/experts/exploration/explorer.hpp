@@ -242,6 +242,10 @@ class Explorer {
   // at closely that the robot reaches soonest.
   bool startExploreJob(const Observation& o, Decision& d);
   void startCloseLookJob(const CloseLookGoal& goal, const Observation& o, Decision& d);
+  // A job whose first sub-task is a goto to (x, y, yaw), due after the
+  // attempt timeout plus the travel at nominal speed.
+  Job goingTo(JobKind kind, double x, double y, double yaw, double travel_m, const std::string& note,
+              const Observation& o) const;
   // Marks the ground the camera looks at closely now.
   void lookClosely(const Observation& o);
   // What could not be looked at closely from the job's goal is not asked for again.
