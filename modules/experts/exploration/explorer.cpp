@@ -538,7 +538,10 @@ void Explorer::decide(const Observation& o, Decision& d) {
   if (startTargetJob(o, d, false)) return;
   if (startTargetJob(o, d, true)) return;
   if (startExploreJob(o, d)) return;
+  // No frontier left: what was given up and has moved since comes before
+  // the rest of the ground to look at closely.
   if (reconsiderMoved(o, d) && startTargetJob(o, d, false)) return;
+  if (startCloseLookJob(o, d)) return;
 
   if (!o.map) {
     if (o.t >= parameters_.confirm_timeout_s * 3)
@@ -652,17 +655,17 @@ bool Explorer::startExploreJob(const Observation& o, Decision& d) {
   if (map == nullptr) return false;
   const TravelField travel(*map, o.robot_x, o.robot_y, o.robot_radius + parameters_.safety_margin_m + map->resolution());
   const auto frontier = cheapestFrontier(*map, travel, memory_, {o.robot_x, o.robot_y});
+  if (!frontier) return false;
   // Ground not looked at closely that the robot reaches sooner than the next
   // frontier is looked at now, while it is near: once the frontiers are
   // done, it may be far away.
   if (parameters_.close_looks.enabled) {
     const auto look = close_looks_.cheapestPatch(*map, travel, {o.robot_x, o.robot_y});
-    if (look && (!frontier || look->travel_m < frontier->cost)) {
-      startCloseLookJob(*look, o, d);
+    if (look && look->travel_m < frontier->cost) {
+      startCloseLook(*look, o, d);
       return true;
     }
   }
-  if (!frontier) return false;
   const FrontierGoal& goal = *frontier;
   startJob(goingTo(JobKind::Explore, goal.x, goal.y, goal.yaw, goal.travel_m, "go to the frontier", o),
            "explore the frontier at " + at(goal.x, goal.y) + " (" + std::to_string(goal.size) + " cells, travel " +
@@ -683,7 +686,17 @@ Explorer::Job Explorer::goingTo(JobKind kind, double x, double y, double yaw, do
   return job;
 }
 
-void Explorer::startCloseLookJob(const CloseLookGoal& goal, const Observation& o, Decision& d) {
+bool Explorer::startCloseLookJob(const Observation& o, Decision& d) {
+  if (!parameters_.close_looks.enabled) return false;
+  const KnownMap* map = knownMap(o);
+  if (map == nullptr) return false;
+  const TravelField travel(*map, o.robot_x, o.robot_y, o.robot_radius + parameters_.safety_margin_m + map->resolution());
+  const auto look = close_looks_.cheapestPatch(*map, travel, {o.robot_x, o.robot_y});
+  if (look) startCloseLook(*look, o, d);
+  return look.has_value();
+}
+
+void Explorer::startCloseLook(const CloseLookGoal& goal, const Observation& o, Decision& d) {
   Job job = goingTo(JobKind::CloseLook, goal.x, goal.y, goal.yaw, goal.travel_m, "go to look closely at the ground", o);
   for (const double yaw : goal.turns)
     job.sub_tasks.push_back(subTask("turn", 0, 0, yaw, "", "look closely at the ground around"));

@@ -17,7 +17,9 @@
 //     unknown, or look closely, when it is nearer, at a patch of the known
 //     free ground the camera has not yet had in view up close
 //     (close_looks.hpp): depth maps a floor from farther away than vision
-//     sees who lies on it. A hypothesis to verify interrupts either; a
+//     sees who lies on it. Once no frontier is left, a hypothesis given up
+//     that has moved far since is tried again first, then the rest of the
+//     ground is looked at. A hypothesis to verify interrupts either; a
 //     glimpsed possible person, a close look.
 //  5. Stop: nothing to verify or inspect, no reachable frontier and no
 //     ground left to look at closely, or the scenario's duration reached: a
@@ -238,10 +240,12 @@ class Explorer {
 
   void decide(const Observation& o, Decision& d);
   bool startTargetJob(const Observation& o, Decision& d, bool inspect);
-  // The nearer of the cheapest frontier and the patch of ground not looked
-  // at closely that the robot reaches soonest.
+  // The cheapest frontier, or the patch of ground not looked at closely
+  // that the robot reaches soonest when it is nearer; false with no frontier.
   bool startExploreJob(const Observation& o, Decision& d);
-  void startCloseLookJob(const CloseLookGoal& goal, const Observation& o, Decision& d);
+  // With no frontier left: the patch the robot reaches soonest.
+  bool startCloseLookJob(const Observation& o, Decision& d);
+  void startCloseLook(const CloseLookGoal& goal, const Observation& o, Decision& d);
   // A job whose first sub-task is a goto to (x, y, yaw), due after the
   // attempt timeout plus the travel at nominal speed.
   Job goingTo(JobKind kind, double x, double y, double yaw, double travel_m, const std::string& note,

@@ -1197,7 +1197,7 @@ class CloseLookRun : public ExplorerRun {
   // its sub-tasks: a robot that gets wherever it is sent. The decision of
   // the tick that pushed it, or the stop.
   Decision goToNext() {
-    for (int i = 0; i < 10; ++i) {
+    for (int i = 0; i < 40; ++i) {
       Decision d = tick();
       if (d.stop) return d;
       for (const auto& push : pushesOf(d))
@@ -1260,6 +1260,26 @@ TEST_F(CloseLookRun, GroundNearerThanTheNextFrontierIsLookedAtFirst) {
   for (size_t i = 0; i + 1 < first_frontier; ++i)
     EXPECT_EQ(notes[i].rfind("look closely at the ground", 0), 0u) << notes[i];
   for (size_t i = 0; i + 1 < first_frontier; ++i) EXPECT_LT(goals[i].x, 20.0);
+}
+
+TEST_F(CloseLookRun, AGivenUpHypothesisThatMovedIsTriedAgainBeforeTheRestOfTheGround) {
+  parameters.verify_attempts = 1;
+  explorer = Explorer(parameters);
+  observation.hypotheses = {heardPerson("caller", 12, 15)};
+  goToNext();  // to a viewpoint of it
+  ASSERT_EQ(stack.pushes.front().kind, "verify");
+  stack.pushes.clear();
+  goToNext();  // the look failed: given up, and the ground comes next
+  ASSERT_TRUE(explorer.givenUp("caller"));
+  ASSERT_FALSE(stack.pushes.empty());
+  EXPECT_EQ(stack.pushes.front().note.rfind("look closely at the ground", 0), 0u) << stack.pushes.front().note;
+  stack.pushes.clear();
+  observation.hypotheses[0].x = 25;  // its estimate jumped 13 m
+  goToNext();
+  ASSERT_FALSE(stack.pushes.empty());
+  EXPECT_EQ(stack.pushes.front().kind, "verify") << stack.pushes.front().note;
+  EXPECT_EQ(stack.pushes.front().object_id, "caller");
+  EXPECT_FALSE(explorer.givenUp("caller"));
 }
 
 TEST_F(CloseLookRun, AGlimpsedPossiblePersonInterruptsALookAndIsInspected) {
