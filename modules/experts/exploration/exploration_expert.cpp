@@ -94,8 +94,8 @@ void ExplorationExpert::declareParameters(DeclaredParameters& parameters) {
                      "it still being mapped) that do not count against ruled_out_viewpoints, at most");
   parameters.declare("moved_m", e.moved_m, 0, kNoLimit,
                      "a hypothesis placed this much farther from where its viewpoints were tried than the robot "
-                     "moved since is tried afresh (a heard estimate that jumped); one given up, only when nothing else "
-                     "is left and placed this far from where it was when given up (0: never) [m]");
+                     "moved since is tried afresh (a heard estimate that jumped); one given up, once no frontier is "
+                     "left and if placed this far from where it was when given up (0: never) [m]");
   parameters.declare("tries_after_moving", e.tries_after_moving, 0, 1000,
                      "times a hypothesis is tried afresh after it moved, at most");
   parameters.declare("inspect_glimpsed", e.inspect_glimpsed, "approach hypotheses glimpsed by vision that may be persons");

@@ -120,9 +120,10 @@ struct ExplorerParameters {
   // been placed where another source of the same sound is) makes the
   // viewpoints tried for the old place no failure at the new one. An
   // estimate still only on its bearing lies a few metres from the robot
-  // and moves with it: that is no jump. One given up is tried again only
-  // when nothing else is left, if placed this far from where it was when
-  // given up. At most tries_after_moving times in all (0 m: never).
+  // and moves with it: that is no jump. One given up is tried again once
+  // no frontier is left (before the ground still to look at closely), if
+  // placed this far from where it was when given up. At most
+  // tries_after_moving times in all (0 m: never).
   double moved_m = 8.0;
   int tries_after_moving = 3;
   bool inspect_glimpsed = true;
