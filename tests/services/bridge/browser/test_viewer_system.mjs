@@ -133,6 +133,8 @@ async function loggedRun(checks, browser) {
     const page = await openPage(browser, `http://127.0.0.1:${port}/`);
     await checks.run("log: the page knows it plays a log", async () => {
       await waitForState(page, (s) => s.connected && s.mode === "log", null, 60000);
+      // The page shows its log controls at its next frame, after its state says "log".
+      await page.waitForSelector("#playback-pause", { visible: true, timeout: 60000 });
       await page.click("#playback-pause");  // seeks and steps from a held log
     });
     await checks.run("log: seeking shows that time's robot pose and the scenario's objects", async () => {
