@@ -1,6 +1,7 @@
 // mission_digests: the pins of the mission digest test, from runs of this
 // build, for a person to review and paste in (see tests/system/README.md).
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -21,7 +22,9 @@ RunDigests digestsOfARun(const std::string& scenario) {
                                   ".xml --no-report --out " + dir, 600);
   if (run.exit_code != 0) throw std::runtime_error(scenario + ": beft-run exited with " +
                                                    std::to_string(run.exit_code) + ":\n" + run.output);
-  return digestRun(readLog(dir + "/run.lcmlog"));
+  RunDigests digests = digestRun(readLog(dir + "/run.lcmlog"));
+  std::filesystem::remove_all(dir);
+  return digests;
 }
 
 }  // namespace

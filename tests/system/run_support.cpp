@@ -70,12 +70,6 @@ ProgramResult runCommand(const std::string& command_line, double timeout_s) {
 std::string binDir() { return BEFT_BIN_DIR; }
 std::string sourceDir() { return BEFT_SOURCE_DIR; }
 
-std::string makeTempDir(const std::string& tag) {
-  std::string pattern = "/tmp/beft_" + tag + "_XXXXXX";
-  if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-  return pattern;
-}
-
 std::vector<LoggedMessage> readLog(const std::string& path, uint64_t* other_run_events, const std::string& run_id) {
   const int64_t run = run_id.empty() ? wire::runOfLog(path) : wire::parseRunId(run_id);
   compare::RunLog log = compare::readRunLog(path, run);

@@ -8,6 +8,7 @@
 #include "lib/compare/data_comparison.hpp"
 #include "lib/compare/message_filters.hpp"
 #include "lib/compare/run_log.hpp"
+#include "tests/system/run_folders.hpp"
 
 #include <map>
 #include <string>
@@ -25,7 +26,6 @@ ProgramResult runCommand(const std::string& command_line, double timeout_s);
 
 std::string binDir();     // build/bin
 std::string sourceDir();  // the repository root
-std::string makeTempDir(const std::string& tag);
 
 using LoggedMessage = compare::LoggedMessage;  // channel (plain name), timestamp [us], data
 
