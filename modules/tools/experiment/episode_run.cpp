@@ -67,6 +67,7 @@ EpisodeState readEpisodeState(const std::string& folder) {
   state.simulated_s = json.value("simulated_s", 0.0);
   state.reason = json.value("reason", "");
   state.command = json.value("command", std::vector<std::string>{});
+  state.log_removed = json.value("log", "").rfind("removed", 0) == 0;
   if (state.status == Status::done && !reportedSimulatedS(folder)) return {};
   return state;
 }
@@ -77,7 +78,10 @@ void writeEpisodeState(const std::string& folder, const EpisodeState& state) {
                                {"wall_s", state.wall_s},
                                {"simulated_s", state.simulated_s},
                                {"reason", state.reason},
-                               {"command", state.command}};
+                               {"command", state.command},
+                               {"log", state.log_removed ? "removed: the episode succeeded; its command, run again, "
+                                                           "writes the same data messages"
+                                                         : kRunLog}};
   const fs::path file = fs::path(folder) / kEpisodeFile, partial = fs::path(folder) / "episode.json.partial";
   std::ofstream(partial) << json.dump(2) << "\n";
   fs::rename(partial, file);  // whole or not at all

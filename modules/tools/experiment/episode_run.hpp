@@ -12,6 +12,7 @@ namespace beft::experiment {
 
 inline const char* const kRunOutput = "run.txt";        // beft-run's own output
 inline const char* const kEpisodeFile = "episode.json";
+inline const char* const kRunLog = "run.lcmlog";        // beft-run's log
 
 enum class Status { missing, done, failed };
 
@@ -22,6 +23,7 @@ struct EpisodeState {
   double simulated_s = 0;  // of a done episode: its report's sim_time_s
   std::string reason;  // why it failed
   std::vector<std::string> command;  // the run's options as recordedCommand() wrote them
+  bool log_removed = false;  // the run log went by the experiment's log policy (log_policy.hpp)
 };
 
 std::string episodeFolder(const std::string& out_dir, const Episode& episode);

@@ -25,10 +25,10 @@ void say(const std::string& line) {
   std::fflush(stdout);
 }
 
-PoolJob jobOf(const Experiment& x, const Episode& episode, const std::string& out_dir) {
-  const std::string folder = episodeFolder(out_dir, episode);
-  PoolJob job{episode.id, folder, runCommand(x, episode, folder, ownBinDir()), {}};
-  job.recorded = recordedCommand(job.command, out_dir);
+PoolJob jobOf(const Experiment& x, const Episode& episode, const RunnerOptions& o) {
+  const std::string folder = episodeFolder(o.out_dir, episode);
+  PoolJob job{episode.id, folder, runCommand(x, episode, folder, ownBinDir()), {}, o.keep_logs};
+  job.recorded = recordedCommand(job.command, o.out_dir);
   return job;
 }
 
@@ -46,7 +46,7 @@ std::vector<PoolJob> jobsToRun(const Experiment& x, const std::vector<Episode>& 
   std::vector<PoolJob> jobs;
   int done = 0, failed = 0;
   for (const auto& episode : episodes) {
-    const PoolJob job = jobOf(x, episode, o.out_dir);
+    const PoolJob job = jobOf(x, episode, o);
     const Status status = stateOf(job, true).status;
     done += status == Status::done;
     failed += status == Status::failed;
@@ -60,10 +60,10 @@ std::vector<PoolJob> jobsToRun(const Experiment& x, const std::vector<Episode>& 
 }
 
 std::vector<EpisodeResult> collect(const Experiment& x, const std::vector<Episode>& episodes,
-                                   const std::string& out_dir) {
+                                   const RunnerOptions& o) {
   std::vector<EpisodeResult> results;
   for (const auto& episode : episodes) {
-    const PoolJob job = jobOf(x, episode, out_dir);
+    const PoolJob job = jobOf(x, episode, o);
     EpisodeResult r{episode, stateOf(job, false), std::nullopt};
     if (r.state.status == Status::done) r.metrics = readMetrics((fs::path(job.folder) / "report.json").string());
     results.push_back(r);
@@ -87,8 +87,14 @@ void writeResults(const Experiment& x, const std::vector<EpisodeResult>& results
   std::cout << "\n";
   printSummary(summary, std::cout);
   std::cout << "\n";
-  for (const auto& r : results)
+  int logs_removed = 0;
+  for (const auto& r : results) {
     if (r.state.status == Status::failed) say("failed: " + r.episode.id + ": " + r.state.reason);
+    logs_removed += r.state.log_removed;
+  }
+  if (logs_removed > 0)
+    say("run logs: removed for " + std::to_string(logs_removed) +
+        " episode(s) that succeeded (--keep-logs all keeps them; each episode.json has the command that makes it again)");
   say("wrote " + out_dir + "/episodes.csv, summary.csv, summary.json, success.png, time_to_find.png");
 }
 
@@ -122,7 +128,7 @@ int exitCode(const PoolOutcome& pool, const std::vector<EpisodeResult>& results)
 int runOneEpisode(const Experiment& x, const std::vector<Episode>& episodes, const RunnerOptions& o) {
   for (const auto& episode : episodes)
     if (episode.id == o.run_episode) {
-      const PoolOutcome pool = runLocalPool({jobOf(x, episode, o.out_dir)}, 1, say);
+      const PoolOutcome pool = runLocalPool({jobOf(x, episode, o)}, 1, say);
       return pool.interrupted ? 130 : pool.done == 1 ? 0 : 1;
     }
   std::fprintf(stderr, "[experiment] error: %s has no episode '%s' (--list prints them)\n", o.file.c_str(),
@@ -133,7 +139,7 @@ int runOneEpisode(const Experiment& x, const std::vector<Episode>& episodes, con
 SlurmRun slurmRun(const Experiment& x, const RunnerOptions& o) {
   const std::string file = fs::absolute(o.file).lexically_normal().string();
   return {o.limits, o.slurm_wait, x.name, o.out_dir,
-          {ownBinDir() + "/beft-experiment", file, "--out", o.out_dir, "--run-episode"}};
+          {ownBinDir() + "/beft-experiment", file, "--out", o.out_dir, "--keep-logs", nameOf(o.keep_logs), "--run-episode"}};
 }
 
 // The missing episodes run, locally or on Slurm; the exit code when there is
@@ -177,7 +183,7 @@ int runExperiment(const RunnerOptions& options) {
   if (!options.run_episode.empty()) return runOneEpisode(x, episodes, options);
   PoolOutcome pool;
   if (const auto code = runJobs(x, episodes, options, pool)) return *code;
-  const auto results = collect(x, episodes, options.out_dir);
+  const auto results = collect(x, episodes, options);
   writeResults(x, results, options.out_dir);
   sayPace(pool, options.slurm ? 0 : options.jobs);
   if (pool.interrupted) say("interrupted: start it again to run what is missing");

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "tools/experiment/log_policy.hpp"
 #include "tools/experiment/slurm_script.hpp"
 
 namespace beft::experiment {
@@ -14,6 +15,7 @@ struct RunnerOptions {
   int jobs = 1;
   bool retry_failed = false;
   bool list_only = false;  // --list: say what would run, run nothing
+  KeepLogs keep_logs = KeepLogs::unsuccessful;  // --keep-logs
   bool slurm = false;      // --slurm: an sbatch array job instead of the local pool
   bool slurm_wait = false;  // --slurm-wait: wait for the job, then gather its rows
   SlurmLimits limits;

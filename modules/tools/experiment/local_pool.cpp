@@ -44,6 +44,7 @@ void finish(const Running& run, int status, PoolOutcome& outcome, Pace& pace,
   if (stopRequested()) return;
   EpisodeState state = finishedState(run.job->folder, exitCodeOf(status), wall_s);
   state.command = run.job->recorded;
+  state.log_removed = applyLogPolicy(run.job->folder, state, run.job->keep_logs);  // before episode.json: crash-only
   writeEpisodeState(run.job->folder, state);
   outcome.episode_wall_s += wall_s;
   char seconds[32];

@@ -7,12 +7,15 @@
 #include <string>
 #include <vector>
 
+#include "tools/experiment/log_policy.hpp"
+
 namespace beft::experiment {
 
 struct PoolJob {
   std::string id, folder;
   std::vector<std::string> command;
   std::vector<std::string> recorded;  // the command as episode.json keeps it
+  KeepLogs keep_logs = KeepLogs::all;  // whether its run log stays once it succeeded
 };
 
 // Simulated seconds per wall second over a stretch of the pool.

@@ -53,8 +53,15 @@ std::optional<int> parseOptions(int argc, char** argv, beft::experiment::RunnerO
       ->check(CLI::PositiveNumber);
   app.add_flag("--retry-failed", o.retry_failed, "run the episodes that failed again");
   app.add_flag("--list", o.list_only, "print the episodes' ids and run nothing");
+  std::string keep_logs = beft::experiment::nameOf(o.keep_logs);
+  app.add_option("--keep-logs", keep_logs,
+                 "which episodes keep their run.lcmlog: unsuccessful (failed, not completed or with a collision: "
+                 "a successful episode's command, in its episode.json, makes the same messages again) or all")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"unsuccessful", "all"}));
   addSlurmOptions(app, o);
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
+  o.keep_logs = *beft::experiment::keepLogsNamed(keep_logs);
   if (o.out_dir.empty())
     o.out_dir = std::string(BEFT_SOURCE_DIR) + "/logs/experiment-" + std::filesystem::path(o.file).stem().string();
   o.out_dir = std::filesystem::absolute(o.out_dir).lexically_normal().string();

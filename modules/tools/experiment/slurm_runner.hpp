@@ -17,7 +17,7 @@ struct SlurmRun {
   SlurmLimits limits;
   bool wait = false;  // wait for the job's end, then gather its rows
   std::string name, out_dir;
-  std::vector<std::string> task_command;  // beft-experiment FILE --out OUT --run-episode (the id appended)
+  std::vector<std::string> task_command;  // beft-experiment FILE --out OUT --keep-logs K --run-episode (the id appended)
 };
 
 struct SlurmOutcome {

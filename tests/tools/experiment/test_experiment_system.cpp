@@ -83,6 +83,12 @@ class ExperimentSystemTest : public ::testing::Test {
     }
     return lines;
   }
+  static std::string text(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream all;
+    all << in.rdbuf();
+    return all.str();
+  }
   bool recorded(const std::string& out, const std::string& episode) {
     return fs::exists(dir_ / out / "episodes" / episode / "episode.json");
   }
@@ -96,6 +102,13 @@ TEST_F(ExperimentSystemTest, InterruptedAndResumedGivesTheSameRows) {
   const auto expected = rows("whole");
   ASSERT_EQ(expected.size(), 3u) << whole.output;
   EXPECT_NE(expected[1].find("yard_seed-1,yard,1,done,,1,"), std::string::npos) << expected[1];
+  // Both completed: by default their logs go, and episode.json says so.
+  for (const char* episode : {"yard_seed-1", "yard_seed-2"}) {
+    EXPECT_FALSE(fs::exists(dir_ / "whole" / "episodes" / episode / "run.lcmlog")) << episode;
+    EXPECT_NE(text(dir_ / "whole" / "episodes" / episode / "episode.json").find("\"log\": \"removed"),
+              std::string::npos) << episode;
+  }
+  EXPECT_NE(whole.output.find("run logs: removed for 2 episode(s) that succeeded"), std::string::npos) << whole.output;
 
   // One job at a time, stopped once the first episode is done: the second is left missing.
   const pid_t pid = start("resumed", "1");
@@ -123,6 +136,23 @@ TEST_F(ExperimentSystemTest, InterruptedAndResumedGivesTheSameRows) {
   const Finished again = run("resumed", "2");  // nothing left
   EXPECT_EQ(again.code, 0);
   EXPECT_NE(again.output.find("2 done, 0 failed, 0 to run"), std::string::npos) << again.output;
+}
+
+TEST_F(ExperimentSystemTest, AnEpisodeThatDidNotCompleteKeepsItsLogAndAllKeepEveryOne) {
+  std::ofstream(dir_ / "short.xml") << "<experiment max_ticks=\"20\">\n  <scenario file=\"" BEFT_SOURCE_DIR
+                                       "/scenarios/yard.xml\"/>\n</experiment>\n";
+  const Finished cut_short = run("short", "1", "short.xml");
+  ASSERT_EQ(cut_short.code, 0) << cut_short.output;
+  ASSERT_NE(rows("short")[1].find("done,,0,"), std::string::npos) << rows("short")[1];  // not completed
+  EXPECT_GT(fs::file_size(dir_ / "short" / "episodes" / "yard" / "run.lcmlog"), 1000u);
+
+  std::ofstream(dir_ / "one.xml") << "<experiment max_ticks=\"300\">\n  <scenario file=\"" BEFT_SOURCE_DIR
+                                     "/scenarios/yard.xml\"/>\n</experiment>\n";
+  const Finished kept = wait(start("one", "1", "one.xml", {"--keep-logs", "all"}), "one");
+  ASSERT_EQ(kept.code, 0) << kept.output;
+  ASSERT_NE(rows("one")[1].find("done,,1,"), std::string::npos) << rows("one")[1];  // completed
+  EXPECT_GT(fs::file_size(dir_ / "one" / "episodes" / "yard" / "run.lcmlog"), 1000u);
+  EXPECT_EQ(kept.output.find("run logs: removed"), std::string::npos) << kept.output;
 }
 
 TEST_F(ExperimentSystemTest, AFailedEpisodeIsRecordedWithItsReasonAndNotRunAgain) {

@@ -1,0 +1,35 @@
+#include "tools/experiment/log_policy.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+namespace beft::experiment {
+namespace fs = std::filesystem;
+
+std::optional<KeepLogs> keepLogsNamed(const std::string& name) {
+  if (name == "unsuccessful") return KeepLogs::unsuccessful;
+  if (name == "all") return KeepLogs::all;
+  return std::nullopt;
+}
+
+std::string nameOf(KeepLogs keep) { return keep == KeepLogs::all ? "all" : "unsuccessful"; }
+
+bool succeeded(const std::string& folder, const EpisodeState& state) {
+  if (state.status != Status::done) return false;
+  std::ifstream in(fs::path(folder) / "report.json");
+  const auto report = nlohmann::json::parse(in, nullptr, false);
+  if (report.is_discarded() || !report.is_object()) return false;
+  const auto completed = report.find("completed"), collisions = report.find("collisions");
+  return completed != report.end() && completed->is_boolean() && completed->get<bool>() &&
+         collisions != report.end() && collisions->is_number_integer() && collisions->get<int64_t>() == 0;
+}
+
+bool applyLogPolicy(const std::string& folder, const EpisodeState& state, KeepLogs keep) {
+  if (keep == KeepLogs::all || !succeeded(folder, state)) return false;
+  std::error_code error;
+  return fs::remove(fs::path(folder) / kRunLog, error) && !error;
+}
+
+}  // namespace beft::experiment
