@@ -51,6 +51,9 @@ void AudioExpert::declareParameters(DeclaredParameters& parameters) {
                            "when the scenario has <acoustics>");
   parameters.declare("default_distance_m", hearing_config_.default_distance_m, 0.5, 50,
                      "binaural: distance of an estimate before the bearings cross [m]");
+  parameters.declare("fix_agreement_deg", hearing_config_.fix_agreement_deg, 0, 90,
+                     "binaural: where the bearings last crossed is kept as the estimate while the heard direction "
+                     "points this near it, after the lines have aged out (0: not kept) [deg]");
   parameters.declare("seen_explains_deg", hearing_config_.seen_explains_deg, 0, 45,
                      "binaural: among objects of one sound, a peak this near the direction of one that vision has "
                      "placed (HYPOTHESES of the tick before), or of its mirror image, is that one's, and any seen "

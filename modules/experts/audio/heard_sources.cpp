@@ -175,6 +175,22 @@ void HeardSources::update(Track& track, const hearing::AzimuthPosterior& heard_w
     lines.emplace_back(block.utime, BearingLine{track.heard_from, bearing});
     if (static_cast<int>(lines.size()) > config_.max_lines) lines.erase(lines.begin());
   }
+  keepFix(track, clear);
+}
+
+void HeardSources::keepFix(Track& track, bool clear) const {
+  std::vector<BearingLine> lines;
+  for (const auto& [utime, line] : track.lines) lines.push_back(line);
+  if (const auto crossing = triangulate(lines, config_.triangulation)) {
+    track.fix = *crossing;
+    return;
+  }
+  if (!(config_.fix_agreement_deg > 0)) track.fix.reset();
+  if (!track.fix || !clear) return;
+  const Eigen::Vector2d to_fix = *track.fix - track.heard_from;
+  if (to_fix.norm() < config_.fix_near_m) return;
+  const double fix_bearing = std::atan2(to_fix.y(), to_fix.x()) * 180.0 / M_PI;
+  if (hearing::angularDistance(fix_bearing, track.world.mostLikely()) > config_.fix_agreement_deg) track.fix.reset();
 }
 
 std::optional<HeardEstimate> HeardSources::estimate(const std::string& id) const {
@@ -183,10 +199,8 @@ std::optional<HeardEstimate> HeardSources::estimate(const std::string& id) const
   const Track& track = found->second;
   HeardEstimate estimate;
   estimate.bearing_deg = track.world.mostLikely();
-  std::vector<BearingLine> lines;
-  for (const auto& [utime, line] : track.lines) lines.push_back(line);
-  if (const auto crossing = triangulate(lines, config_.triangulation)) {
-    estimate.position = *crossing;
+  if (track.fix) {
+    estimate.position = *track.fix;
     estimate.triangulated = true;
   } else {
     estimate.position = track.heard_from + config_.default_distance_m * unitOf(estimate.bearing_deg);

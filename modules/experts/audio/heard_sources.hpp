@@ -21,7 +21,13 @@
 //  - bearing lines from the places it was heard from clearly, whose crossing
 //    (bearing_triangulation.hpp) gives the distance once the robot has moved
 //    enough; before that the estimate lies default_distance_m along the
-//    bearing.
+//    bearing;
+//  - the last crossing (the fix), kept after its lines have aged out while
+//    the direction it is heard in still points at it: far from a source,
+//    where bearings no longer cross, the estimate stays where the lines
+//    crossed instead of falling back to default_distance_m from the robot.
+//    A clear direction that misses the fix by more than fix_agreement_deg
+//    (the source moved, or the crossing was wrong) drops it.
 // When an object's direction stays front-back ambiguous, a head turn is
 // asked for (wantsHeadTurn).
 #pragma once
@@ -54,6 +60,8 @@ struct HearingConfig {
   int max_lines = 40;                // the newest lines kept per object
   double line_max_age_s = 30;        // older lines are dropped (the source may have moved)
   double default_distance_m = 4;     // distance of an estimate before triangulation [m]
+  double fix_agreement_deg = 15;     // a kept fix stays while the heard direction is this near it [deg]
+  double fix_near_m = 2;             // nearer than this to the fix, its direction is not checked [m]
   double turn_deg = 20;              // the head turn that resolves front and back
   double turn_interval_s = 3;        // at most one head turn per this time
   TriangulationLimits triangulation;
@@ -100,9 +108,11 @@ class HeardSources {
     hearing::AzimuthPosterior world;  // over world bearing, CCW from +x: from log_evidence
     Eigen::Vector2d heard_from = Eigen::Vector2d::Zero();
     std::vector<std::pair<int64_t, BearingLine>> lines;  // (utime, line)
+    std::optional<Eigen::Vector2d> fix;                  // the last crossing of the lines, while heard there
     int64_t last_heard_tick = -1;
   };
   void update(Track& track, const hearing::AzimuthPosterior& heard_world, const binaural_block_t& block);
+  void keepFix(Track& track, bool clear) const;
 
   HearingConfig config_;
   std::map<std::string, Track> tracks_;

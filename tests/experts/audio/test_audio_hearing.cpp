@@ -224,3 +224,68 @@ TEST(HeardSources, TriangulatesOverTheRobotsOwnMotion) {
   ASSERT_TRUE(victim->triangulated);
   EXPECT_LT((victim->position - source).norm(), 0.5);
 }
+
+namespace {
+
+constexpr int kTicksPerSecond = 10;  // blockAt: 0.1 s a tick
+
+// Drives from `from` to `to` in steps of 0.1 m a tick (yaw 0), hearing a
+// sharp, unambiguous source at `source`; returns the next tick.
+int driveHearing(HeardSources& heard, const std::vector<SoundingObject>& sounding, const hearing::BandSignature& voice,
+                 int tick, const Eigen::Vector2d& from, const Eigen::Vector2d& to, const Eigen::Vector2d& source) {
+  const int steps = static_cast<int>(std::round((to - from).norm() / 0.1));
+  for (int step = 0; step <= steps; ++step, ++tick) {
+    const Eigen::Vector2d at = from + (to - from) * (steps == 0 ? 0.0 : static_cast<double>(step) / steps);
+    heard.hear(heardAt({{bearingTo(at, source), &voice}}, 2), blockAt(tick, at.x(), at.y(), 0), sounding);
+  }
+  return tick;
+}
+
+}  // namespace
+
+TEST(HeardSources, FarFromTheSourceTheEstimateStaysWhereTheBearingsCrossed) {
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const std::vector<SoundingObject> sounding = {{"radio", &voice}};
+  const Eigen::Vector2d source(6, 4);
+  HeardSources heard;
+  int tick = driveHearing(heard, sounding, voice, 0, {0, 0}, {8, 0}, source);
+  ASSERT_TRUE(heard.estimate("radio")->triangulated);
+  // Then 40 m on, where it stays for longer than a line is kept: the lines
+  // that crossed age out, and from there no two places see it at angles
+  // that differ enough to cross.
+  const auto driveAwayAndStay = [&](HeardSources& hearing, int at_tick) {
+    at_tick = driveHearing(hearing, sounding, voice, at_tick, {8, 0}, {48, 0}, source);
+    for (int held = 0; held < kTicksPerSecond * 1.5 * hearing.config().line_max_age_s; ++held)
+      at_tick = driveHearing(hearing, sounding, voice, at_tick, {48, 0}, {48, 0}, source);
+  };
+  driveAwayAndStay(heard, tick);
+  const auto radio = heard.estimate("radio");
+  ASSERT_TRUE(radio.has_value());
+  EXPECT_TRUE(radio->triangulated);
+  EXPECT_LT((radio->position - source).norm(), 0.5) << "not default_distance_m from the robot";
+  // Without a kept fix (an agreement of 0 degrees drops it at once) the
+  // estimate falls back to default_distance_m from where it was heard.
+  HearingConfig no_fix;
+  no_fix.fix_agreement_deg = 0;
+  HeardSources forgetful(no_fix);
+  driveAwayAndStay(forgetful, driveHearing(forgetful, sounding, voice, 0, {0, 0}, {8, 0}, source));
+  EXPECT_GT((forgetful.estimate("radio")->position - source).norm(), 30);
+}
+
+TEST(HeardSources, AFixTheHeardDirectionNoLongerPointsAtIsDropped) {
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const std::vector<SoundingObject> sounding = {{"walker", &voice}};
+  HeardSources heard;
+  int tick = driveHearing(heard, sounding, voice, 0, {0, 0}, {8, 0}, {6, 4});
+  // The robot stands there until the lines that crossed have aged out; the fix is kept.
+  for (int held = 0; held < kTicksPerSecond * 1.5 * heard.config().line_max_age_s; ++held)
+    tick = driveHearing(heard, sounding, voice, tick, {8, 0}, {8, 0}, {6, 4});
+  ASSERT_LT((heard.estimate("walker")->position - Eigen::Vector2d(6, 4)).norm(), 0.5);
+  // The walker is now far to the other side, and heard there.
+  const Eigen::Vector2d moved(8, -12);
+  for (int held = 0; held < 30; ++held) tick = driveHearing(heard, sounding, voice, tick, {8, 0}, {8, 0}, moved);
+  const auto walker = heard.estimate("walker");
+  ASSERT_TRUE(walker.has_value());
+  EXPECT_GT((walker->position - Eigen::Vector2d(6, 4)).norm(), 5) << "the old fix is dropped";
+  EXPECT_LE(hearing::angularDistance(walker->bearing_deg, -90), 3);
+}
