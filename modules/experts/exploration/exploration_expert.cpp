@@ -84,6 +84,8 @@ void ExplorationExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("safety_margin_m", e.safety_margin_m, 0, kNoLimit, "added to the robot radius for where it may stand [m]");
   parameters.declare("look_around", e.look_around, "turn a full circle at the start");
   parameters.declare("verify_attempts", e.verify_attempts, 1, 1000, "viewpoints tried per heard hypothesis before giving up");
+  parameters.declare("give_up_in_plain_view", e.give_up_in_plain_view,
+                     "give a heard hypothesis up after a look that had its estimate in plain view and did not settle it");
   parameters.declare("inspect_attempts", e.inspect_attempts, 1, 1000, "viewpoints tried per glimpsed hypothesis");
   parameters.declare("ruled_out_viewpoints", e.ruled_out_viewpoints, 1, 1000,
                      "viewpoints of a hypothesis the map rules out on the way (a wall mapped in the line of sight) "

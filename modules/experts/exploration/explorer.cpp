@@ -330,6 +330,16 @@ bool Explorer::endIfLookedOrLate(const Observation& o, Decision& d, int sub_task
         if (o.t - job.done_looking_t >= parameters_.look_dwell_s) {
           const std::string why = "still not settled after looking from " + at(job.x, job.y);
           recordFailedAttempt(job.object_id, {job.x, job.y}, why, d);
+          TargetMemory& memory = targets_[job.object_id];
+          const auto in_plain_view = job.kind == JobKind::Verify && parameters_.give_up_in_plain_view &&
+                                             !memory.given_up ? estimateInPlainView(o, job.object_id)
+                                                              : std::nullopt;
+          if (in_plain_view) {
+            giveUp(memory);
+            memory.why = "given up: nothing where it was heard, " + at(in_plain_view->x, in_plain_view->y) +
+                         ", in plain view from " + at(o.robot_x, o.robot_y);
+            d.log.push_back(job.object_id + ": " + memory.why);
+          }
           endJob(o, d, false, why, true);
         }
         return true;
@@ -441,6 +451,21 @@ void Explorer::recordFailedAttempt(const std::string& object_id, const Point& vi
     memory.why = "given up after " + std::to_string(memory.attempts) + " viewpoints, the last: " + why;
     d.log.push_back(object_id + ": given up after " + std::to_string(memory.attempts) + " viewpoints");
   }
+}
+
+std::optional<Point> Explorer::estimateInPlainView(const Observation& o, const std::string& object_id) {
+  const KnownMap* map = knownMap(o);
+  const HypothesisView* h = findHypothesis(o, object_id);
+  if (map == nullptr || h == nullptr) return std::nullopt;
+  if (std::hypot(h->x - o.robot_x, h->y - o.robot_y) > parameters_.viewpoints.max_distance_m) return std::nullopt;
+  const double bearing = std::atan2(h->y - o.robot_y, h->x - o.robot_x) * 180.0 / M_PI;
+  if (std::abs(wrapDeg(bearing - o.robot_yaw - o.head_yaw)) > parameters_.close_looks.fov_deg / 2) return std::nullopt;
+  const ViewpointParameters viewpoints = viewpointsFor(*h);
+  const TargetCells own = targetCells(*map, h->x, h->y, viewpoints);
+  double unknown_m = 0;
+  if (!inLineOfSight(*map, o.robot_x, o.robot_y, h->x, h->y, viewpoints, &unknown_m, &own) || unknown_m > 0)
+    return std::nullopt;
+  return Point{h->x, h->y};
 }
 
 bool Explorer::surroundingsBeingMapped(const Observation& o, const std::string& object_id) {

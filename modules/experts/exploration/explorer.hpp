@@ -107,6 +107,13 @@ struct ExplorerParameters {
   double safety_margin_m = 0.15;       // added to the robot radius for standable cells
   bool look_around = true;             // turn a full circle at the start
   int verify_attempts = 4;             // viewpoints per heard hypothesis before giving up
+  // A heard hypothesis whose estimate lay in plain view after a look (in
+  // the camera's view, within the viewpoints' max_distance_m, every map cell
+  // of the sight line known and free) and still did not settle is given up
+  // at once: nothing is where it was heard, and other viewpoints of that
+  // empty place would not change it (a heard estimate that crossed the wrong
+  // bearings). It is tried again once placed moved_m away.
+  bool give_up_in_plain_view = true;
   int inspect_attempts = 2;            // viewpoints per glimpsed hypothesis
   int ruled_out_viewpoints = 12;       // viewpoints the map rules out on the way before a first look (no attempt)
   // Of those, viewpoints ruled out while a frontier lies within the
@@ -232,6 +239,8 @@ class Explorer {
   void revalidate(const Observation& o, Decision& d);
   void endJob(const Observation& o, Decision& d, bool success, const std::string& reason, bool finish_on_stack);
   void recordFailedAttempt(const std::string& object_id, const Point& viewpoint, const std::string& why, Decision& d);
+  // The hypothesis' estimate, if it is in plain view of the camera now (give_up_in_plain_view).
+  std::optional<Point> estimateInPlainView(const Observation& o, const std::string& object_id);
   void recordRuledOut(const std::string& object_id, const Point& viewpoint, const std::string& why,
                       bool while_mapping, Decision& d);
   // Whether a frontier lies within the viewpoints' reach of a target.

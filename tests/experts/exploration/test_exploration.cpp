@@ -795,6 +795,58 @@ TEST_F(ExplorerRun, TriesAnotherViewpointWhenStillUnseenAndGivesUpAfterTheLimit)
   EXPECT_TRUE(explorer.stopped());
 }
 
+// A heard place that a look had in plain view (in the camera's view, near,
+// every cell of the sight line known and free) and that still did not
+// settle holds nothing: it is given up after that one look, unless the
+// estimate was out of view or the rule is off.
+TEST_F(ExplorerRun, AHeardPlaceSeenEmptyInPlainViewIsGivenUpAfterOneLook) {
+  std::string logged;
+  const auto lookOnce = [&](ExplorerParameters p, double head_yaw_off_target) {
+    logged.clear();
+    explorer = Explorer(p);
+    stack = FakeStack{};
+    observation.t = 0;
+    observation.robot_x = 5;
+    observation.robot_y = 10;
+    observation.robot_yaw = 0;
+    observation.head_yaw = 0;
+    observation.hypotheses.clear();
+    lookAround();
+    HypothesisView heard = hidden();
+    heard.x = 5;  // on the robot's side of the wall, in the open
+    heard.y = 13;
+    observation.hypotheses = {heard};
+    tick();  // ends the look-around, pushes the verify composite
+    const auto subs = pushesOf(tick());
+    EXPECT_EQ(subs.size(), 2u);
+    if (subs.size() != 2u) return;
+    observation.robot_x = subs[0].x;  // the robot got there and faces the place (or looks aside)
+    observation.robot_y = subs[0].y;
+    observation.robot_yaw = subs[0].yaw;
+    observation.head_yaw = head_yaw_off_target;
+    stack.completeSubTasks(subs[0].parent);
+    const size_t finishes = stack.finishes.size();
+    for (int i = 0; i < 30 && stack.finishes.size() == finishes; ++i)
+      for (const auto& line : tick().log) logged += line + "\n";
+    EXPECT_EQ(stack.finishes.size(), finishes + 1);
+    EXPECT_EQ(explorer.attempts("victim1"), 1);
+  };
+  ExplorerParameters p = parameters;
+  ASSERT_TRUE(p.give_up_in_plain_view);
+  ASSERT_GT(p.verify_attempts, 1);
+  lookOnce(p, 0);
+  EXPECT_TRUE(explorer.givenUp("victim1"));
+  EXPECT_NE(logged.find("victim1: given up: nothing where it was heard, (5.0, 13.0), in plain view from"),
+            std::string::npos) << logged;
+
+  lookOnce(p, 120);  // the head turned away: the place was not in view
+  EXPECT_FALSE(explorer.givenUp("victim1"));
+
+  p.give_up_in_plain_view = false;
+  lookOnce(p, 0);
+  EXPECT_FALSE(explorer.givenUp("victim1"));
+}
+
 // A wall mapped on the way between the chosen viewpoint and the target rules
 // that viewpoint out: another is chosen, and no attempt is spent (a target
 // behind walls being mapped piece by piece is not given up for it), up to
