@@ -832,7 +832,7 @@ TEST_F(ExplorerRun, AHeardPlaceSeenEmptyInPlainViewIsGivenUpAfterOneLook) {
     EXPECT_EQ(explorer.attempts("victim1"), 1);
   };
   ExplorerParameters p = parameters;
-  ASSERT_TRUE(p.give_up_in_plain_view);
+  p.give_up_in_plain_view = true;
   ASSERT_GT(p.verify_attempts, 1);
   lookOnce(p, 0);
   EXPECT_TRUE(explorer.givenUp("victim1"));
