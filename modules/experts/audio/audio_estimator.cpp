@@ -62,6 +62,7 @@ acoustic_percepts_t estimateAudio(const scene_objects_t& scene, const camera::Sc
     percept.est_x = object.x + offset.x();
     percept.est_y = object.y + offset.y();
     percept.est_z = object.z;
+    percept.located = true;  // the simulator's position, with noise when asked
     percept.acoustic_label = object.acoustic_label.empty() ? object.label : object.acoustic_label;
     percept.activity = object.activity;
     percept.level = object.level;

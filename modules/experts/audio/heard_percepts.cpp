@@ -27,6 +27,7 @@ acoustic_percepts_t heardPercepts(const scene_objects_t& scene, const camera::Sc
     percept.est_x = estimate->position.x();
     percept.est_y = estimate->position.y();
     percept.est_z = object.z;
+    percept.located = estimate->triangulated;
     percept.acoustic_label = object.acoustic_label.empty() ? object.label : object.acoustic_label;
     percept.activity = object.activity;
     percept.level = object.level;

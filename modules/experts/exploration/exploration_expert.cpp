@@ -23,6 +23,7 @@ HypothesisView viewOf(const hypothesis_t& h, const dynamic_weights_t* weights) {
   view.object_id = h.object_id;
   view.x = h.x;
   view.y = h.y;
+  view.located = h.located;
   view.seen = h.seen;
   view.heard = h.heard;
   view.verified = h.verified;

@@ -456,7 +456,8 @@ void Explorer::recordFailedAttempt(const std::string& object_id, const Point& vi
 std::optional<Point> Explorer::estimateInPlainView(const Observation& o, const std::string& object_id) {
   const KnownMap* map = knownMap(o);
   const HypothesisView* h = findHypothesis(o, object_id);
-  if (map == nullptr || h == nullptr) return std::nullopt;
+  // A point along a bearing at an assumed range is no place: the source may be farther on.
+  if (map == nullptr || h == nullptr || !h->located) return std::nullopt;
   if (std::hypot(h->x - o.robot_x, h->y - o.robot_y) > parameters_.viewpoints.max_distance_m) return std::nullopt;
   const double bearing = std::atan2(h->y - o.robot_y, h->x - o.robot_x) * 180.0 / M_PI;
   if (std::abs(wrapDeg(bearing - o.robot_yaw - o.head_yaw)) > parameters_.close_looks.fov_deg / 2) return std::nullopt;

@@ -57,6 +57,7 @@ struct HypothesisView {
   double confidence = 0;             // of best_category
   double person_confidence = 0;      // fused confidence of `person`
   double weight = -1;                // DW weight, -1 when DW has none
+  bool located = true;               // false: a point along a heard bearing at an assumed range
 };
 
 // One task of the stack (top first), as task_t carries it.
@@ -112,12 +113,10 @@ struct ExplorerParameters {
   // of the sight line known and free) and still did not settle is given up
   // at once: nothing is where it was heard, and other viewpoints of that
   // empty place would not change it (a heard estimate that crossed the wrong
-  // bearings). It is tried again once placed moved_m away. Off by default:
-  // an estimate not yet triangulated lies default_distance_m along its
-  // bearing, a place that is empty although the source is farther on, and
-  // the explorer cannot yet tell it from a crossing (in binaural yard the
-  // hidden victim was given up at its first look).
-  bool give_up_in_plain_view = false;
+  // bearings). It is tried again once placed moved_m away. Only a located
+  // estimate counts: one not yet triangulated lies at an assumed range along
+  // its bearing, a place that is empty although the source is farther on.
+  bool give_up_in_plain_view = true;
   int inspect_attempts = 2;            // viewpoints per glimpsed hypothesis
   int ruled_out_viewpoints = 12;       // viewpoints the map rules out on the way before a first look (no attempt)
   // Of those, viewpoints ruled out while a frontier lies within the

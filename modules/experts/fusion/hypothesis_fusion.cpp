@@ -106,7 +106,7 @@ void HypothesisFusion::update(const TickEvidence& evidence) {
   if (evidence.audio != nullptr) {
     for (const auto& percept : evidence.audio->percepts) {
       Hypothesis& h = hypothesisFor(percept.object_id);
-      h.acoustic_position = Position{percept.est_x, percept.est_y, percept.est_z};
+      h.acoustic_position = Position{percept.est_x, percept.est_y, percept.est_z, percept.located != 0};
       markHeard(h);
     }
   }
@@ -128,7 +128,7 @@ void HypothesisFusion::restore(const hypotheses_t& previous) {
     h.first_seen_utime = p.first_seen_utime;
     h.first_heard_utime = p.first_heard_utime;
     h.settled_utime = p.settled_utime;
-    (p.seen ? h.visual_position : h.acoustic_position) = Position{p.x, p.y, p.z};
+    (p.seen ? h.visual_position : h.acoustic_position) = Position{p.x, p.y, p.z, p.located != 0};
     h.restored = Evidence{p.confidence, p.categories, p.fused};
     h.restored_seen_as = p.seen_as;
     h.restored_heard_as = p.heard_as;
@@ -145,6 +145,7 @@ void HypothesisFusion::writeMessage(const Hypothesis& h, const std::vector<std::
   out.x = position.x;
   out.y = position.y;
   out.z = position.z;
+  out.located = position.located;
 
   // The evidence fused: each modality's memory; after a restart the fused
   // confidences published before stand in (once) for a modality that has

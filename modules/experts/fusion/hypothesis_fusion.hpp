@@ -94,6 +94,7 @@ class HypothesisFusion {
   };
   struct Position {
     double x = 0, y = 0, z = 0;
+    bool located = true;  // false: a point along a heard bearing at an assumed range
   };
   struct Hypothesis {
     std::string object_id;

@@ -97,7 +97,8 @@ nlohmann::json hypothesisEntities(const beft::hypotheses_t& hypotheses) {
     entity["texts"].push_back(textPrimitive(pose(hypothesis.x, hypothesis.y, hypothesis.z + 0.6),
                                             hypothesisLabel(hypothesis), 0.25, kLabelColor));
     entity["metadata"] = {keyValue("best_category", hypothesis.best_category),
-                          keyValue("seen_as", hypothesis.seen_as), keyValue("heard_as", hypothesis.heard_as)};
+                          keyValue("seen_as", hypothesis.seen_as), keyValue("heard_as", hypothesis.heard_as),
+                          keyValue("located", hypothesis.located ? "true" : "false")};
     entities.push_back(std::move(entity));
   }
   return entities;
@@ -111,6 +112,8 @@ nlohmann::json heardEntities(const beft::acoustic_percepts_t& heard) {
         spherePrimitive(pose(percept.est_x, percept.est_y, percept.est_z), 0.6, color(0.7, 0.3, 0.9, 0.45)));
     entity["texts"].push_back(textPrimitive(pose(percept.est_x, percept.est_y, percept.est_z + 0.5),
                                             percept.acoustic_label, 0.22, color(0.85, 0.7, 1.0)));
+    // A point along a bearing, not a crossing of bearings.
+    entity["metadata"] = nlohmann::json::array({keyValue("located", percept.located ? "true" : "false")});
     entities.push_back(std::move(entity));
   }
   return entities;

@@ -8,8 +8,12 @@
 // run_beacon_t gained `description` and `started_utime` (0: not known) when
 // the hosts of a distributed run began to agree on a fresh run id; fire_t and
 // done_t gained what a firing comes after and what an expert had published
-// (0 and nothing) when lost messages began to be repaired. An earlier message
-// is the same bytes without those, so it is rewritten losslessly.
+// (0 and nothing) when lost messages began to be repaired; hypothesis_t and
+// acoustic_percept_t gained `located` (false) when the explorer began to
+// tell a heard crossing from a point along a bearing, which changed the
+// messages that hold them (hypotheses_t, hypothesis_changes_t,
+// acoustic_percepts_t). An earlier message is the same bytes without those,
+// so it is rewritten losslessly.
 #pragma once
 
 #include <cstdint>

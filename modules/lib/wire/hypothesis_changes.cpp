@@ -10,7 +10,7 @@
 namespace beft::wire {
 
 bool sameHypothesis(const hypothesis_t& a, const hypothesis_t& b) {
-  return a.object_id == b.object_id && a.x == b.x && a.y == b.y && a.z == b.z &&
+  return a.object_id == b.object_id && a.x == b.x && a.y == b.y && a.z == b.z && a.located == b.located &&
          a.best_category == b.best_category && a.confidence == b.confidence && a.categories == b.categories &&
          a.fused == b.fused && a.seen == b.seen && a.heard == b.heard && a.seen_as == b.seen_as &&
          a.heard_as == b.heard_as && a.verified == b.verified && a.falsified == b.falsified &&

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <string>
+#include <type_traits>
 
 #include "tools/experiment/statistics.hpp"
 
@@ -15,17 +17,39 @@ namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
+// A report is a file on disk, damaged or from another version: a field
+// missing or of another type reads as `fallback` (json::value would throw).
+template <typename T>
+T valueOr(const nlohmann::json& object, const char* key, T fallback) {
+  if (!object.is_object()) return fallback;
+  const auto it = object.find(key);
+  if (it == object.end()) return fallback;
+  if constexpr (std::is_same_v<T, bool>) {
+    return it->is_boolean() ? it->get<bool>() : fallback;
+  } else if constexpr (std::is_arithmetic_v<T>) {
+    return it->is_number() ? it->get<T>() : fallback;
+  } else {
+    return it->is_string() ? it->get<std::string>() : fallback;
+  }
+}
+
+nlohmann::json listOr(const nlohmann::json& object, const char* key) {
+  if (!object.is_object()) return nlohmann::json::array();
+  const auto it = object.find(key);
+  return it != object.end() && it->is_array() ? *it : nlohmann::json::array();
+}
+
 double meanHeardError(const nlohmann::json& heard) {
   if (!heard.is_array() || heard.empty()) return kNone;
   double sum = 0;
-  for (const auto& h : heard) sum += h.value("error_m", 0.0);
+  for (const auto& h : heard) sum += valueOr(h, "error_m", 0.0);
   return sum / heard.size();
 }
 
 std::vector<double> foundTimes(const nlohmann::json& victims) {
   std::vector<double> times;
   if (victims.is_array())
-    for (const auto& v : victims) times.push_back(v.value("found_at_s", 0.0));
+    for (const auto& v : victims) times.push_back(valueOr(v, "found_at_s", 0.0));
   return times;
 }
 
@@ -34,7 +58,7 @@ std::vector<double> pathEfficiencies(const nlohmann::json& victims) {
   std::vector<double> values;
   if (victims.is_array())
     for (const auto& v : victims)
-      if (v.contains("path_efficiency") && v["path_efficiency"].is_number())
+      if (v.is_object() && v.contains("path_efficiency") && v["path_efficiency"].is_number())
         values.push_back(v["path_efficiency"].get<double>());
   return values;
 }
@@ -50,24 +74,24 @@ std::optional<EpisodeMetrics> readMetrics(const std::string& report_file) {
   const auto report = nlohmann::json::parse(in, nullptr, false);
   if (report.is_discarded() || !report.is_object()) return std::nullopt;
   EpisodeMetrics m;
-  m.completed = report.value("completed", false);
+  m.completed = valueOr(report, "completed", false);
   m.persons_found = count(report, "victims");
-  m.persons_present = report.value("persons", 0);
+  m.persons_present = valueOr(report, "persons", 0);
   m.false_alarms = count(report, "false_alarms");
   m.falsified = count(report, "falsified");
   m.unsettled = count(report, "unsettled");
-  m.end_reason = report.value("end_reason", "");
-  m.collisions = report.value("collisions", 0);
-  m.path_length_m = report.value("path_length_m", 0.0);
-  m.sim_time_s = report.value("sim_time_s", 0.0);
-  m.wall_time_s = report.value("wall_time_s", 0.0);
-  m.heard_error_mean_m = meanHeardError(report.value("heard", nlohmann::json::array()));
-  const auto times = foundTimes(report.value("victims", nlohmann::json::array()));
+  m.end_reason = valueOr(report, "end_reason", std::string());
+  m.collisions = valueOr(report, "collisions", 0);
+  m.path_length_m = valueOr(report, "path_length_m", 0.0);
+  m.sim_time_s = valueOr(report, "sim_time_s", 0.0);
+  m.wall_time_s = valueOr(report, "wall_time_s", 0.0);
+  m.heard_error_mean_m = meanHeardError(listOr(report, "heard"));
+  const auto times = foundTimes(listOr(report, "victims"));
   m.found_at_s = times;
   m.time_to_find_first_s = quantile(times, 0.0);
   m.time_to_find_median_s = quantile(times, 0.5);
-  m.path_efficiency_mean = report.value("path_efficiency_mean", kNone);
-  m.path_efficiency = pathEfficiencies(report.value("victims", nlohmann::json::array()));
+  m.path_efficiency_mean = valueOr(report, "path_efficiency_mean", kNone);
+  m.path_efficiency = pathEfficiencies(listOr(report, "victims"));
   return m;
 }
 

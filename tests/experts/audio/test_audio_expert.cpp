@@ -96,6 +96,7 @@ TEST(AudioEstimator, ReportsOnlySoundingObjectsWithLabelActivityAndTruePosition)
   EXPECT_DOUBLE_EQ(out.percepts[0].occlusion, 0.0);
   EXPECT_DOUBLE_EQ(out.percepts[0].est_x, 4.0);
   EXPECT_DOUBLE_EQ(out.percepts[0].est_y, 8.0);
+  EXPECT_TRUE(out.percepts[0].located);  // the simulator's position
   EXPECT_EQ(out.percepts[1].object_id, "radio");
   EXPECT_EQ(out.percepts[1].acoustic_label, "person");  // sounds like a person
   EXPECT_EQ(out.percepts[1].activity, "playing");

@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "experts/audio/bearing_triangulation.hpp"
+#include "experts/audio/heard_percepts.hpp"
 #include "experts/audio/heard_sources.hpp"
+#include "tests/experts/support/scene_builders.hpp"
 
 using namespace beft;
 using namespace beft::audio;
@@ -288,4 +290,29 @@ TEST(HeardSources, AFixTheHeardDirectionNoLongerPointsAtIsDropped) {
   ASSERT_TRUE(walker.has_value());
   EXPECT_GT((walker->position - Eigen::Vector2d(6, 4)).norm(), 5) << "the old fix is dropped";
   EXPECT_LE(hearing::angularDistance(walker->bearing_deg, -90), 3);
+}
+
+// The percept says whether its estimate is located: a point along the first
+// bearing at an assumed range is not, a crossing of bearings is.
+TEST(HeardSources, APerceptIsLocatedOnlyOnceItsBearingsCrossed) {
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const std::vector<SoundingObject> sounding = {{"victim", &voice}};
+  const Eigen::Vector2d source(6, 4);
+  const scene_objects_t scene =
+      test::scene({test::sounding(test::cylinderObject("victim", "person", source.x(), source.y(), 0.3, 1.8), "yelling")}, 0);
+  const auto solids = camera::SceneGeometry::fromMessage(scene);
+  HeardSources heard;
+  heard.hear(heardAt({{bearingTo({0, 0}, source), &voice}}, 2), blockAt(0, 0, 0, 0), sounding);
+  acoustic_percepts_t percepts = heardPercepts(scene, solids, test::robot(0, 0, 0), heard);
+  ASSERT_EQ(percepts.num_percepts, 1);
+  EXPECT_FALSE(percepts.percepts[0].located);
+
+  for (int tick = 1; tick <= 80; ++tick) {
+    const Eigen::Vector2d at(0.1 * tick, 0);
+    heard.hear(heardAt({{bearingTo(at, source), &voice}}, 2), blockAt(tick, at.x(), at.y(), 0), sounding);
+  }
+  percepts = heardPercepts(scene, solids, test::robot(8, 0, 0), heard);
+  ASSERT_EQ(percepts.num_percepts, 1);
+  EXPECT_TRUE(percepts.percepts[0].located);
+  EXPECT_LT(std::hypot(percepts.percepts[0].est_x - source.x(), percepts.percepts[0].est_y - source.y()), 0.5);
 }

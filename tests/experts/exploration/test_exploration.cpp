@@ -798,10 +798,11 @@ TEST_F(ExplorerRun, TriesAnotherViewpointWhenStillUnseenAndGivesUpAfterTheLimit)
 // A heard place that a look had in plain view (in the camera's view, near,
 // every cell of the sight line known and free) and that still did not
 // settle holds nothing: it is given up after that one look, unless the
-// estimate was out of view or the rule is off.
+// estimate was out of view, was only a point along a heard bearing (not
+// located: the source may be farther on), or the rule is off.
 TEST_F(ExplorerRun, AHeardPlaceSeenEmptyInPlainViewIsGivenUpAfterOneLook) {
   std::string logged;
-  const auto lookOnce = [&](ExplorerParameters p, double head_yaw_off_target) {
+  const auto lookOnce = [&](ExplorerParameters p, double head_yaw_off_target, bool located = true) {
     logged.clear();
     explorer = Explorer(p);
     stack = FakeStack{};
@@ -815,6 +816,7 @@ TEST_F(ExplorerRun, AHeardPlaceSeenEmptyInPlainViewIsGivenUpAfterOneLook) {
     HypothesisView heard = hidden();
     heard.x = 5;  // on the robot's side of the wall, in the open
     heard.y = 13;
+    heard.located = located;
     observation.hypotheses = {heard};
     tick();  // ends the look-around, pushes the verify composite
     const auto subs = pushesOf(tick());
@@ -832,7 +834,7 @@ TEST_F(ExplorerRun, AHeardPlaceSeenEmptyInPlainViewIsGivenUpAfterOneLook) {
     EXPECT_EQ(explorer.attempts("victim1"), 1);
   };
   ExplorerParameters p = parameters;
-  p.give_up_in_plain_view = true;
+  EXPECT_TRUE(p.give_up_in_plain_view);  // the default
   ASSERT_GT(p.verify_attempts, 1);
   lookOnce(p, 0);
   EXPECT_TRUE(explorer.givenUp("victim1"));
@@ -840,6 +842,9 @@ TEST_F(ExplorerRun, AHeardPlaceSeenEmptyInPlainViewIsGivenUpAfterOneLook) {
             std::string::npos) << logged;
 
   lookOnce(p, 120);  // the head turned away: the place was not in view
+  EXPECT_FALSE(explorer.givenUp("victim1"));
+
+  lookOnce(p, 0, false);  // in view, but only a point along the bearing
   EXPECT_FALSE(explorer.givenUp("victim1"));
 
   p.give_up_in_plain_view = false;

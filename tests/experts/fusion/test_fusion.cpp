@@ -46,11 +46,13 @@ struct Tick {
     visual_labels.num_objects = static_cast<int32_t>(visual_labels.objects.size());
     return *this;
   }
-  Tick& heard(const std::string& id, const std::string& label, double a_p, double x, double y) {
+  // located: the estimate is a crossing of bearings (false: a point along one).
+  Tick& heard(const std::string& id, const std::string& label, double a_p, double x, double y, bool located = true) {
     acoustic_percept_t p{};
     p.object_id = id;
     p.est_x = x;
     p.est_y = y;
+    p.located = located;
     p.acoustic_label = label;
     audio.percepts.push_back(p);
     audio.num_percepts = static_cast<int32_t>(audio.percepts.size());
@@ -129,6 +131,32 @@ TEST(Fusion, HeardThenSeenAsTheSameIsVerified) {
   ASSERT_NE(h, nullptr);
   EXPECT_TRUE(h->verified);
   EXPECT_EQ(h->settled_utime, 200000);
+}
+
+// A heard estimate along a bearing at an assumed range is not located; a
+// crossing is, and a place vision gives is.
+TEST(Fusion, APositionIsLocatedOnceTheBearingsCrossOrItIsSeen) {
+  const std::vector<scene_object_t> objects = {
+      test::sounding(test::cylinderObject("victim", "person", 10, 5, 0.3, 1.8), "yelling")};
+  fusion::HypothesisFusion fusion;
+  fusion.update(Tick(objects, 0).heard("victim", "person", 0.3, 4, 0, false).evidence());
+  hypotheses_t out = fusion.hypotheses(0, 0);
+  ASSERT_NE(find(out, "victim"), nullptr);
+  EXPECT_FALSE(find(out, "victim")->located);
+
+  fusion.update(Tick(objects, 1).heard("victim", "person", 0.3, 10.4, 5.3, true).evidence());
+  out = fusion.hypotheses(100000, 1);
+  EXPECT_TRUE(find(out, "victim")->located);
+  EXPECT_DOUBLE_EQ(find(out, "victim")->x, 10.4);
+
+  fusion.update(Tick(objects, 2).heard("victim", "person", 0.3, 6, 1, false).evidence());
+  out = fusion.hypotheses(200000, 2);
+  EXPECT_FALSE(find(out, "victim")->located);
+
+  fusion.update(Tick(objects, 3).seen("victim", "person", 5, 0.3).heard("victim", "person", 0.3, 6, 1, false).evidence());
+  out = fusion.hypotheses(300000, 3);
+  EXPECT_TRUE(find(out, "victim")->located);  // vision placed it
+  EXPECT_DOUBLE_EQ(find(out, "victim")->x, 10.0);
 }
 
 TEST(Fusion, RadioThatSoundsLikeAPersonButLooksLikeASirenIsFalsified) {
@@ -266,7 +294,7 @@ TEST(Fusion, RestoredHypothesesKeepTheirVerdictsUntilNewEvidence) {
   fusion::HypothesisFusion before;
   before.update(Tick(objects, 0).seen("radio", "siren", 0, 0.0).heard("radio", "person", 0.6, 12, 6).evidence());
   before.update(Tick(objects, 1).seen("radio", "siren", 80, 0.9).evidence());
-  before.update(Tick(objects, 2).heard("victim", "person", 0.4, 3.2, 2.9).evidence());
+  before.update(Tick(objects, 2).heard("victim", "person", 0.4, 3.2, 2.9, false).evidence());
   const hypotheses_t published = before.hypotheses(200000, 2);
   ASSERT_EQ(published.num_hypotheses, 2);
 
@@ -290,6 +318,7 @@ TEST(Fusion, RestoredHypothesesKeepTheirVerdictsUntilNewEvidence) {
     EXPECT_EQ(r.first_heard_utime, p.first_heard_utime);
     EXPECT_DOUBLE_EQ(r.x, p.x);
     EXPECT_DOUBLE_EQ(r.y, p.y);
+    EXPECT_EQ(r.located, p.located);
     EXPECT_EQ(r.fused, p.fused);
     EXPECT_EQ(r.best_category, p.best_category);
   }

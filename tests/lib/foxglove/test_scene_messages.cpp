@@ -179,6 +179,7 @@ TEST(FoxgloveScene, UpdateCombinesEveryKindAndReplacesTheOldScene) {
   EXPECT_EQ(path.at("lines").at(0).at("points").size(), 3u);
   EXPECT_NEAR(path.at("arrows").at(2).at("pose").at("orientation").at("z").get<double>(), 1.0, 1e-12);  // yaw 180
   EXPECT_EQ(entityWithId(update, "heard/person_1").at("texts").at(0).at("text"), "scream");
+  EXPECT_EQ(entityWithId(update, "heard/person_1").at("metadata").at(0), json({{"key", "located"}, {"value", "false"}}));
 
   plan.success = false;
   EXPECT_TRUE(planEntity(plan).at("arrows").empty());

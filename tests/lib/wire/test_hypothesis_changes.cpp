@@ -1,7 +1,10 @@
 // A keyframe and the changes since it make the whole list of hypotheses.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "lib/wire/hypothesis_changes.hpp"
 
@@ -103,5 +106,36 @@ TEST(HypothesisChanges, EveryTickOfARandomRunComesBackExactly) {
     hypotheses_t back{};
     ASSERT_TRUE(wire::applyChanges(keyframe, changes, back)) << tick;
     ASSERT_EQ(encoded(back), encoded(whole)) << tick;
+  }
+}
+
+// A change in any one field of a hypothesis is a change: a field the
+// comparison missed would leave receivers with a stale hypothesis.
+TEST(HypothesisChanges, AChangeInAnyOneFieldIsListed) {
+  const std::vector<std::pair<const char*, std::function<void(hypothesis_t&)>>> changes_of_one_field = {
+      {"x", [](hypothesis_t& h) { h.x += 1; }},
+      {"y", [](hypothesis_t& h) { h.y += 1; }},
+      {"z", [](hypothesis_t& h) { h.z += 1; }},
+      {"located", [](hypothesis_t& h) { h.located = !h.located; }},
+      {"best_category", [](hypothesis_t& h) { h.best_category = "radio"; }},
+      {"confidence", [](hypothesis_t& h) { h.confidence += 0.1; }},
+      {"categories", [](hypothesis_t& h) { h.categories[1] = "siren"; }},
+      {"fused", [](hypothesis_t& h) { h.fused[1] += 0.1; }},
+      {"seen", [](hypothesis_t& h) { h.seen = !h.seen; }},
+      {"heard", [](hypothesis_t& h) { h.heard = !h.heard; }},
+      {"seen_as", [](hypothesis_t& h) { h.seen_as = "person"; }},
+      {"heard_as", [](hypothesis_t& h) { h.heard_as = "person"; }},
+      {"verified", [](hypothesis_t& h) { h.verified = !h.verified; }},
+      {"falsified", [](hypothesis_t& h) { h.falsified = !h.falsified; }},
+      {"first_heard_utime", [](hypothesis_t& h) { h.first_heard_utime = 5; }},
+      {"first_seen_utime", [](hypothesis_t& h) { h.first_seen_utime = 5; }},
+      {"settled_utime", [](hypothesis_t& h) { h.settled_utime = 5; }},
+  };
+  const hypotheses_t keyframe = list(0, {hypothesis("a", 1, 0.5)});
+  for (const auto& [field, change] : changes_of_one_field) {
+    hypotheses_t later = list(3, {hypothesis("a", 1, 0.5)});
+    change(later.hypotheses[0]);
+    const hypothesis_changes_t changes = wire::changesSince(keyframe, later);
+    EXPECT_EQ(changes.num_changed, 1) << "a change of " << field << " was not listed";
   }
 }

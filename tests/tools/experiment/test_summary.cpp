@@ -43,6 +43,30 @@ TEST(ExperimentMetrics, ReadFromTheReport) {
   EXPECT_FALSE(readMetrics("/nonexistent/report.json"));
 }
 
+// A damaged report (fields of another type, list entries that are no
+// objects) reads as what it lacks, never as an exception that would end the
+// experiment.
+TEST(ExperimentMetrics, AReportOfWrongTypesReadsAsWhatItLacks) {
+  const fs::path file = fs::temp_directory_path() / ("beft_experiment_damaged_" + std::to_string(getpid()) + ".json");
+  std::ofstream(file) << R"({"completed": "yes", "persons": "three", "collisions": null, "path_length_m": [1],
+    "end_reason": 7, "victims": [3, {"found_at_s": "soon"}, {"found_at_s": 8.0, "path_efficiency": 0.5}],
+    "heard": [null, {"error_m": 4.0}], "path_efficiency_mean": "high"})";
+  std::optional<EpisodeMetrics> m;
+  EXPECT_NO_THROW(m = readMetrics(file.string()));
+  fs::remove(file);
+  ASSERT_TRUE(m);
+  EXPECT_FALSE(m->completed);
+  EXPECT_EQ(m->persons_present, 0);
+  EXPECT_EQ(m->collisions, 0);
+  EXPECT_DOUBLE_EQ(m->path_length_m, 0.0);
+  EXPECT_EQ(m->end_reason, "");
+  EXPECT_EQ(m->persons_found, 3);
+  EXPECT_EQ(m->found_at_s, (std::vector<double>{0.0, 0.0, 8.0}));
+  EXPECT_EQ(m->path_efficiency, (std::vector<double>{0.5}));
+  EXPECT_DOUBLE_EQ(m->heard_error_mean_m, 2.0);
+  EXPECT_TRUE(std::isnan(m->path_efficiency_mean));
+}
+
 TEST(ExperimentMetrics, CsvFields) {
   EXPECT_EQ(csvField("plain"), "plain");
   EXPECT_EQ(csvField("a, \"b\""), "\"a, \"\"b\"\"\"");

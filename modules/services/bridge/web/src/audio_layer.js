@@ -1,6 +1,7 @@
 // Where the robot heard each sounding object (AUDIO: the acoustic estimate
 // p_hat) against where it is (GT_OBJECTS): a ring at the heard position and
-// a line from it to the true one.
+// a line from it to the true one. The ring is orange where the bearings
+// crossed (located), grey where the estimate is only a point along a bearing.
 import * as THREE from "three";
 import { InstancedSet } from "./instanced_set.js";
 
@@ -27,7 +28,7 @@ export class AudioLayer {
     this.rings.update(percepts.length, (i, placed) => {
       placed.position.set(percepts[i].est_x, percepts[i].est_y, HEIGHT);
       placed.scale.setScalar(this.view.markerScale);
-      return 0xffa020;
+      return percepts[i].located === false ? 0x9a9a9a : 0xffa020;
     });
     const ends = [];
     for (const p of percepts) {
