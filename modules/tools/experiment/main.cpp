@@ -58,7 +58,8 @@ std::optional<int> parseOptions(int argc, char** argv, beft::experiment::RunnerO
                  "which episodes keep their run.lcmlog: unsuccessful (failed, not completed or with a collision: "
                  "a successful episode's command, in its episode.json, makes the same messages again) or all")
       ->capture_default_str()
-      ->check(CLI::IsMember({"unsuccessful", "all"}));
+      ->check(CLI::IsMember({beft::experiment::nameOf(beft::experiment::KeepLogs::unsuccessful),
+                             beft::experiment::nameOf(beft::experiment::KeepLogs::all)}));
   addSlurmOptions(app, o);
   if (const auto code = beft::parseCommandLine(app, argc, argv)) return code;
   o.keep_logs = *beft::experiment::keepLogsNamed(keep_logs);
