@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tools/experiment/json_fields.hpp"
 #include "tools/experiment/scenes.hpp"
 
 namespace beft::experiment {
@@ -61,13 +62,13 @@ EpisodeState readEpisodeState(const std::string& folder) {
   const auto json = nlohmann::json::parse(in, nullptr, false);
   if (json.is_discarded() || !json.is_object()) return {};
   EpisodeState state;
-  state.status = json.value("status", "") == "done" ? Status::done : Status::failed;
-  state.exit_code = json.value("exit_code", 0);
-  state.wall_s = json.value("wall_s", 0.0);
-  state.simulated_s = json.value("simulated_s", 0.0);
-  state.reason = json.value("reason", "");
-  state.command = json.value("command", std::vector<std::string>{});
-  state.log_removed = json.value("log", "").rfind("removed", 0) == 0;
+  state.status = valueOr(json, "status", std::string()) == "done" ? Status::done : Status::failed;
+  state.exit_code = valueOr(json, "exit_code", 0);
+  state.wall_s = valueOr(json, "wall_s", 0.0);
+  state.simulated_s = valueOr(json, "simulated_s", 0.0);
+  state.reason = valueOr(json, "reason", std::string());
+  state.command = stringsOr(json, "command");
+  state.log_removed = valueOr(json, "log", std::string()).rfind("removed", 0) == 0;
   if (state.status == Status::done && !reportedSimulatedS(folder)) return {};
   return state;
 }

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tools/experiment/json_fields.hpp"
+
 namespace beft::experiment {
 namespace fs = std::filesystem;
 
@@ -20,10 +22,8 @@ bool succeeded(const std::string& folder, const EpisodeState& state) {
   if (state.status != Status::done) return false;
   std::ifstream in(fs::path(folder) / "report.json");
   const auto report = nlohmann::json::parse(in, nullptr, false);
-  if (report.is_discarded() || !report.is_object()) return false;
-  const auto completed = report.find("completed"), collisions = report.find("collisions");
-  return completed != report.end() && completed->is_boolean() && completed->get<bool>() &&
-         collisions != report.end() && collisions->is_number_integer() && collisions->get<int64_t>() == 0;
+  // Both must be there: a report without its collisions is no success.
+  return valueOr(report, "completed", false) && valueOr(report, "collisions", int64_t{-1}) == 0;
 }
 
 bool applyLogPolicy(const std::string& folder, const EpisodeState& state, KeepLogs keep) {

@@ -7,37 +7,14 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
-#include <string>
-#include <type_traits>
 
+#include "tools/experiment/json_fields.hpp"
 #include "tools/experiment/statistics.hpp"
 
 namespace beft::experiment {
 namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-
-// A report is a file on disk, damaged or from another version: a field
-// missing or of another type reads as `fallback` (json::value would throw).
-template <typename T>
-T valueOr(const nlohmann::json& object, const char* key, T fallback) {
-  if (!object.is_object()) return fallback;
-  const auto it = object.find(key);
-  if (it == object.end()) return fallback;
-  if constexpr (std::is_same_v<T, bool>) {
-    return it->is_boolean() ? it->get<bool>() : fallback;
-  } else if constexpr (std::is_arithmetic_v<T>) {
-    return it->is_number() ? it->get<T>() : fallback;
-  } else {
-    return it->is_string() ? it->get<std::string>() : fallback;
-  }
-}
-
-nlohmann::json listOr(const nlohmann::json& object, const char* key) {
-  if (!object.is_object()) return nlohmann::json::array();
-  const auto it = object.find(key);
-  return it != object.end() && it->is_array() ? *it : nlohmann::json::array();
-}
 
 double meanHeardError(const nlohmann::json& heard) {
   if (!heard.is_array() || heard.empty()) return kNone;
@@ -86,12 +63,13 @@ std::optional<EpisodeMetrics> readMetrics(const std::string& report_file) {
   m.sim_time_s = valueOr(report, "sim_time_s", 0.0);
   m.wall_time_s = valueOr(report, "wall_time_s", 0.0);
   m.heard_error_mean_m = meanHeardError(listOr(report, "heard"));
-  const auto times = foundTimes(listOr(report, "victims"));
+  const nlohmann::json victims = listOr(report, "victims");
+  const auto times = foundTimes(victims);
   m.found_at_s = times;
   m.time_to_find_first_s = quantile(times, 0.0);
   m.time_to_find_median_s = quantile(times, 0.5);
   m.path_efficiency_mean = valueOr(report, "path_efficiency_mean", kNone);
-  m.path_efficiency = pathEfficiencies(listOr(report, "victims"));
+  m.path_efficiency = pathEfficiencies(victims);
   return m;
 }
 

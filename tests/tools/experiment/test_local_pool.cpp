@@ -90,4 +90,20 @@ TEST_F(LocalPoolTest, OneJobRunsOneAfterAnotherWithoutASpeedUp) {
 }
 
 }  // namespace
+// A damaged episode.json (fields of another type) reads as an episode not
+// done, to run again, never as an exception that ends the experiment.
+TEST(EpisodeState, ADamagedStateFileReadsAsNotDone) {
+  const fs::path folder = fs::temp_directory_path() / ("beft_episode_state_" + std::to_string(getpid()));
+  fs::create_directories(folder);
+  std::ofstream(folder / kEpisodeFile) << R"({"status": 1, "exit_code": "0", "reason": [], "command": ["beft-run", 3], "log": null})";
+  EpisodeState state;
+  EXPECT_NO_THROW(state = readEpisodeState(folder.string()));
+  fs::remove_all(folder);
+  EXPECT_EQ(state.status, Status::failed);
+  EXPECT_EQ(state.exit_code, 0);
+  EXPECT_EQ(state.reason, "");
+  EXPECT_EQ(state.command, (std::vector<std::string>{"beft-run"}));
+  EXPECT_FALSE(state.log_removed);
+}
+
 }  // namespace beft::experiment
