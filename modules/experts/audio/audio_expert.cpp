@@ -54,6 +54,13 @@ void AudioExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("fix_agreement_deg", hearing_config_.fix_agreement_deg, 0, 90,
                      "binaural: where the bearings last crossed is kept as the estimate while the heard direction "
                      "points this near it, after the lines have aged out (0: not kept) [deg]");
+  parameters.declare("fix_disagreement_s", hearing_config_.fix_disagreement_s, 0, 60,
+                     "binaural: the kept crossing is dropped once the clear heard direction has missed it by more "
+                     "than fix_agreement_deg for this long [s]");
+  parameters.declare("fix_aging_mps", hearing_config_.fix_aging_mps, 0, 10,
+                     "binaural: a new crossing of the bearings replaces the kept one only if its error is no larger "
+                     "than the kept one's grown by this per second since it was made (0: the better crossing stays "
+                     "while it is heard there) [m/s]");
   parameters.declare("seen_explains_deg", hearing_config_.seen_explains_deg, 0, 45,
                      "binaural: among objects of one sound, a peak this near the direction of one that vision has "
                      "placed (HYPOTHESES of the tick before), or of its mirror image, is that one's, and any seen "

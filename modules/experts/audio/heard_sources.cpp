@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <tuple>
@@ -175,22 +176,48 @@ void HeardSources::update(Track& track, const hearing::AzimuthPosterior& heard_w
     lines.emplace_back(block.utime, BearingLine{track.heard_from, bearing});
     if (static_cast<int>(lines.size()) > config_.max_lines) lines.erase(lines.begin());
   }
-  keepFix(track, clear);
+  keepFix(track, clear, block.utime);
 }
 
-void HeardSources::keepFix(Track& track, bool clear) const {
+void HeardSources::keepFix(Track& track, bool clear, int64_t utime) const {
   std::vector<BearingLine> lines;
-  for (const auto& [utime, line] : track.lines) lines.push_back(line);
-  if (const auto crossing = triangulate(lines, config_.triangulation)) {
-    track.fix = *crossing;
-    return;
-  }
+  for (const auto& [line_utime, line] : track.lines) lines.push_back(line);
   if (!(config_.fix_agreement_deg > 0)) track.fix.reset();
-  if (!track.fix || !clear) return;
+  // A fix the clear direction has missed for fix_disagreement_s is dropped;
+  // a moment's miss (a mirror image, a peak of another source) is not enough.
+  if (!fixAgrees(track, clear)) {
+    if (track.disagreeing_since < 0) track.disagreeing_since = utime;
+    if (static_cast<double>(utime - track.disagreeing_since) * 1e-6 >= config_.fix_disagreement_s) track.fix.reset();
+  } else if (clear) {
+    track.disagreeing_since = -1;
+  }
+  if (!track.fix) track.disagreeing_since = -1;
+  if (const auto crossing = triangulate(lines, config_.triangulation)) {
+    // The lines' error where the kept fix is, if there is one: the lines
+    // themselves may cross nearer than the source, and by their distance
+    // to that crossing they would look more certain than they are.
+    const double error = crossingError(lines, track.fix ? *track.fix : *crossing, config_.bearing_sd_deg,
+                                       config_.triangulation);
+    const double kept_error =
+        track.fix ? track.fix_error_m + config_.fix_aging_mps * static_cast<double>(utime - track.fix_utime) * 1e-6
+                  : std::numeric_limits<double>::infinity();
+    if (!track.fix || !(kept_error < error)) {
+      track.fix = *crossing;
+      track.fix_error_m = error;
+      track.fix_utime = utime;
+      track.disagreeing_since = -1;
+    }
+  }
+}
+
+// Whether the fix is still where the source is heard: always while the
+// direction is unclear or the robot is near the fix.
+bool HeardSources::fixAgrees(const Track& track, bool clear) const {
+  if (!track.fix || !clear) return true;
   const Eigen::Vector2d to_fix = *track.fix - track.heard_from;
-  if (to_fix.norm() < config_.fix_near_m) return;
+  if (to_fix.norm() < config_.fix_near_m) return true;
   const double fix_bearing = std::atan2(to_fix.y(), to_fix.x()) * 180.0 / M_PI;
-  if (hearing::angularDistance(fix_bearing, track.world.mostLikely()) > config_.fix_agreement_deg) track.fix.reset();
+  return hearing::angularDistance(fix_bearing, track.world.mostLikely()) <= config_.fix_agreement_deg;
 }
 
 std::optional<HeardEstimate> HeardSources::estimate(const std::string& id) const {

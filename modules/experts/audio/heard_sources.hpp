@@ -22,12 +22,18 @@
 //    (bearing_triangulation.hpp) gives the distance once the robot has moved
 //    enough; before that the estimate lies default_distance_m along the
 //    bearing;
-//  - the last crossing (the fix), kept after its lines have aged out while
-//    the direction it is heard in still points at it: far from a source,
-//    where bearings no longer cross, the estimate stays where the lines
-//    crossed instead of falling back to default_distance_m from the robot.
-//    A clear direction that misses the fix by more than fix_agreement_deg
-//    (the source moved, or the crossing was wrong) drops it.
+//  - the best crossing so far (the fix), kept after its lines have aged out
+//    while the direction it is heard in still points at it: far from a
+//    source, where bearings no longer cross, the estimate stays where the
+//    lines crossed instead of falling back to default_distance_m from the
+//    robot. A new crossing takes the fix's place only when its error
+//    (crossingError) is no larger than the fix's, grown by fix_aging_mps
+//    since it was made: lines from far away, or from places that see the
+//    source at nearly one angle, cross where a small error of their
+//    bearings puts them, and must not replace a crossing made up close. A
+//    clear direction that misses the fix by more than fix_agreement_deg for
+//    fix_disagreement_s (the source moved, or the crossing was wrong) drops
+//    it; a moment's miss (a mirror image, a peak of another source) does not.
 // When an object's direction stays front-back ambiguous, a head turn is
 // asked for (wantsHeadTurn).
 #pragma once
@@ -62,6 +68,9 @@ struct HearingConfig {
   double default_distance_m = 4;     // distance of an estimate before triangulation [m]
   double fix_agreement_deg = 15;     // a kept fix stays while the heard direction is this near it [deg]
   double fix_near_m = 2;             // nearer than this to the fix, its direction is not checked [m]
+  double fix_disagreement_s = 2;     // the fix is dropped once the clear direction has missed it this long [s]
+  double bearing_sd_deg = 3;         // a clear bearing's error, for a crossing's error (crossingError) [deg]
+  double fix_aging_mps = 0.05;       // a kept fix's error grows this much per second: its source may have moved [m/s]
   double turn_deg = 20;              // the head turn that resolves front and back
   double turn_interval_s = 3;        // at most one head turn per this time
   TriangulationLimits triangulation;
@@ -108,11 +117,15 @@ class HeardSources {
     hearing::AzimuthPosterior world;  // over world bearing, CCW from +x: from log_evidence
     Eigen::Vector2d heard_from = Eigen::Vector2d::Zero();
     std::vector<std::pair<int64_t, BearingLine>> lines;  // (utime, line)
-    std::optional<Eigen::Vector2d> fix;                  // the last crossing of the lines, while heard there
+    std::optional<Eigen::Vector2d> fix;                  // the best crossing of the lines, while heard there
+    double fix_error_m = 0;                              // its crossingError when it was made [m]
+    int64_t fix_utime = 0;                               // when it was made [us]
+    int64_t disagreeing_since = -1;                      // since when the clear direction misses the fix [us], -1: it does not
     int64_t last_heard_tick = -1;
   };
   void update(Track& track, const hearing::AzimuthPosterior& heard_world, const binaural_block_t& block);
-  void keepFix(Track& track, bool clear) const;
+  void keepFix(Track& track, bool clear, int64_t utime) const;
+  bool fixAgrees(const Track& track, bool clear) const;
 
   HearingConfig config_;
   std::map<std::string, Track> tracks_;

@@ -16,9 +16,12 @@
 // into the patch, to the cell near the one it reaches soonest (within
 // inward_m) that has the most of the patch within range_m, faces the patch,
 // and turns a quarter at a time towards the rest of it that lies around.
-// What stayed unseen from a goal the robot went to is not asked for again:
-// the cells within visited_radius_m of it, and those within range_m that no
-// clear line reaches from it.
+// What stayed unseen near a goal the robot went to, the cells within
+// visited_radius_m of it, is not asked for again. Ground hidden from the goal
+// farther away stays open: the inside of a house open on one side is hidden
+// from a goal beside its wall and is looked at from its open side later. The
+// search still ends: each goal is a cell of its patch, given up if not looked
+// at, and a patch with no cell the robot can stand on has no goal.
 #pragma once
 
 #include <cstdint>
@@ -61,8 +64,8 @@ class CloseLookCoverage {
   // Marks what the camera at (x, y) gazing along gaze_deg (CCW from +x)
   // looks at closely, when it moved or turned enough since the last mark.
   void look(const KnownMap& map, double x, double y, double gaze_deg);
-  // The robot went to (or gave up going to) this goal: what it could not
-  // look at closely from there is not asked for again.
+  // The robot went to (or gave up going to) this goal: the ground near it
+  // that it could not look at closely is not asked for again.
   void visited(const KnownMap& map, Point goal);
 
   // Whether the ground at (x, y) is still to be looked at closely (not looked

@@ -316,3 +316,89 @@ TEST(HeardSources, APerceptIsLocatedOnlyOnceItsBearingsCrossed) {
   EXPECT_TRUE(percepts.percepts[0].located);
   EXPECT_LT(std::hypot(percepts.percepts[0].est_x - source.x(), percepts.percepts[0].est_y - source.y()), 0.5);
 }
+
+TEST(BearingTriangulation, ACrossingFromFarOrFromOneSideIsLessCertainThanOneFromUpClose) {
+  const Eigen::Vector2d source(6, 4);
+  const auto linesFrom = [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+    std::vector<BearingLine> lines;
+    for (int step = 0; step <= 20; ++step) {
+      const Eigen::Vector2d at = from + (to - from) * step / 20.0;
+      lines.push_back({at, bearingTo(at, source)});
+    }
+    return lines;
+  };
+  const double near = crossingError(linesFrom({0, 0}, {8, 0}), source, 3);
+  const double far = crossingError(linesFrom({21, -6}, {21, 6}), source, 3);
+  const double one_side = crossingError(linesFrom({0, 0}, {0.5, 0}), source, 3);
+  EXPECT_LT(near, 1.0);
+  EXPECT_GT(far, 4 * near);
+  EXPECT_GT(one_side, 2 * far);
+  // The error is that of the mean line: the same lines twice are no better.
+  auto twice = linesFrom({0, 0}, {8, 0});
+  const auto again = linesFrom({0, 0}, {8, 0});
+  twice.insert(twice.end(), again.begin(), again.end());
+  EXPECT_NEAR(crossingError(twice, source, 3), near, 1e-9);
+  EXPECT_NEAR(crossingError(linesFrom({0, 0}, {8, 0}), source, 6), 2 * near, 1e-9) << "in proportion to the bearing error";
+  // Parallel lines do not cross.
+  EXPECT_TRUE(std::isinf(crossingError({{{0, 0}, 90.0}, {{1, 0}, 90.0}}, {0, 5}, 3)));
+}
+
+// Bearings heard from far away that all err alike (here by 5 degrees) cross
+// away from the source: they do not replace a crossing made up close while
+// the source is still heard there.
+TEST(HeardSources, ACrossingMadeUpCloseIsNotReplacedByAWorseOneFromFarAway) {
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const std::vector<SoundingObject> sounding = {{"siren", &voice}};
+  const Eigen::Vector2d source(6, 4);
+  const auto run = [&](const HearingConfig& config) {
+    HeardSources heard(config);
+    int tick = driveHearing(heard, sounding, voice, 0, {0, 0}, {8, 0}, source);
+    EXPECT_LT((heard.estimate("siren")->position - source).norm(), 0.5);
+    // Then to and fro 15 m east of it, hearing it 5 degrees off, until the
+    // lines from up close have aged out.
+    const auto biasedDrive = [&](Eigen::Vector2d from, Eigen::Vector2d to) {
+      const int steps = static_cast<int>(std::round((to - from).norm() / 0.1));
+      for (int step = 0; step <= steps; ++step, ++tick) {
+        const Eigen::Vector2d at = from + (to - from) * static_cast<double>(step) / steps;
+        heard.hear(heardAt({{bearingTo(at, source) + 5, &voice}}, 2), blockAt(tick, at.x(), at.y(), 0), sounding);
+      }
+    };
+    biasedDrive({8, 0}, {21, -6});
+    for (int pass = 0; pass < 2; ++pass) {
+      biasedDrive({21, -6}, {21, 6});
+      biasedDrive({21, 6}, {21, -6});
+    }
+    EXPECT_GT(tick, kTicksPerSecond * config.line_max_age_s + 100) << "the lines from up close aged out";
+    const auto estimate = heard.estimate("siren");
+    EXPECT_TRUE(estimate.has_value() && estimate->triangulated);
+    return estimate ? (estimate->position - source).norm() : 1e9;
+  };
+  HearingConfig newest_crossing_wins;
+  newest_crossing_wins.fix_aging_mps = 1e6;
+  const double kept_close = run(HearingConfig{}), newest = run(newest_crossing_wins);
+  EXPECT_LT(kept_close, 1.0);
+  EXPECT_GT(newest, 1.5) << "the far crossing is worse: the test must show it";
+  EXPECT_GT(newest, 2 * kept_close);
+}
+
+// Many bearings from far away that err alike, a few exact ones from up
+// close: weighted by their distance, the close ones decide where they cross.
+TEST(BearingTriangulation, LinesHeardUpCloseOutweighManyFromFarAway) {
+  const Eigen::Vector2d source(6, 4);
+  std::vector<BearingLine> lines;
+  for (int step = 0; step <= 5; ++step) {
+    const Eigen::Vector2d at(1.6 * step, 0);
+    lines.push_back({at, bearingTo(at, source)});
+  }
+  for (int step = 0; step < 34; ++step) {
+    const Eigen::Vector2d at(21, -6 + 12.0 * step / 33);
+    lines.push_back({at, bearingTo(at, source) + 5});
+  }
+  const auto weighted = triangulate(lines);
+  TriangulationLimits alike;
+  alike.reweighting_passes = 0;
+  const auto unweighted = triangulate(lines, alike);
+  ASSERT_TRUE(weighted && unweighted);
+  EXPECT_LT((*weighted - source).norm(), 0.5);
+  EXPECT_GT((*unweighted - source).norm(), 2 * (*weighted - source).norm());
+}

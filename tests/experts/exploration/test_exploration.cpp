@@ -1187,21 +1187,22 @@ TEST(CloseLooks, GroundIsLookedAtCloselyOnlyInViewInRangeAndInSight) {
   EXPECT_GT(coverage.lookedAtCells(), looked);
 }
 
-TEST(CloseLooks, PatchByPatchTheReachableGroundIsLookedAtAndTheSearchEnds) {
-  const auto cells = houseWorld();
-  const KnownMap map(cells, 0.5);
-  CloseLookCoverage coverage;
-  Point robot{3, 10};
-  coverage.look(map, robot.x, robot.y, 0);
+// Goes from goal to goal as the explorer would, looking at each and turning
+// as the goal says, until no patch is left; the goals' count and the travel.
+struct CloseLookSearch {
   int goals = 0;
   double travelled = 0;
+};
+CloseLookSearch searchTheGround(const KnownMap& map, CloseLookCoverage& coverage, Point robot) {
+  CloseLookSearch search;
   while (auto goal = coverage.cheapestPatch(map, TravelField(map, robot.x, robot.y, 0.6), robot)) {
-    ASSERT_LT(++goals, 200) << "the search must end";
+    EXPECT_LT(++search.goals, 200) << "the search must end";
+    if (search.goals >= 200) break;
     Cell cell;
-    ASSERT_TRUE(map.cellOf(goal->x, goal->y, cell));
+    EXPECT_TRUE(map.cellOf(goal->x, goal->y, cell));
     EXPECT_TRUE(map.standable(cell.x, cell.y));
     EXPECT_TRUE(coverage.open(goal->x, goal->y));
-    travelled += goal->travel_m;
+    search.travelled += goal->travel_m;
     robot = {goal->x, goal->y};
     coverage.look(map, goal->x, goal->y, goal->yaw);
     double heading = goal->yaw;
@@ -1213,7 +1214,17 @@ TEST(CloseLooks, PatchByPatchTheReachableGroundIsLookedAtAndTheSearchEnds) {
     }
     coverage.visited(map, {goal->x, goal->y});
   }
-  EXPECT_GT(goals, 3);
+  return search;
+}
+
+TEST(CloseLooks, PatchByPatchTheReachableGroundIsLookedAtAndTheSearchEnds) {
+  const auto cells = houseWorld();
+  const KnownMap map(cells, 0.5);
+  CloseLookCoverage coverage;
+  const Point start{3, 10};
+  coverage.look(map, start.x, start.y, 0);
+  const CloseLookSearch search = searchTheGround(map, coverage, start);
+  EXPECT_GT(search.goals, 3);
   // The house's floor, which depth maps from the far side of the world, was
   // looked at from up close.
   EXPECT_FALSE(coverage.open(33.1, 6.1));
@@ -1222,8 +1233,33 @@ TEST(CloseLooks, PatchByPatchTheReachableGroundIsLookedAtAndTheSearchEnds) {
   const double free_cells = (40.0 * 20.0 - 14.0) / 0.25;
   EXPECT_GT(coverage.lookedAtCells(), 0.9 * free_cells);
   // Into each patch and round: about 800 m2 in fewer than 30 stops.
-  EXPECT_LT(goals, 30);
-  EXPECT_LT(travelled, 300.0);
+  EXPECT_LT(search.goals, 30);
+  EXPECT_LT(search.travelled, 300.0);
+}
+
+// A goal beside a house's closed wall has the house's floor within range
+// but hidden: that floor stays to be looked at, and is, from the open side.
+// (Given up there, a radio on that floor was never seen in a district.)
+TEST(CloseLooks, GroundHiddenFromAGoalStaysOpenAndIsLookedAtFromElsewhere) {
+  const auto cells = houseWorld();
+  const KnownMap map(cells, 0.5);
+  CloseLookCoverage coverage;
+  const Point beside_the_west_wall{28, 7};
+  coverage.look(map, beside_the_west_wall.x, beside_the_west_wall.y, 0);  // facing the wall
+  coverage.visited(map, beside_the_west_wall);
+  EXPECT_FALSE(coverage.open(28.6, 7.1)) << "in view, in front of the wall";
+  EXPECT_FALSE(coverage.open(27.1, 6.1)) << "behind the goal, within the visited radius";
+  EXPECT_TRUE(coverage.open(26.1, 9.1)) << "behind the goal, farther";
+  EXPECT_TRUE(coverage.open(33.1, 6.1)) << "the house's floor, 5 m away behind the wall";
+  EXPECT_TRUE(coverage.open(35.1, 9.1));
+
+  searchTheGround(map, coverage, beside_the_west_wall);
+  // Looking at the floor again from its open side marks nothing new: it
+  // was looked at, not given up.
+  const int looked = coverage.lookedAtCells();
+  for (const double gaze : {-60.0, -90.0, -120.0}) coverage.look(map, 33, 9.5, gaze);
+  EXPECT_FALSE(coverage.open(33.1, 6.1));
+  EXPECT_EQ(coverage.lookedAtCells(), looked);
 }
 
 TEST(CloseLooks, OffTheSearchHasNoGoal) {
