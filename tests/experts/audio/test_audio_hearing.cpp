@@ -402,3 +402,39 @@ TEST(BearingTriangulation, LinesHeardUpCloseOutweighManyFromFarAway) {
   EXPECT_LT((*weighted - source).norm(), 0.5);
   EXPECT_GT((*unweighted - source).norm(), 2 * (*weighted - source).norm());
 }
+
+// Heard from elsewhere for a moment (a mirror image, a peak of another
+// source), the fix stays; heard elsewhere for longer than
+// fix_disagreement_s, it is dropped.
+TEST(HeardSources, AMomentsMissDoesNotDropTheFixALastingOneDoes) {
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const std::vector<SoundingObject> sounding = {{"siren", &voice}};
+  const Eigen::Vector2d source(6, 4);
+  HeardSources heard;
+  int tick = driveHearing(heard, sounding, voice, 0, {0, 0}, {8, 0}, source);
+  const auto hearFrom = [&](const Eigen::Vector2d& direction_of, int ticks) {
+    for (int held = 0; held < ticks; ++held) tick = driveHearing(heard, sounding, voice, tick, {8, 0}, {8, 0}, direction_of);
+  };
+  // Standing still until the lines that crossed have aged out: the fix alone says where.
+  hearFrom(source, static_cast<int>(1.5 * heard.config().line_max_age_s * kTicksPerSecond));
+  ASSERT_TRUE(heard.estimate("siren")->triangulated);
+  const Eigen::Vector2d fix = heard.estimate("siren")->position;
+  ASSERT_LT((fix - source).norm(), 1.0);
+  const Eigen::Vector2d elsewhere(8, -12);
+  hearFrom(elsewhere, static_cast<int>(0.5 * heard.config().fix_disagreement_s * kTicksPerSecond));
+  hearFrom(source, kTicksPerSecond);
+  ASSERT_TRUE(heard.estimate("siren")->triangulated);
+  EXPECT_LT((heard.estimate("siren")->position - fix).norm(), 0.1) << "kept through a moment's miss";
+  hearFrom(elsewhere, static_cast<int>(1.5 * heard.config().fix_disagreement_s * kTicksPerSecond));
+  EXPECT_GT((heard.estimate("siren")->position - source).norm(), 3) << "dropped after a lasting one";
+  // With no time to disagree, the moment's miss drops it.
+  HearingConfig at_once;
+  at_once.fix_disagreement_s = 0;
+  HeardSources hasty(at_once);
+  tick = driveHearing(hasty, sounding, voice, 0, {0, 0}, {8, 0}, source);
+  for (int held = 0; held < 1.5 * heard.config().line_max_age_s * kTicksPerSecond; ++held)
+    tick = driveHearing(hasty, sounding, voice, tick, {8, 0}, {8, 0}, source);
+  for (int held = 0; held < 0.5 * heard.config().fix_disagreement_s * kTicksPerSecond; ++held)
+    tick = driveHearing(hasty, sounding, voice, tick, {8, 0}, {8, 0}, elsewhere);
+  EXPECT_GT((hasty.estimate("siren")->position - fix).norm(), 3);
+}
