@@ -180,18 +180,26 @@ void HeardSources::update(Track& track, const hearing::AzimuthPosterior& heard_w
 }
 
 void HeardSources::keepFix(Track& track, bool clear, int64_t utime) const {
-  std::vector<BearingLine> lines;
-  for (const auto& [line_utime, line] : track.lines) lines.push_back(line);
   if (!(config_.fix_agreement_deg > 0)) track.fix.reset();
-  // A fix the clear direction has missed for fix_disagreement_s is dropped;
-  // a moment's miss (a mirror image, a peak of another source) is not enough.
+  // A fix the clear direction has missed for fix_disagreement_s is dropped,
+  // with the lines heard before the miss began that made it: the source
+  // moved, or they were another source's. A moment's miss (a mirror image,
+  // a peak of another source) is not enough.
   if (!fixAgrees(track, clear)) {
     if (track.disagreeing_since < 0) track.disagreeing_since = utime;
-    if (static_cast<double>(utime - track.disagreeing_since) * 1e-6 >= config_.fix_disagreement_s) track.fix.reset();
+    if (static_cast<double>(utime - track.disagreeing_since) * 1e-6 >= config_.fix_disagreement_s) {
+      track.fix.reset();
+      const int64_t since = track.disagreeing_since;
+      track.lines.erase(std::remove_if(track.lines.begin(), track.lines.end(),
+                                       [&](const auto& line) { return line.first < since; }),
+                        track.lines.end());
+    }
   } else if (clear) {
     track.disagreeing_since = -1;
   }
   if (!track.fix) track.disagreeing_since = -1;
+  std::vector<BearingLine> lines;
+  for (const auto& [line_utime, line] : track.lines) lines.push_back(line);
   if (const auto crossing = triangulate(lines, config_.triangulation)) {
     // The lines' error where the kept fix is, if there is one: the lines
     // themselves may cross nearer than the source, and by their distance

@@ -33,7 +33,8 @@
 //    bearings puts them, and must not replace a crossing made up close. A
 //    clear direction that misses the fix by more than fix_agreement_deg for
 //    fix_disagreement_s (the source moved, or the crossing was wrong) drops
-//    it; a moment's miss (a mirror image, a peak of another source) does not.
+//    it, and the lines heard before that miss began, which made it; a
+//    moment's miss (a mirror image, a peak of another source) does not.
 // When an object's direction stays front-back ambiguous, a head turn is
 // asked for (wantsHeadTurn).
 #pragma once

@@ -87,6 +87,9 @@ void ExplorationExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("verify_attempts", e.verify_attempts, 1, 1000, "viewpoints tried per heard hypothesis before giving up");
   parameters.declare("give_up_in_plain_view", e.give_up_in_plain_view,
                      "give a heard hypothesis up after a look that had its estimate in plain view and did not settle it");
+  parameters.declare("verify_located_first", e.verify_located_first,
+                     "verify a heard hypothesis not yet located (only a bearing) once no frontier and no ground to "
+                     "look at closely is left; a located one at once");
   parameters.declare("inspect_attempts", e.inspect_attempts, 1, 1000, "viewpoints tried per glimpsed hypothesis");
   parameters.declare("ruled_out_viewpoints", e.ruled_out_viewpoints, 1, 1000,
                      "viewpoints of a hypothesis the map rules out on the way (a wall mapped in the line of sight) "

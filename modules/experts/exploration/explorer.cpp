@@ -81,6 +81,10 @@ const std::vector<Point>& Explorer::triedViewpoints(const std::string& object_id
 
 bool Explorer::wantsVerify(const HypothesisView& h) const { return h.heard && !h.verified && !h.falsified; }
 
+bool Explorer::wantsVerifyNow(const HypothesisView& h, bool not_located_too) const {
+  return wantsVerify(h) && (h.located || not_located_too || !parameters_.verify_located_first);
+}
+
 bool Explorer::wantsInspect(const HypothesisView& h) const {
   return parameters_.inspect_glimpsed && h.glimpsed && !h.heard && !h.seen &&
          h.person_confidence >= h.confidence - parameters_.inspect_person_margin;
@@ -296,7 +300,7 @@ bool Explorer::endIfInterrupted(const Observation& o, Decision& d) {
   if (job_->kind != JobKind::Explore && job_->kind != JobKind::CloseLook) return false;
   const bool for_inspect = job_->kind == JobKind::CloseLook;
   for (const auto& h : o.hypotheses) {
-    const bool verify = wantsVerify(h), inspect = for_inspect && wantsInspect(h);
+    const bool verify = wantsVerifyNow(h, false), inspect = for_inspect && wantsInspect(h);
     if (!verify && !inspect) continue;
     const auto it = targets_.find(h.object_id);
     // Only a hypothesis not known to lack a viewpoint: those wait for this job to end.
@@ -568,6 +572,8 @@ void Explorer::decide(const Observation& o, Decision& d) {
   // the rest of the ground to look at closely.
   if (reconsiderMoved(o, d) && startTargetJob(o, d, false)) return;
   if (startCloseLookJob(o, d)) return;
+  // Nothing else left: the heard hypotheses not yet located too.
+  if (parameters_.verify_located_first && startTargetJob(o, d, false, true)) return;
 
   if (!o.map) {
     if (o.t >= parameters_.confirm_timeout_s * 3)
@@ -605,7 +611,7 @@ void Explorer::decide(const Observation& o, Decision& d) {
   idle_until_t_ = o.t + parameters_.idle_recheck_s;
 }
 
-bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
+bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect, bool not_located_too) {
   const KnownMap* map = knownMap(o);
   if (map == nullptr) return false;
   // The hypotheses to try, each with the least score a viewpoint of it can
@@ -622,7 +628,7 @@ bool Explorer::startTargetJob(const Observation& o, Decision& d, bool inspect) {
   std::vector<Candidate> candidates;
   std::vector<double> least_scores;
   for (const HypothesisView& h : o.hypotheses) {
-    if (!(inspect ? wantsInspect(h) : wantsVerify(h))) continue;
+    if (!(inspect ? wantsInspect(h) : wantsVerifyNow(h, not_located_too))) continue;
     TargetMemory& memory = targets_[h.object_id];
     tryAfreshIfMoved(h, memory, o, d);
     if (memory.given_up || o.t < memory.retry_t) continue;

@@ -438,3 +438,21 @@ TEST(HeardSources, AMomentsMissDoesNotDropTheFixALastingOneDoes) {
     tick = driveHearing(hasty, sounding, voice, tick, {8, 0}, {8, 0}, elsewhere);
   EXPECT_GT((hasty.estimate("siren")->position - fix).norm(), 3);
 }
+
+// A walker heard elsewhere for longer than fix_disagreement_s: the lines
+// that placed it before go with the dropped fix, and the new ones alone say
+// where it is now.
+TEST(HeardSources, TheLinesOfADroppedFixDoNotPullTheNextOne) {
+  const auto voice = spectrum({10, 8, 4, 1, 0.1});
+  const std::vector<SoundingObject> sounding = {{"walker", &voice}};
+  const Eigen::Vector2d before(6, 4), now(14, 4);
+  const auto run = [&](const HearingConfig& config) {
+    HeardSources heard(config);
+    int tick = driveHearing(heard, sounding, voice, 0, {0, 0}, {8, 0}, before);
+    EXPECT_LT((heard.estimate("walker")->position - before).norm(), 1.0);
+    tick = driveHearing(heard, sounding, voice, tick, {8, 0}, {12, 0}, now);  // with the old lines: 8 m off
+    const auto estimate = heard.estimate("walker");
+    return estimate && estimate->triangulated ? (estimate->position - now).norm() : 1e9;
+  };
+  EXPECT_LT(run(HearingConfig{}), 0.5);
+}

@@ -1073,6 +1073,56 @@ TEST_F(ExplorerRun, ExploresTheUnknownAndStopsWhenAllIsSettledAndKnown) {
   EXPECT_NE(last.stop->find("no reachable frontier"), std::string::npos) << *last.stop;
 }
 
+// A heard hypothesis only on its bearing (not located) neither interrupts
+// exploring nor is verified while a frontier is left; once none is, it is.
+// Located, it interrupts at once (the test above).
+TEST_F(ExplorerRun, AHeardEstimateNotYetLocatedWaitsUntilNothingElseIsLeft) {
+  auto cells = makeCells(20, 20, kUnknown);
+  fillRect(cells, 0.0, 0.0, 10.0, 20.0, kFree);
+  setMap(cells);
+  observation.hypotheses = {hidden()};
+  observation.hypotheses[0].x = 7;
+  observation.hypotheses[0].located = false;
+  lookAround();
+  const auto explore = pushesOf(tick());
+  ASSERT_EQ(explore.size(), 1u);
+  EXPECT_EQ(explore[0].kind, "explore") << "the frontier first";
+  for (int i = 0; i < 5; ++i) {
+    for (const auto& push : pushesOf(tick())) EXPECT_NE(push.kind, "verify");
+  }
+  EXPECT_EQ(explorer.phase(), Explorer::Phase::Explore);
+
+  // The frontier is mapped: nothing else left, the estimate is verified.
+  setMap(makeCells(20, 20, kFree));
+  std::vector<std::string> kinds;
+  for (int i = 0; i < 20 && kinds.empty(); ++i)
+    for (const auto& push : pushesOf(tick())) kinds.push_back(push.kind);
+  ASSERT_FALSE(kinds.empty());
+  EXPECT_EQ(kinds[0], "verify");
+  EXPECT_EQ(explorer.phase(), Explorer::Phase::Verify);
+
+  // With verify_located_first off it interrupts exploring at once.
+  ExplorerParameters at_once = withoutCloseLooks();
+  at_once.verify_located_first = false;
+  Explorer eager(at_once);
+  FakeStack eager_stack;
+  Observation seen = observation;
+  seen.t = 0;
+  seen.map = std::make_shared<const planners::ObstacleCells>(cells);
+  ++seen.map_version;
+  bool verified = false;
+  for (int i = 0; i < 10 && !verified; ++i) {
+    seen.stack = eager_stack.entries();
+    seen.stack_known = true;
+    const Decision decision = eager.step(seen);
+    eager_stack.apply(decision);
+    eager_stack.completeSubTasks(eager_stack.topComposite());
+    seen.t += 0.1;
+    for (const auto& request : decision.requests) verified |= request.kind == "verify";
+  }
+  EXPECT_TRUE(verified);
+}
+
 TEST_F(ExplorerRun, FalsifiedCountsAsSettled) {
   lookAround();
   HypothesisView radio = hidden("radio");
