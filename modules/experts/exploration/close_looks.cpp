@@ -82,14 +82,25 @@ void CloseLookCoverage::look(const KnownMap& map, double x, double y, double gaz
 void CloseLookCoverage::visited(const KnownMap& map, Point goal) {
   if (!parameters_.enabled) return;
   fit(map);
-  const int reach = static_cast<int>(std::ceil(parameters_.visited_radius_m / parameters_.cell_m)) + 1;
+  const int reach = static_cast<int>(std::ceil(parameters_.range_m / parameters_.cell_m)) + 1;
   Cell centre;
   if (!cellOf(goal.x, goal.y, centre)) return;
   for (int cy = std::max(0, centre.y - reach); cy <= std::min(height_ - 1, centre.y + reach); ++cy)
     for (int cx = std::max(0, centre.x - reach); cx <= std::min(width_ - 1, centre.x + reach); ++cx) {
       uint8_t& state = state_[index(cx, cy)];
-      if (state == kNotLooked && std::hypot(centreX(cx) - goal.x, centreY(cy) - goal.y) <= parameters_.visited_radius_m)
+      if (state != kNotLooked) continue;
+      const double px = centreX(cx), py = centreY(cy);
+      const double distance = std::hypot(px - goal.x, py - goal.y);
+      if (distance <= parameters_.visited_radius_m) {
         state = kGivenUp;
+        continue;
+      }
+      if (distance > parameters_.range_m || map.sight(goal.x, goal.y, px, py, kOwnFootprintM).clear) continue;
+      // Hidden: by what stands near the goal (the line's first
+      // hidden_near_goal_m; the rest of it ignored), or farther on.
+      const double ignored_near_cell = std::max(kOwnFootprintM, distance - parameters_.hidden_near_goal_m);
+      const bool hidden_near_goal = !map.sight(goal.x, goal.y, px, py, ignored_near_cell).clear;
+      if (!hidden_near_goal) state = kGivenUp;
     }
 }
 

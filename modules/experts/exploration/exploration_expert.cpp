@@ -139,6 +139,10 @@ void ExplorationExpert::declareParameters(DeclaredParameters& parameters) {
   parameters.declare("close_look_fov_deg", c.fov_deg, 1, 179, "the camera's horizontal field of view for close looks [deg]");
   parameters.declare("close_look_min_cells", c.min_cells, 1, 1000000,
                      "smaller patches of ground not looked at closely are ignored [0.5 m cells]");
+  parameters.declare("close_look_hidden_near_goal_m", c.hidden_near_goal_m, 0, kNoLimit,
+                     "ground a close look's goal could not see, hidden by what stands this near the goal, stays to "
+                     "be looked at from elsewhere; hidden by what stands farther, within close_look_m, it is given "
+                     "up (0: all of it, faster but a house's floor seen only from its open side may be missed) [m]");
   parameters.declare("stop_when_done", e.stop_when_done,
                      "request the stop when nothing is left (0: keep watching until the scenario's duration)");
 }

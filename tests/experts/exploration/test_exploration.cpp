@@ -1288,24 +1288,42 @@ TEST(CloseLooks, PatchByPatchTheReachableGroundIsLookedAtAndTheSearchEnds) {
 }
 
 // A goal beside a house's closed wall has the house's floor within range
-// but hidden: that floor stays to be looked at, and is, from the open side.
-// (Given up there, a radio on that floor was never seen in a district.)
-TEST(CloseLooks, GroundHiddenFromAGoalStaysOpenAndIsLookedAtFromElsewhere) {
+// but hidden by that wall: by default the floor stays to be looked at, and
+// is, from the open side. With hidden_near_goal_m short of what hides it,
+// it is given up.
+TEST(CloseLooks, GroundHiddenFromAGoalStaysOpenUnlessHiddenFartherThanAsked) {
   const auto cells = houseWorld();
   const KnownMap map(cells, 0.5);
-  CloseLookCoverage coverage;
   const Point beside_the_west_wall{28, 7};
-  coverage.look(map, beside_the_west_wall.x, beside_the_west_wall.y, 0);  // facing the wall
-  coverage.visited(map, beside_the_west_wall);
-  EXPECT_FALSE(coverage.open(28.6, 7.1)) << "in view, in front of the wall";
-  EXPECT_FALSE(coverage.open(27.1, 6.1)) << "behind the goal, within the visited radius";
-  EXPECT_TRUE(coverage.open(26.1, 9.1)) << "behind the goal, farther";
-  EXPECT_TRUE(coverage.open(33.1, 6.1)) << "the house's floor, 5 m away behind the wall";
-  EXPECT_TRUE(coverage.open(35.1, 9.1));
+  const auto visitedFrom = [&](CloseLookCoverage& coverage, Point goal) {
+    coverage.look(map, goal.x, goal.y, 0);  // facing the wall
+    coverage.visited(map, goal);
+  };
+  CloseLookParameters none;
+  none.hidden_near_goal_m = 0;
+  CloseLookCoverage all_given_up(none);
+  visitedFrom(all_given_up, beside_the_west_wall);
+  EXPECT_FALSE(all_given_up.open(33.1, 6.1)) << "the house's floor, 5 m away behind the wall: given up";
 
+  CloseLookParameters three_metres;
+  three_metres.hidden_near_goal_m = 3;
+  CloseLookCoverage near_wall(three_metres), farther_off(three_metres);
+  visitedFrom(near_wall, beside_the_west_wall);
+  EXPECT_FALSE(near_wall.open(28.6, 7.1)) << "in view, in front of the wall";
+  EXPECT_FALSE(near_wall.open(27.1, 6.1)) << "behind the goal, within the visited radius";
+  EXPECT_TRUE(near_wall.open(26.1, 9.1)) << "behind the goal, farther";
+  EXPECT_TRUE(near_wall.open(33.1, 6.1)) << "hidden by the wall 2 m from the goal: open";
+  EXPECT_TRUE(near_wall.open(35.1, 9.1));
+  visitedFrom(farther_off, {24, 7});
+  EXPECT_FALSE(farther_off.open(31.1, 6.1)) << "hidden by the wall 6 m from the goal: given up";
+  EXPECT_FALSE(farther_off.open(33.1, 6.1));
+
+  // By default nothing is given up for being hidden: the floor is looked at
+  // in the end, and looking at it again from its open side marks nothing new.
+  CloseLookCoverage coverage;
+  visitedFrom(coverage, beside_the_west_wall);
+  EXPECT_TRUE(coverage.open(33.1, 6.1));
   searchTheGround(map, coverage, beside_the_west_wall);
-  // Looking at the floor again from its open side marks nothing new: it
-  // was looked at, not given up.
   const int looked = coverage.lookedAtCells();
   for (const double gaze : {-60.0, -90.0, -120.0}) coverage.look(map, 33, 9.5, gaze);
   EXPECT_FALSE(coverage.open(33.1, 6.1));
