@@ -95,12 +95,16 @@ void CloseLookCoverage::visited(const KnownMap& map, Point goal) {
         state = kGivenUp;
         continue;
       }
-      if (distance > parameters_.range_m || map.sight(goal.x, goal.y, px, py, kOwnFootprintM).clear) continue;
-      // Hidden: by what stands near the goal (the line's first
-      // hidden_near_goal_m; the rest of it ignored), or farther on.
-      const double ignored_near_cell = std::max(kOwnFootprintM, distance - parameters_.hidden_near_goal_m);
-      const bool hidden_near_goal = !map.sight(goal.x, goal.y, px, py, ignored_near_cell).clear;
-      if (!hidden_near_goal) state = kGivenUp;
+      // Within hidden_near_goal_m of the goal (the default, 100 m, covers the
+      // whole range): whatever hides it stands that near, so it stays open
+      // without walking the line at all.
+      const double ignored_near_cell = distance - parameters_.hidden_near_goal_m;
+      if (distance > parameters_.range_m || ignored_near_cell <= kOwnFootprintM) continue;
+      // Given up if hidden, but not by what stands near the goal (the
+      // line's first hidden_near_goal_m, the rest of it ignored).
+      if (map.sight(goal.x, goal.y, px, py, ignored_near_cell).clear &&
+          !map.sight(goal.x, goal.y, px, py, kOwnFootprintM).clear)
+        state = kGivenUp;
     }
 }
 
