@@ -35,6 +35,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr auto kTimerPeriod = std::chrono::milliseconds(50);
+constexpr int kBurstMessages = 256;  // a read of this many is a burst: read on without gathering
 
 }  // namespace
 
@@ -72,6 +73,11 @@ void BridgeProcess::addOptions(CLI::App& app) {
   app.add_option("--scenario", options_.scenario, "the run's scenario, named to viewers");
   app.add_option("--net", options_.net,
                  "the run's Petri net (PNML): drawn by Graphviz for the page (/net.svg), which lights its marking");
+  app.add_option("--batch-ms", options_.batch_ms,
+                 "live: milliseconds to let the run's messages gather between reads (one wake-up for many; the "
+                 "kernel queues them meanwhile); 0 reads each as it comes")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 50));
   app.add_option("--max-clients", options_.max_clients, "WebSocket clients at once")
       ->capture_default_str()
       ->check(CLI::Range(1, 1024));
@@ -175,11 +181,24 @@ int BridgeProcess::serveLive(service::Context& context, boost::asio::io_context&
   // The receiver's descriptor, duplicated: asio closes its own copy.
   boost::asio::posix::stream_descriptor readable(io, ::dup(receiver->fd()));
   const transport::Handler handler = [this](const transport::Message& m) { dispatch(m); };
+  // Read in batches: the bridge watches, and woken for each of the run's
+  // messages (a few thousand a second at full speed) it would take a CPU
+  // from the lockstep chain a few thousand times a second. The kernel queues
+  // what comes meanwhile, with its receive time; a burst is read on at once.
+  // An external expert is in the chain itself: while one is there, every
+  // message is read as it comes.
+  const int batch_ms = options_.batch_ms > 0 && transport::roomToGather(receiver->receiveBufferBytes()) ? options_.batch_ms : 0;
+  boost::asio::steady_timer gather(io);
   std::function<void()> arm = [&] {
     readable.async_wait(boost::asio::posix::stream_descriptor::wait_read, [&](const boost::system::error_code& e) {
       if (e) return;
-      if (receiver->drain(handler) < 0) log::warn("receiving failed");
-      arm();
+      const int handled = receiver->drain(handler);
+      if (handled < 0) log::warn("receiving failed");
+      if (batch_ms == 0 || handled <= 0 || handled >= kBurstMessages || experts_->any()) return arm();
+      gather.expires_after(std::chrono::milliseconds(batch_ms));
+      gather.async_wait([&](const boost::system::error_code& waited) {
+        if (!waited) arm();
+      });
     });
   };
   arm();
@@ -241,6 +260,7 @@ void BridgeProcess::onTimer(service::Context& context) {
     hub_->reportDrops();
     if (player_) last_time_sent_ = -1;  // the time again, for viewers that came while paused
   }
+  hub_->flush();
 }
 
 void BridgeProcess::advancePlayback() {

@@ -42,6 +42,7 @@ struct BridgeOptions {
   std::string scenario;   // for the viewer's metadata
   std::string net;        // the run's Petri net (PNML), drawn for the page at /net.svg
   int max_clients = 32;
+  int batch_ms = 10;      // live: how long the run's messages gather between reads (0: read each as it comes)
 };
 
 // Where the page finds the run's net drawn (serverInfo's metadata "net" says so).

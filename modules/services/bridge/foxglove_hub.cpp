@@ -1,5 +1,6 @@
 #include "services/bridge/foxglove_hub.hpp"
 
+#include <iterator>
 #include <type_traits>
 #include <utility>
 
@@ -7,6 +8,7 @@
 #include "lib/foxglove/json_text.hpp"
 #include "lib/foxglove/lcm_json.hpp"
 #include "lib/foxglove/scene_messages.hpp"
+#include "lib/service/firing_trace.hpp"
 
 namespace beft::bridge {
 
@@ -82,13 +84,15 @@ void FoxgloveHub::addTopics() {
     by_derived_[spec.topic] = id;
     add(std::move(topic));
   }
-  Topic log_topic;
-  log_topic.channel.topic = "/log";
-  log_topic.channel.schema_name = foxglove::kLogSchema;
-  log_topic.channel.schema = foxglove::dumpJson(foxglove::foxgloveSchema(foxglove::kLogSchema));
-  log_topic.source = Source::kLog;
-  log_topic_ = id;
-  add(std::move(log_topic));
+  for (const char* name : {kLogTopic, kFiringsTopic}) {
+    Topic log_topic;
+    log_topic.channel.topic = name;
+    log_topic.channel.schema_name = foxglove::kLogSchema;
+    log_topic.channel.schema = foxglove::dumpJson(foxglove::foxgloveSchema(foxglove::kLogSchema));
+    log_topic.source = Source::kLog;
+    (name == kLogTopic ? log_topic_ : firings_topic_) = id;
+    add(std::move(log_topic));
+  }
 }
 
 void FoxgloveHub::onRunMessage(const std::string& channel, const uint8_t* data, std::size_t size,
@@ -125,15 +129,24 @@ void FoxgloveHub::publishDerived() {
 }
 
 void FoxgloveHub::publishLogLines(const std::vector<std::string>& lines, uint64_t receive_ns) {
-  Topic& topic = topics_.at(log_topic_);
   for (const auto& line : lines) {
     const ProcessLine split = splitProcessLine(line);
+    // At full speed nearly every line is the arbiter's trace, ten a tick: apart, /log stays readable and a
+    // viewer can take the trace at the pace it shows it (throttleMs). A firing that went wrong is on both.
+    const bool firing = split.process == "arbiter" && service::readFiringTraceLine(split.text).is_firing;
+    const bool routine = firing && service::readFiringTraceLine(split.text).routine;
     const auto message = foxglove::logLine(static_cast<int64_t>(receive_ns / 1000), levelOfLine(split.text),
                                            split.process, split.text);
-    // Kept for viewers that come later: a log's processes.log is written before any of them connects.
-    recent_log_lines_.push_back({foxglove::dumpJson(message), receive_ns});
-    if (recent_log_lines_.size() > kRecentLogLines) recent_log_lines_.pop_front();
-    if (!topic.subscribers.empty()) sendData(topic, [&] { return recent_log_lines_.back().payload; }, receive_ns);
+    const std::string payload = foxglove::dumpJson(message);
+    for (const uint32_t topic_id : {firing ? firings_topic_ : 0u, routine ? 0u : log_topic_}) {
+      if (topic_id == 0) continue;
+      // Kept for viewers that come later: a log's processes.log is written before any of them connects.
+      auto& recent = recent_lines_[topic_id];
+      recent.push_back({payload, receive_ns});
+      if (recent.size() > kRecentLogLines) recent.pop_front();
+      Topic& topic = topics_.at(topic_id);
+      if (!topic.subscribers.empty()) sendData(topic, [&] { return payload; }, receive_ns);
+    }
   }
 }
 
@@ -170,12 +183,32 @@ void FoxgloveHub::sendData(Topic& topic, const std::function<std::string()>& mak
   for (const auto& [client_id, subscription] : topic.subscribers) {
     const auto found = clients_.find(client_id);
     if (found == clients_.end()) continue;
-    if (topic.source != Source::kLog && holdForThrottle(*found->second, topic.channel.id)) continue;
+    if (holdForThrottle(*found->second, topic.channel.id)) continue;
     if (!payload) payload = make_payload();
     foxglove::Frame frame{foxglove::messageDataFrame(subscription, receive_ns, *payload), true, std::nullopt};
     if (topic.latest_wins) frame.latest_wins_key = topic.channel.id;
     found->second->queue.push(std::move(frame));
-    wake(client_id);
+    wakeForData(*found->second);
+  }
+}
+
+// A viewer's data frames wait for the next flush(), so that what the run
+// sent meanwhile leaves in one burst: at full speed the run gives the page a
+// message every millisecond or so, and each frame written alone wakes the
+// browser's network, IPC and page threads on the cores the run's lockstep
+// chain needs. Nothing is dropped for it but what the queue's bound drops
+// anyway. An external expert takes part in the lockstep loop: its frames
+// leave at once.
+void FoxgloveHub::wakeForData(Client& client) {
+  if (experts_ != nullptr && !experts_->nameOf(client.info.id).empty()) return wake(client.info.id);
+  client.unflushed = true;
+}
+
+void FoxgloveHub::flush() {
+  for (auto& [id, client] : clients_) {
+    if (!client->unflushed) continue;
+    client->unflushed = false;
+    wake(id);
   }
 }
 
@@ -204,7 +237,7 @@ void FoxgloveHub::sendThrottled(std::chrono::steady_clock::time_point now) {
       throttle.next_send = now + throttle.interval;
       Topic& topic = topics_.at(channel_id);
       const auto subscription = topic.subscribers.find(client_id);
-      if (subscription != topic.subscribers.end()) sendKept(*client, topic, subscription->second);
+      if (subscription != topic.subscribers.end()) sendKept(*client, topic, subscription->second, true);
     }
   }
 }
@@ -309,7 +342,7 @@ void FoxgloveHub::subscribe(Client& client, const foxglove::Subscribe& request) 
 }
 
 // What a new subscriber sees at once: the newest message of the channel, or the topic as it is now.
-void FoxgloveHub::sendKept(Client& client, Topic& topic, uint32_t subscription) {
+void FoxgloveHub::sendKept(Client& client, Topic& topic, uint32_t subscription, bool newest_only) {
   std::string payload;
   uint64_t receive_ns = 0;
   try {
@@ -325,8 +358,10 @@ void FoxgloveHub::sendKept(Client& client, Topic& topic, uint32_t subscription) 
       payload = foxglove::dumpJson(*message);
       receive_ns = last_receive_ns_;
     } else {
-      for (const auto& line : recent_log_lines_) {
-        client.queue.push({foxglove::messageDataFrame(subscription, line.receive_ns, line.payload), true, std::nullopt});
+      const auto& recent = recent_lines_[topic.channel.id];
+      for (auto line = newest_only && !recent.empty() ? std::prev(recent.end()) : recent.begin(); line != recent.end();
+           ++line) {
+        client.queue.push({foxglove::messageDataFrame(subscription, line->receive_ns, line->payload), true, std::nullopt});
       }
       wake(client.info.id);
       return;

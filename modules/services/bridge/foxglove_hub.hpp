@@ -33,6 +33,10 @@
 
 namespace beft::bridge {
 
+// The processes' log lines, and the arbiter's line per firing apart from them (foxglove.Log both).
+inline constexpr const char* kLogTopic = "/log";
+inline constexpr const char* kFiringsTopic = "/firings";
+
 // Carries out a control a client published; returns "" when done, else
 // what was wrong (sent back to the client as an error status).
 class ControlSink {
@@ -55,7 +59,7 @@ struct HubOptions {
 class FoxgloveHub : public SessionHandler {
  public:
   FoxgloveHub(HubOptions options, ControlSink& controls);
-  void attach(WebServer& server) { server_ = &server; }
+  void attach(ClientSockets& server) { server_ = &server; }
   // Live: clients may also be experts of the run (external_experts.hpp).
   void acceptExperts(ExternalExperts& experts) { experts_ = &experts; }
 
@@ -63,7 +67,8 @@ class FoxgloveHub : public SessionHandler {
   void onRunMessage(const std::string& channel, const uint8_t* data, std::size_t size, uint64_t receive_ns);
   // Sends what the scene's topics show now, where it changed and someone subscribes.
   void publishDerived();
-  // Lines of the processes' log on /log.
+  // Lines of the processes' log: the arbiter's routine firing lines on
+  // /firings (lib/service/firing_trace.hpp), every other line on /log.
   void publishLogLines(const std::vector<std::string>& lines, uint64_t receive_ns);
   // The server's clock (log mode), to every client.
   void sendTime(uint64_t time_ns);
@@ -77,6 +82,10 @@ class FoxgloveHub : public SessionHandler {
   void sendThrottled(std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now());
   // Forgets the kept messages (a seek): what a new subscriber is sent first.
   void forgetKept() { kept_.clear(); }
+  // Starts sending the data frames queued for viewers since the last call;
+  // call every few tens of milliseconds (a viewer's data frames go out in
+  // bursts, see sendData).
+  void flush();
 
   const std::vector<foxglove::ServerChannel>& channels() const { return channels_; }
   std::size_t clientCount() const { return clients_.size(); }
@@ -116,6 +125,7 @@ class FoxgloveHub : public SessionHandler {
     std::size_t queued_text = 0;
     uint64_t dropped = 0;                            // not yet told
     bool dropping = false;                           // closed for not reading: nothing more is queued
+    bool unflushed = false;                          // data frames queued since the last flush()
     explicit Client(std::size_t bytes) : queue(bytes) {}
   };
 
@@ -132,12 +142,14 @@ class FoxgloveHub : public SessionHandler {
   // make_payload: the message as JSON, made at most once and only if a subscriber is sent it now.
   void sendData(Topic& topic, const std::function<std::string()>& make_payload, uint64_t receive_ns);
   bool holdForThrottle(Client& client, uint32_t channel_id);
-  void sendKept(Client& client, Topic& topic, uint32_t subscription);
+  // newest_only: of a log topic, only its newest line (a throttled subscription's turn).
+  void sendKept(Client& client, Topic& topic, uint32_t subscription, bool newest_only = false);
   void wake(uint32_t client);
+  void wakeForData(Client& client);
 
   HubOptions options_;
   ControlSink& controls_;
-  WebServer* server_ = nullptr;
+  ClientSockets* server_ = nullptr;
   ExternalExperts* experts_ = nullptr;
   SceneModel scene_;
   std::vector<foxglove::ServerChannel> channels_;
@@ -145,6 +157,7 @@ class FoxgloveHub : public SessionHandler {
   std::map<std::string, uint32_t> by_beft_channel_;  // plain channel name -> channel id
   std::map<DerivedTopic, uint32_t> by_derived_;
   uint32_t log_topic_ = 0;
+  uint32_t firings_topic_ = 0;
   struct Kept {
     std::vector<uint8_t> bytes;
     uint64_t receive_ns = 0;
@@ -155,7 +168,7 @@ class FoxgloveHub : public SessionHandler {
     uint64_t receive_ns = 0;
   };
   static constexpr std::size_t kRecentLogLines = 200;
-  std::deque<LogLine> recent_log_lines_;  // the newest lines of /log, for a new subscriber
+  std::map<uint32_t, std::deque<LogLine>> recent_lines_;  // by topic: the newest of /log and /firings, for a new subscriber
   std::map<uint32_t, std::unique_ptr<Client>> clients_;
   uint64_t frames_dropped_ = 0;
   uint64_t last_receive_ns_ = 0;  // of the newest run message

@@ -1,5 +1,9 @@
 #include "services/bridge/web_server.hpp"
 
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -87,12 +91,18 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
       if (!subprotocol.empty()) response.set(http::field::sec_websocket_protocol, subprotocol);
     }));
     ws_.read_message_max(state_->options.max_frame_bytes);
+    // A message is one frame, written at once, rather than fragments of 4 KiB written one by one.
+    ws_.auto_fragment(false);
     ws_.async_accept(request, [self = shared_from_this()](beast::error_code error) { self->onAccepted(error); });
   }
 
+  // Writes what the handler has queued, frame after frame, corked: the
+  // frames of one burst leave in as few segments as they fill, and the
+  // client is woken once for them rather than once a frame.
   void wake() {
     if (writing_ || !open_) return;
-    if (!state_->handler.nextFrame(info_.id, frame_)) return;
+    if (!state_->handler.nextFrame(info_.id, frame_)) return setCorked(false);
+    setCorked(true);
     writing_ = true;
     ws_.text(frame_.text);
     ws_.async_write(net::buffer(frame_.bytes), [self = shared_from_this()](beast::error_code error, std::size_t) {
@@ -105,6 +115,7 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
   void close(const std::string& reason) {
     if (!open_ || closing_) return;
     closing_ = true;
+    setCorked(false);
     ws_.async_close(websocket::close_reason(websocket::close_code::normal, reason),
                     [self = shared_from_this()](beast::error_code) { self->finish(); });
   }
@@ -134,6 +145,16 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
     });
   }
 
+  // TCP_CORK: held while a burst is written, let go when the queue is empty
+  // (which sends what is held at once).
+  void setCorked(bool corked) {
+    if (corked == corked_) return;
+    corked_ = corked;
+    const int value = corked ? 1 : 0;
+    ::setsockopt(beast::get_lowest_layer(ws_).socket().native_handle(), IPPROTO_TCP, TCP_CORK, &value,
+                 sizeof(value));
+  }
+
   websocket::stream<beast::tcp_stream> ws_;
   std::shared_ptr<WebServer::State> state_;
   ClientInfo info_;
@@ -142,6 +163,7 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
   bool writing_ = false;
   bool open_ = false;
   bool closing_ = false;
+  bool corked_ = false;
 
  public:
   // Once, whichever side ended it: the handler forgets the client.

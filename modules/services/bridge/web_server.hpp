@@ -45,6 +45,18 @@ class SessionHandler {
   virtual void onClose(uint32_t client) = 0;
 };
 
+// What a SessionHandler asks of the server that holds its clients' sockets.
+class ClientSockets {
+ public:
+  virtual ~ClientSockets() = default;
+  // Frames are waiting for `client`: start sending if its socket is idle.
+  virtual void wake(uint32_t client) = 0;
+  // Ends a client's connection at once, without a close handshake (one that
+  // does not read cannot take one); the handler hears onClose afterwards,
+  // never from within this call.
+  virtual void drop(uint32_t client) = 0;
+};
+
 // A document the server makes itself rather than reads from web_dir.
 struct ServedDocument {
   std::string content_type;
@@ -61,23 +73,19 @@ struct WebServerOptions {
   std::size_t max_frame_bytes = 1 << 20;  // a bigger frame from a client closes its connection
 };
 
-class WebServer {
+class WebServer : public ClientSockets {
  public:
   // Binds and listens at once; throws std::runtime_error (with the address) when it cannot.
   WebServer(boost::asio::io_context& io, const WebServerOptions& options, SessionHandler& handler);
-  ~WebServer();
+  ~WebServer() override;
   WebServer(const WebServer&) = delete;
   WebServer& operator=(const WebServer&) = delete;
 
   int port() const;  // the port bound (options.port, or the one chosen for 0)
-  // Frames are waiting for `client`: start sending if its socket is idle.
-  void wake(uint32_t client);
+  void wake(uint32_t client) override;
   // Closes a client's connection (a normal close, with the reason).
   void close(uint32_t client, const std::string& reason);
-  // Ends a client's connection at once, without a close handshake (one that
-  // does not read cannot take one); the handler hears onClose afterwards,
-  // never from within this call.
-  void drop(uint32_t client);
+  void drop(uint32_t client) override;
   std::size_t clients() const;
 
   struct State;

@@ -23,9 +23,9 @@ using beft::bench::ViewOptions;
 std::optional<int> parseOptions(int argc, char** argv, ViewOptions& o) {
   CLI::App app("Runs yard.xml at full speed (--fast, fixed seed) without a viewer and with beft-bridge running and "
                "its page open in headless Chromium (Debian's chromium, WebGL by SwiftShader), in turns, and prints "
-               "each run's lockstep ticks per second (from its log: the ticks that started with the page connected; "
-               "a viewed run is paused until then), the means and viewed / plain (target >= 0.90, a verdict, not "
-               "a failure); then district_large with the viewer at the real-time pace for --seconds: the "
+               "each run's lockstep ticks per second (from its log: the ticks after a hold at the start, alike for "
+               "both kinds, a viewed run held until its page has connected and settled), the means and viewed / "
+               "plain (target >= 0.90, a verdict, not a failure); then district_large with the viewer at the real-time pace for --seconds: the "
                "page's median frame time (its rolling mean of the intervals between the frames it drew, read "
                "every 2 s) and frames per second, how far it is behind the run; and beft-bridge's VmRSS (and CPU "
                "time) at the end of each viewed run. Without node, chromium or puppeteer-core it says so and "
@@ -34,6 +34,10 @@ std::optional<int> parseOptions(int argc, char** argv, ViewOptions& o) {
   app.add_option("--ticks", o.ticks, "ticks per yard run")->capture_default_str()->check(CLI::Range(50, 100000));
   app.add_option("--repeat", o.repeat, "yard runs of each kind")->capture_default_str()->check(CLI::Range(1, 20));
   app.add_option("--seed", o.seed, "the yard runs' seed")->capture_default_str();
+  app.add_option("--hold", o.hold_s,
+                 "seconds every yard run is held at its start (a viewed one also until its page has settled)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 120.0));
   app.add_option("--seconds", o.seconds, "wall time of the page read on district_large (0: skip it)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 3600.0));

@@ -8,7 +8,8 @@
 namespace beft::bench {
 
 struct ViewOptions {
-  int ticks = 300, repeat = 3;
+  int ticks = 1000, repeat = 5;  // the yard mission ends at tick 928
+  double hold_s = 6;             // every run held this long at its start (yard_runs.hpp)
   long long seed = 1;
   double seconds = 20;  // district_large's page reading
   std::string work = (std::filesystem::temp_directory_path() / "beft_bench_view").string();

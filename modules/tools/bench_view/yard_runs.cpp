@@ -8,6 +8,7 @@
 #include <memory>
 #include <thread>
 
+#include "lib/common/clocks.hpp"
 #include "lib/common/own_bin_dir.hpp"
 #include "tools/bench_view/bridge_usage.hpp"
 #include "tools/bench_view/child_process.hpp"
@@ -57,21 +58,26 @@ bool pageSettled(const PageProbe& probe, std::chrono::steady_clock::time_point& 
   return now - read_at > std::chrono::duration<double>(kSettle_s);
 }
 
-// Waits for the run's launch line, pauses it, waits until the page is
-// connected and settled, and lets it run on; "" or what went wrong.
-std::string holdUntilConnected(const std::string& dir, pid_t runner, const PageProbe& probe) {
+// Waits for the run's launch line, pauses it, holds it for at least
+// `hold_s` and, with a page, until the page is connected and settled, and
+// lets it run on; "" or what went wrong. The wall time it was let go is in
+// `resumed_us`.
+std::string hold(const std::string& dir, pid_t runner, const PageProbe* probe, double hold_s, int64_t& resumed_us) {
   for (int i = 0; i < 6000 && lineAfter(readFile(dir + "/out.txt"), "[launch] started ").empty(); ++i) {
     if (hasEnded(runner)) return "the run ended before it started its processes";
     sleepMs(10);
   }
   if (!control(dir, "pause")) return "beft-control could not pause the run (see control.txt)";
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kConnectTimeout_s);
+  const auto paused = std::chrono::steady_clock::now();
+  const auto deadline = paused + std::chrono::duration<double>(kConnectTimeout_s);
   std::chrono::steady_clock::time_point read_at{};
-  while (!pageSettled(probe, read_at)) {
-    if (probe.ended()) return "the page probe ended: " + readFile(dir + "/probe.txt");
+  while ((probe && !pageSettled(*probe, read_at)) ||
+         std::chrono::steady_clock::now() - paused < std::chrono::duration<double>(hold_s)) {
+    if (probe && probe->ended()) return "the page probe ended: " + readFile(dir + "/probe.txt");
     if (std::chrono::steady_clock::now() > deadline) return "the page was not connected and read within 180 s";
     sleepMs(50);
   }
+  resumed_us = wallMicros();
   return control(dir, "run") ? "" : "beft-control could not let the run go on (see control.txt)";
 }
 
@@ -99,7 +105,10 @@ YardRun runYard(const YardRunRequest& request) {
     probe = std::make_unique<PageProbe>("http://127.0.0.1:" + std::to_string(request.view_port) + "/", 1000, 0,
                                         request.dir + "/probe.txt");
   const pid_t runner = startShell(runCommand(request));
-  if (probe) run.problem = holdUntilConnected(request.dir, runner, *probe);
+  const auto held = std::chrono::steady_clock::now();
+  int64_t resumed_us = -1;
+  run.problem = hold(request.dir, runner, probe.get(), request.hold_s, resumed_us);
+  run.held_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - held).count();
   if (!run.problem.empty()) stopGroup(runner, SIGINT, 30);
   const int code = waitForRun(runner, request.view_port, run);
   run.completed = code == 0 && run.problem.empty();
@@ -109,8 +118,7 @@ YardRun runYard(const YardRunRequest& request) {
   }
   if (run.problem.empty() && code != 0) run.problem = "beft-run exited with " + std::to_string(code);
   run.times = readTickTimes(request.dir + "/run.lcmlog");
-  if (run.page.connected_ms >= 0 && run.problem.empty())  // the run was held until then
-    run.viewed_from_tick = run.times.firstTickFiredAfter(run.page.connected_ms * 1000);
+  if (resumed_us >= 0 && run.problem.empty()) run.resumed_at_tick = run.times.firstTickFiredAfter(resumed_us);
   return run;
 }
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "lib/service/firing_trace.hpp"
 #include "services/arbiter/firing_log.hpp"
 
 using namespace beft::arbiter;
@@ -48,6 +49,31 @@ TEST(FiringLog, LinesSayTickFiringExpertOutcomeAndTimes) {
   EXPECT_NE(line.find("vision"), std::string::npos) << line;
   EXPECT_NE(line.find("1.500 ms"), std::string::npos) << line;
   EXPECT_NE(line.find("(expert 1.000 ms)"), std::string::npos) << line;
+}
+
+// The viewer tells the trace from the other lines of the log with
+// lib/service/firing_trace.hpp: it reads what this writes, and a firing that
+// went wrong is not routine.
+TEST(FiringLog, ItsLinesReadAsFiringTraceAndOnlyASmoothFiringAsRoutine) {
+  const auto read = [](const FiringRecord& r) { return beft::service::readFiringTraceLine(formatFiringLine(r)); };
+  FiringRecord smooth = record(12, "vision");
+  EXPECT_TRUE(read(smooth).is_firing);
+  EXPECT_TRUE(read(smooth).routine);
+  smooth.expert_duration_s = -1.0;
+  EXPECT_TRUE(read(smooth).routine);
+  FiringRecord timed_out = record(7, "fusion");
+  timed_out.outcome = "timeout";
+  timed_out.action = "retry";
+  timed_out.message = "no DONE within 5 s";
+  EXPECT_TRUE(read(timed_out).is_firing);
+  EXPECT_FALSE(read(timed_out).routine);
+  FiringRecord retried = record(7, "fusion");
+  retried.attempt = 2;
+  EXPECT_FALSE(read(retried).routine);
+  for (const char* other : {"", "tick", "tick 12 went well", "ticks 3  firing 4  x ok", "stopping after 300 ticks",
+                            "tick 3  firings 4", "tick   3  firing"}) {
+    EXPECT_FALSE(beft::service::readFiringTraceLine(other).is_firing) << other;
+  }
 }
 
 TEST(FiringLog, LinesWaitForTheFlushPeriodOrAFlush) {

@@ -14,7 +14,7 @@ if (!webDir || !existsSync(join(webDir, "app.js"))) skip(`the built page is miss
 
 const TOPICS = ["GT_OBJECTS", "GT_VERSION", "ROBOT_STATE", "HYPOTHESES", "HYPOTHESIS_CHANGES", "AUDIO", "DYNAMIC_WEIGHTS",
   "TASK_STACK", "PLAN_RESULT", "OBSTACLE_MAP", "OBSTACLE_MAP_CHANGES", "MARKING", "RUN_STATUS", "RUN_CONTROL_STATE",
-  "/camera/color", "/camera/depth", "/log"];
+  "/camera/color", "/camera/depth", "/log", "/firings"];
 const WORLD = { width: 160, height: 120 };
 const BLOCK = { id: "center_block", x: 80, y: 60 };
 const LOG_START = 1764230000123456789n;  // beyond a double's exact integers
@@ -59,6 +59,8 @@ function sendScene(bridge) {
   bridge.publish("RUN_CONTROL_STATE", { tick: 42, mode: 1, origin: "viewer" });
   bridge.publish("/camera/color", { width: 4, height: 2, encoding: "rgb8", step: 12, data: Buffer.alloc(24, 200).toString("base64") });
   bridge.publish("/log", { timestamp: { sec: 4, nsec: 200000000 }, level: 2, message: "vision: 3 obstacles", name: "vision" });
+  bridge.publish("/firings", { timestamp: { sec: 4, nsec: 300000000 }, level: 2, name: "arbiter",
+    message: "tick    42  firing    420  world            ok           1.200 ms" });
 }
 
 async function lastReceived(bridge, topic, count = 1) {
@@ -78,12 +80,17 @@ async function livePage(checks, browser) {
     for (let i = 0; i < 50 && !TOPICS.every((t) => bridge.subscribed(t)); i++) await sleep(100);
     assert.deepEqual(TOPICS.filter((t) => !bridge.subscribed(t)), []);
   });
-  await checks.run("asks the bridge to throttle whole-state topics and cameras only, never keyframes, weights or log lines", async () => {
+  await checks.run("asks the bridge to throttle whole-state topics, cameras and firings only, never keyframes, weights or log lines", async () => {
+    const { cadence, webGlInSoftware } = await pageState(page);
+    // With a GPU the 3-D view follows the run ten times a second and the panels four; drawn in
+    // software, both once a second, in one frame.
+    assert.deepEqual(cadence, webGlInSoftware ? { panelMs: 1000, sceneMs: 1000, wholeStateMs: 1000 }
+      : { panelMs: 250, sceneMs: 100, wholeStateMs: 100 });
+    // The whole-state topics as often as the page draws them, no more.
     for (const topic of ["ROBOT_STATE", "MARKING", "TASK_STACK", "HYPOTHESIS_CHANGES", "OBSTACLE_MAP_CHANGES"])
-      assert.ok(bridge.throttles.get(topic) > 0 && bridge.throttles.get(topic) <= 100, `${topic}: ${bridge.throttles.get(topic)}`);
-    // The cameras at the panels' cadence: no more often than the page draws them.
-    const panelMs = await page.evaluate(() => (window.beft.webGlInSoftware ? 500 : 250));
-    for (const topic of ["/camera/color", "/camera/depth"]) assert.equal(bridge.throttles.get(topic), panelMs, topic);
+      assert.equal(bridge.throttles.get(topic), cadence.wholeStateMs, topic);
+    // The cameras and the newest firing at the panels' cadence.
+    for (const topic of ["/camera/color", "/camera/depth", "/firings"]) assert.equal(bridge.throttles.get(topic), cadence.panelMs, topic);
     for (const topic of ["GT_OBJECTS", "HYPOTHESES", "OBSTACLE_MAP", "DYNAMIC_WEIGHTS", "/log"])
       assert.equal(bridge.throttles.get(topic), 0, topic);
   });
@@ -100,6 +107,10 @@ async function livePage(checks, browser) {
     assert.equal(state.runState, "running");
     assert.equal(state.runMode, "pause");
     assert.equal(state.logLines, 1);
+    assert.equal(state.firingLines, 1);
+    // The newest firing under the net, on the panels' cadence.
+    await page.waitForFunction(() => document.getElementById("last-firing").textContent.includes("firing    420  world"),
+      { timeout: 20000 });
     // The page mirrors its state into the DOM on its next animation frame.
     await page.waitForFunction(() => document.getElementById("tick").textContent === "42" &&
       document.getElementById("object-count").textContent === "450", { timeout: 20000 });

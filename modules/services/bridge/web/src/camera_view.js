@@ -1,5 +1,6 @@
 // The robot's camera images on canvases: foxglove.RawImage (width, height,
 // encoding, step, data in base64) or foxglove.CompressedImage (format, data).
+import { context2d } from "./canvas_2d.js";
 import { base64Bytes } from "./bytes.js";
 
 const BYTES_PER_PIXEL = { rgb8: 3, bgr8: 3, rgba8: 4, bgra8: 4, mono8: 1, "32FC1": 4, "16UC1": 2, mono16: 2 };
@@ -62,7 +63,7 @@ export class CameraView {
     const rgba = rawToRgba(image, bytes);
     if (!rgba) return this.say(`${image.encoding}: not shown`);
     this.fitCanvas(image.width, image.height);
-    this.canvas.getContext("2d").putImageData(new ImageData(rgba, image.width, image.height), 0, 0);
+    context2d(this.canvas).putImageData(new ImageData(rgba, image.width, image.height), 0, 0);
     this.shown(`${image.width}×${image.height} ${image.encoding}`);
   }
 
@@ -72,7 +73,7 @@ export class CameraView {
     createImageBitmap(new Blob([bytes], { type }))
       .then((bitmap) => {
         this.fitCanvas(bitmap.width, bitmap.height);
-        this.canvas.getContext("2d").drawImage(bitmap, 0, 0);
+        context2d(this.canvas).drawImage(bitmap, 0, 0);
         this.shown(`${bitmap.width}×${bitmap.height} ${image.format}`);
       })
       .catch(() => this.say(`${image.format}: cannot decode`))

@@ -29,22 +29,28 @@ const byId = (id) => document.getElementById(id);
 // the frames the page would drop are neither converted, sent nor received.
 const LATEST_ONLY = new Set(["/camera/color", "/camera/depth"]);
 
+// The arbiter's line per firing (ten a tick at full speed): the newest is
+// shown under the net, on the panels' cadence; every other line of the
+// processes' log comes on /log.
+const FIRINGS = "/firings";
+
 // Topics whose every message holds the whole of what it shows (changes are
-// relative to the last keyframe): the bridge need send only the newest every
-// WHOLE_STATE_THROTTLE_MS (a run at full speed sends the marking ten times a
-// tick). The keyframes, the weights (a plot over time) and the log lines
-// come whole.
+// relative to the last keyframe): the bridge need send only the newest as
+// often as the page draws it (a run at full speed sends the marking ten
+// times a tick), which is the throttle asked for them: the shorter of the
+// 3-D view's and the panels' cadence. The keyframes, the weights (a plot
+// over time) and the log lines come whole.
 const WHOLE_STATE = new Set(["ROBOT_STATE", "GT_VERSION", "MARKING", "TASK_STACK", "AUDIO", "PLAN_RESULT",
   "HYPOTHESIS_CHANGES", "OBSTACLE_MAP_CHANGES", "RUN_STATUS", "RUN_CONTROL_STATE"]);
-const WHOLE_STATE_THROTTLE_MS = 50;
 
 // The text panels, the weights plot, the camera images and the status line
 // are drawn at most this often [ms]: each drawing lays out and paints the page, which at a
 // run's full speed (a hundred messages a second) would take a core.
 const PANEL_MS = 250;
 // When the browser draws in software (scene_view.js), every drawing is
-// composited on the CPU, beside the run: half as often.
-const SOFTWARE_PANEL_MS = 500;
+// composited on the CPU, beside the run: once a second, in the same frame
+// as the 3-D view (scene_view.js), so that the page is composited once.
+const SOFTWARE_PANEL_MS = 1000;
 
 // Hands `text` to the topic's handler; a malformed message costs itself only.
 function handleText(handle, topic, text) {
@@ -94,6 +100,7 @@ function createParts(state) {
     tasks: new LatestMessagePanel((message) => showTaskStack(byId("tasks"), message)),
     // On the drawn net when there is one; the marking is listed as well.
     marking: new LatestMessagePanel((message) => showMarking(byId("marking"), message)),
+    lastFiring: new LatestMessagePanel((message) => (byId("last-firing").textContent = message.message || "")),
   };
 }
 
@@ -115,6 +122,8 @@ function start() {
   const timeline = new Timeline(state, byId("seek"));
   const handlers = topicHandlers(state, parts);
   const panelMs = state.webGlInSoftware ? SOFTWARE_PANEL_MS : PANEL_MS;
+  // How often it draws what the run changes, and so how often it asks for the whole-state topics [ms].
+  state.cadence = { panelMs, sceneMs: parts.view.dataFrameMs, wholeStateMs: Math.min(panelMs, parts.view.dataFrameMs) };
   const latest = new LatestOnly(panelMs);
   const scheduler = new FrameScheduler(() => false);
   // What the run or the server changed: drawn at the next poll.
@@ -152,10 +161,12 @@ function start() {
     onTime: (ns) => (timeline.time(ns), changed()),
   });
   const withSlash = (topics) => topics.flatMap((topic) => [topic, `/${topic}`]);
-  const throttled = (topic) => WHOLE_STATE.has(topic) || LATEST_ONLY.has(topic) || LATEST_ONLY.has(`/${topic}`);
+  const throttled = (topic) =>
+    WHOLE_STATE.has(topic) || LATEST_ONLY.has(topic) || LATEST_ONLY.has(`/${topic}`) || topic === FIRINGS;
   client.want(withSlash([...handlers.keys()].filter((topic) => !throttled(topic))));
-  client.want(withSlash([...WHOLE_STATE]), WHOLE_STATE_THROTTLE_MS);
+  client.want(withSlash([...WHOLE_STATE]), state.cadence.wholeStateMs);
   client.want(withSlash([...LATEST_ONLY].map((topic) => topic.replace(/^\//, ""))), panelMs);
+  client.want([FIRINGS], panelMs);
   const controls = new Controls(client);
   wireButtons(controls, timeline);
   const pointer = new Pointer(parts.view, parts, controls, byId("tooltip"));
@@ -165,16 +176,23 @@ function start() {
     sent: controls.sent,
     screenOf: (x, y, z) => parts.view.screenOf(x, y, z),
   });
-  scheduler.draw = pageDrawer(state, parts, pointer, timeline, latest, panelMs);
+  Object.assign(scheduler, pageDrawer(state, parts, pointer, timeline, latest, panelMs));
   scheduler.wakeNow();
 }
 
 // Draws what changed: the 3-D view when due (scene_view.js), the panels at
-// most every panelMs. Returns true when something is left to draw later.
+// most every panelMs; draw returns true when something is left to draw
+// later, nextDueMs when the first of it is due (frame_scheduler.js).
 function pageDrawer(state, parts, pointer, timeline, latest, panelMs) {
   const clock = new FrameClock(state);
   let lastPanelMs = -Infinity;
-  return (now) => {
+  const nextDueMs = () =>
+    Math.min(
+      latest.pending.size > 0 ? latest.lastDrainMs + latest.intervalMs : Infinity,
+      parts.view.dataChanged ? parts.view.lastRenderMs + parts.view.dataFrameMs : Infinity,
+      state.panelsChanged ? lastPanelMs + panelMs : Infinity,
+    );
+  const draw = (now) => {
     clock.tick(now);
     latest.drain(now);
     pointer.update();
@@ -186,12 +204,14 @@ function pageDrawer(state, parts, pointer, timeline, latest, panelMs) {
     }
     return state.panelsChanged || parts.view.dataChanged || latest.pending.size > 0;
   };
+  return { draw, nextDueMs };
 }
 
 function drawPanels(state, parts, timeline) {
   parts.weights.draw();
   parts.tasks.draw();
   parts.marking.draw();
+  parts.lastFiring.draw();
   parts.net.draw();
   parts.log.draw();
   timeline.draw();

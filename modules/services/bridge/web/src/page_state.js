@@ -28,6 +28,9 @@ export function createPageState() {
     waypointCount: 0,
     taskCount: 0,
     logLines: 0,
+    cadence: null,           // {panelMs, sceneMs, wholeStateMs}: how often the page draws the run's changes
+    firingLines: 0,          // /firings lines received (the newest of each throttle interval)
+    lastFiring: "",          // the newest of them
     markingStep: -1,
     netDrawn: false,         // the run's net drawn (metadata "net")
     netLit: [],              // experts whose transitions are lit now

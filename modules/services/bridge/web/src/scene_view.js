@@ -8,7 +8,7 @@ import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 // llvmpipe: a frame of the full view costs tens of milliseconds of a core
 // that the run beside the page needs).
 const DATA_FRAME_MS = 100;
-const SOFTWARE_DATA_FRAME_MS = 500;
+const SOFTWARE_DATA_FRAME_MS = 1000;
 
 // Whether this browser draws WebGL in software, asked of a context of its own
 // (the renderer's antialiasing is chosen before its context exists).
@@ -29,7 +29,8 @@ export class SceneView {
   constructor(container) {
     this.container = container;
     // In software: no multisampling and one pixel per CSS pixel (a quarter
-    // of the work or less), and at most two frames a second.
+    // of the work or less), and at most one frame a second for the run's
+    // changes (what a person does is drawn at once).
     this.software = webGlInSoftware();
     this.dataFrameMs = this.software ? SOFTWARE_DATA_FRAME_MS : DATA_FRAME_MS;
     this.renderer = new THREE.WebGLRenderer({ antialias: !this.software, preserveDrawingBuffer: true });

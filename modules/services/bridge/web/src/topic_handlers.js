@@ -67,6 +67,11 @@ export function topicHandlers(state, parts) {
     parts.depth.show(m);
     state.depthFrames = parts.depth.frames;
   });
+  on("/firings", (m) => {
+    parts.lastFiring.set(m);
+    state.firingLines++;
+    state.lastFiring = m.message || "";
+  });
   on("/log", (m) => {
     parts.log.add(m);
     state.logLines = parts.log.count;

@@ -3,6 +3,8 @@
 // at the three congruency states (0.25, 0.5, 0.75), and a title with the
 // current task and the viewing direction.
 
+import { context2d } from "./canvas_2d.js";
+
 const PALETTE = ["#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f032e6", "#bfef45",
   "#fabed4", "#469990", "#dcbeff", "#9a6324", "#fffac8", "#800000", "#aaffc3", "#808000"];
 const WINDOW_TICKS = 600;  // the last minute at dt = 0.1 s
@@ -28,7 +30,10 @@ export class WeightsPlot {
       while (points.length && points[0].tick < message.tick - WINDOW_TICKS) points.shift();
     }
     const direction = Number.isFinite(message.viewing_direction) ? `${message.viewing_direction.toFixed(0)}°` : "none";
-    this.title.textContent = `task: ${message.current_task || "none"}, viewing direction: ${direction}`;
+    // Put on the page by draw(): a change to the page's text for every
+    // message would have the browser lay out, paint and composite the page
+    // at every display frame while a run goes at full speed.
+    this.titleText = `task: ${message.current_task || "none"}, viewing direction: ${direction}`;
     this.dirty = true;
   }
 
@@ -36,13 +41,14 @@ export class WeightsPlot {
   draw() {
     if (!this.dirty) return;
     this.dirty = false;
+    if (this.titleText !== undefined && this.title.textContent !== this.titleText) this.title.textContent = this.titleText;
     const canvas = this.canvas;
     const width = canvas.clientWidth || 300;
     const height = canvas.clientHeight || 150;
     // A new size reallocates the canvas: set only when the layout changed it.
     if (canvas.width !== width) canvas.width = width;
     if (canvas.height !== height) canvas.height = height;
-    const g = canvas.getContext("2d");
+    const g = context2d(canvas);
     const pad = { left: 30, right: 90, top: 6, bottom: 16 };
     const plotW = width - pad.left - pad.right;
     const plotH = height - pad.top - pad.bottom;
