@@ -9,7 +9,6 @@
 #include <stdexcept>
 
 #include <boost/asio/io_context.hpp>
-#include <boost/asio/posix/stream_descriptor.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <CLI/CLI.hpp>
 
@@ -22,6 +21,7 @@
 #include "lib/wire/run_discovery.hpp"
 #include "lib/transport/publisher.hpp"
 #include "lib/wire/run_identity.hpp"
+#include "services/bridge/gathered_reads.hpp"
 #include "services/bridge/net_drawing.hpp"
 #include "services/bridge/web_server.hpp"
 
@@ -35,7 +35,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr auto kTimerPeriod = std::chrono::milliseconds(50);
-constexpr int kBurstMessages = 256;  // a read of this many is a burst: read on without gathering
 
 }  // namespace
 
@@ -178,33 +177,16 @@ int BridgeProcess::serveLive(service::Context& context, boost::asio::io_context&
   hub_->attach(server);
   log::info("view: http://", options_.bind, ":", server.port(), "/ (", wire::describeRun(wire::runId()), "; ",
             receiver->description(), ")");
-  // The receiver's descriptor, duplicated: asio closes its own copy.
-  boost::asio::posix::stream_descriptor readable(io, ::dup(receiver->fd()));
-  const transport::Handler handler = [this](const transport::Message& m) { dispatch(m); };
-  // Read in batches: the bridge watches, and woken for each of the run's
-  // messages (a few thousand a second at full speed) it would take a CPU
-  // from the lockstep chain a few thousand times a second. The kernel queues
-  // what comes meanwhile, with its receive time; a burst is read on at once.
-  // An external expert is in the chain itself: while one is there, every
-  // message is read as it comes.
+  // Read in batches (gathered_reads.hpp): the bridge watches, and woken for
+  // each of the run's messages (a few thousand a second at full speed) it
+  // would take a CPU from the lockstep chain as often.
   const int batch_ms = options_.batch_ms > 0 && transport::roomToGather(receiver->receiveBufferBytes()) ? options_.batch_ms : 0;
-  boost::asio::steady_timer gather(io);
-  std::function<void()> arm = [&] {
-    readable.async_wait(boost::asio::posix::stream_descriptor::wait_read, [&](const boost::system::error_code& e) {
-      if (e) return;
-      const int handled = receiver->drain(handler);
-      if (handled < 0) log::warn("receiving failed");
-      if (batch_ms == 0 || handled <= 0 || handled >= kBurstMessages || experts_->any()) return arm();
-      gather.expires_after(std::chrono::milliseconds(batch_ms));
-      gather.async_wait([&](const boost::system::error_code& waited) {
-        if (!waited) arm();
-      });
-    });
-  };
-  arm();
+  GatheredReads reads(io, *receiver, [this](const transport::Message& m) { dispatch(m); }, batch_ms,
+                      [this] { return !experts_->any(); });
+  reads.start();
   runLoop(context, io);
   const transport::RepairStats repair = receiver->repairStats();
-  log::info("stopping; ", hub_->framesDropped(), " frame(s) not sent to slow viewers; receiving: ", repair.gaps,
+  log::info("stopping; ", reads.wakeUps(), " read(s) of the run (", batch_ms, " ms gathering); ", hub_->framesDropped(), " frame(s) not sent to slow viewers; receiving: ", repair.gaps,
             " message(s) missed, ", repair.repaired, " repaired, ", repair.lost, " lost, ",
             receiver->kernelDropped(), " datagram(s) dropped by the kernel");
   return 0;
