@@ -133,8 +133,9 @@ void FoxgloveHub::publishLogLines(const std::vector<std::string>& lines, uint64_
     const ProcessLine split = splitProcessLine(line);
     // At full speed nearly every line is the arbiter's trace, ten a tick: apart, /log stays readable and a
     // viewer can take the trace at the pace it shows it (throttleMs). A firing that went wrong is on both.
-    const bool firing = split.process == "arbiter" && service::readFiringTraceLine(split.text).is_firing;
-    const bool routine = firing && service::readFiringTraceLine(split.text).routine;
+    const service::FiringTraceLine trace =
+        split.process == "arbiter" ? service::readFiringTraceLine(split.text) : service::FiringTraceLine{};
+    const bool firing = trace.is_firing, routine = trace.routine;
     const auto message = foxglove::logLine(static_cast<int64_t>(receive_ns / 1000), levelOfLine(split.text),
                                            split.process, split.text);
     const std::string payload = foxglove::dumpJson(message);
