@@ -180,13 +180,15 @@ int BridgeProcess::serveLive(service::Context& context, boost::asio::io_context&
   // Read in batches (gathered_reads.hpp): the bridge watches, and woken for
   // each of the run's messages (a few thousand a second at full speed) it
   // would take a CPU from the lockstep chain as often.
-  const int batch_ms = options_.batch_ms > 0 && transport::roomToGather(receiver->receiveBufferBytes()) ? options_.batch_ms : 0;
+  const bool gather = options_.batch_ms > 0 && transport::roomToGather(receiver->receiveBufferBytes());
+  const int batch_ms = gather ? options_.batch_ms : 0;
   GatheredReads reads(io, *receiver, [this](const transport::Message& m) { dispatch(m); }, batch_ms,
                       [this] { return !experts_->any(); });
   reads.start();
   runLoop(context, io);
   const transport::RepairStats repair = receiver->repairStats();
-  log::info("stopping; ", reads.wakeUps(), " read(s) of the run (", batch_ms, " ms gathering); ", hub_->framesDropped(), " frame(s) not sent to slow viewers; receiving: ", repair.gaps,
+  log::info("stopping; ", reads.wakeUps(), " read(s) of the run (", batch_ms, " ms gathering); ",
+            hub_->framesDropped(), " frame(s) not sent to slow viewers; receiving: ", repair.gaps,
             " message(s) missed, ", repair.repaired, " repaired, ", repair.lost, " lost, ",
             receiver->kernelDropped(), " datagram(s) dropped by the kernel");
   return 0;

@@ -72,8 +72,9 @@ class ExternalExperts {
     histories_.erase(client);
   }
 
-  // Whether any client takes part in the run as an expert now.
+  // Whether any client, or this one, takes part in the run as an expert now.
   bool any() const { return !sessions_.empty(); }
+  bool isExpert(uint32_t client) const { return sessions_.count(client) > 0; }
   // The name of the expert a client is, or "" (not announced).
   std::string nameOf(uint32_t client) const;
   std::size_t published() const { return published_; }

@@ -1,6 +1,5 @@
 #include "services/bridge/foxglove_hub.hpp"
 
-#include <iterator>
 #include <type_traits>
 #include <utility>
 
@@ -201,7 +200,7 @@ void FoxgloveHub::sendData(Topic& topic, const std::function<std::string()>& mak
 // anyway. An external expert takes part in the lockstep loop: its frames
 // leave at once.
 void FoxgloveHub::wakeForData(Client& client) {
-  if (experts_ != nullptr && !experts_->nameOf(client.info.id).empty()) return wake(client.info.id);
+  if (experts_ != nullptr && experts_->isExpert(client.info.id)) return wake(client.info.id);
   client.unflushed = true;
 }
 
@@ -360,10 +359,10 @@ void FoxgloveHub::sendKept(Client& client, Topic& topic, uint32_t subscription, 
       receive_ns = last_receive_ns_;
     } else {
       const auto& recent = recent_lines_[topic.channel.id];
-      for (auto line = newest_only && !recent.empty() ? std::prev(recent.end()) : recent.begin(); line != recent.end();
-           ++line) {
-        client.queue.push({foxglove::messageDataFrame(subscription, line->receive_ns, line->payload), true, std::nullopt});
-      }
+      const std::size_t first = newest_only && !recent.empty() ? recent.size() - 1 : 0;
+      for (std::size_t i = first; i < recent.size(); ++i)
+        client.queue.push({foxglove::messageDataFrame(subscription, recent[i].receive_ns, recent[i].payload), true,
+                           std::nullopt});
       wake(client.info.id);
       return;
     }

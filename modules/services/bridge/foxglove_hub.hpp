@@ -168,7 +168,8 @@ class FoxgloveHub : public SessionHandler {
     uint64_t receive_ns = 0;
   };
   static constexpr std::size_t kRecentLogLines = 200;
-  std::map<uint32_t, std::deque<LogLine>> recent_lines_;  // by topic: the newest of /log and /firings, for a new subscriber
+  // By topic: the newest lines of /log and of /firings, for a new subscriber.
+  std::map<uint32_t, std::deque<LogLine>> recent_lines_;
   std::map<uint32_t, std::unique_ptr<Client>> clients_;
   uint64_t frames_dropped_ = 0;
   uint64_t last_receive_ns_ = 0;  // of the newest run message
